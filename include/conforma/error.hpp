@@ -1,0 +1,25 @@
+#pragma once
+// Errors for bad input. Degenerate physics (no contact, B <= 0 for Hertz, a fully sliding patch) is NOT an
+// error: solvers report it through a status in their Result. Bad input (malformed files, NaN, negative load,
+// unknown options) throws InputError with a message naming what and where.
+#include <stdexcept>
+#include <string>
+
+namespace conforma {
+
+class InputError : public std::invalid_argument {
+ public:
+  explicit InputError(const std::string& what) : std::invalid_argument(what) {}
+  // "<where>:<line>: <what>" (line omitted when 0), the form compilers use, so editors can jump to it.
+  InputError(const std::string& where, int line, const std::string& what)
+      : std::invalid_argument(where + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + what) {}
+};
+
+// Throws InputError("<name> must be finite ...") unless value is finite.
+void require_finite(double value, const char* name);
+// Throws InputError unless value is finite and > 0.
+void require_positive(double value, const char* name);
+// Throws InputError unless value is finite and >= 0.
+void require_non_negative(double value, const char* name);
+
+}  // namespace conforma

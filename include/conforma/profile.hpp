@@ -1,0 +1,83 @@
+#pragma once
+// A wheel or rail cross-section profile: a smooth planar curve parametrised by arc length s.
+//
+// Profile coordinates (metres inside the program; files are in mm and converted at the boundary):
+//   y  lateral, positive towards the FIELD side (away from the track centre), for both wheel and rail
+//      ("right-side profile" as in CONTACT; a left-side wheel or rail uses the same profile mirrored by
+//      the track, never by the profile).
+//   z  rail:  vertical, positive UP, origin at the top of the rail head in its own (uninclined) frame.
+//      wheel: radial height above the taping line, positive towards a LARGER radius (flange tip z > 0);
+//             the rolling radius at y is r(y) = r_nominal + z(y). Taping line at y = 0, flange back at
+//             y = -0.070 m for S1002-type wheels (flange at negative y).
+// Orientation: s increases from the gauge/flange side (small y) towards the field side (large y).
+// normal(s) is the unit normal to the LEFT of the tangent, which points OUT of the body for both wheel
+// (towards larger radius) and rail (upwards on the crown).
+// curvature(s) is signed, positive where the surface is convex (rail crown, wheel flange tip) and negative
+// where it is concave (worn wheel tread hollow, S1002 flange root).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace conforma {
+
+enum class ProfileKind { Wheel, Rail };
+const char* to_string(ProfileKind kind);
+
+struct ProfileFitOptions {
+  // Smoothing of the fit through the input points, as the RMS residual allowed per point [m].
+  // 0 interpolates the points exactly (after removing duplicates).
+  double smoothing_rms_m = 0.0;
+  // Spacing of the arc-length resampling that the profile stores [m].
+  double sample_spacing_m = 0.1e-3;
+  // If true, the profile must be single-valued in y (z = f(y)) except where it is steeper than
+  // max_fold_slope; unsorted input is then sorted by y. If false, input order defines the curve.
+  bool function_of_y = true;
+};
+
+class Profile {
+ public:
+  Profile() = default;
+  // Builds the profile from points (y, z) in metres. `source` names the origin (file name) for messages.
+  // Throws InputError when the points are too few, not finite, or the curve self-intersects.
+  static Profile FromPoints(std::vector<Eigen::Vector2d> points_m, ProfileKind kind,
+                            const ProfileFitOptions& options = {}, const std::string& source = "points");
+
+  ProfileKind kind() const { return kind_; }
+  const std::string& source() const { return source_; }
+  bool empty() const { return y_.empty(); }
+  double length() const { return length_; }  // total arc length [m]
+  double spacing() const { return h_; }      // arc-length step of the stored samples [m]
+
+  Eigen::Vector2d position(double s) const;  // (y, z) [m]; s is clamped to [0, length]
+  Eigen::Vector2d tangent(double s) const;   // unit, towards increasing s
+  Eigen::Vector2d normal(double s) const;    // unit, outward (left of the tangent)
+  double curvature(double s) const;          // signed [1/m], convex > 0
+  // Angle of the outward normal from +z, positive when the normal leans towards -y [rad] (i.e. the
+  // surface slope angle: atan(dz/dy) for a function-like profile).
+  double slope_angle(double s) const;
+
+  double y_min() const { return y_min_; }
+  double y_max() const { return y_max_; }
+  // Height z at lateral position y on the function-like part of the curve (the first crossing in s order
+  // whose tangent is not vertical); empty outside the profile's y range.
+  std::optional<double> height_at(double y) const;
+  // Arc length of the first crossing of the vertical line at y (see height_at).
+  std::optional<double> s_at(double y) const;
+  // Nearest point on the curve to q: returns its arc length.
+  double closest_s(const Eigen::Vector2d& q) const;
+
+  // The stored samples (uniform in s), and resampling at another spacing.
+  std::vector<Eigen::Vector2d> samples() const;
+  std::vector<Eigen::Vector2d> sample(double spacing_m) const;
+
+ private:
+  ProfileKind kind_ = ProfileKind::Rail;
+  std::string source_;
+  double h_ = 0.0, length_ = 0.0, y_min_ = 0.0, y_max_ = 0.0;
+  // Natural cubic splines y(s), z(s) on the uniform grid s_i = i h: values and second derivatives.
+  std::vector<double> y_, z_, y2_, z2_;
+  void locate(double s, int& i, double& t) const;
+};
+
+}  // namespace conforma

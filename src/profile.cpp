@@ -1,0 +1,237 @@
+#include "conforma/profile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+const char* to_string(ProfileKind kind) { return kind == ProfileKind::Wheel ? "wheel" : "rail"; }
+
+namespace {
+
+// Second derivatives of the natural cubic spline through (t_i, v_i) (tridiagonal Thomas algorithm).
+std::vector<double> natural_spline_second_derivatives(const std::vector<double>& t, const std::vector<double>& v) {
+  const size_t n = t.size();
+  std::vector<double> m(n, 0.0), c(n, 0.0), d(n, 0.0);
+  if (n < 3) return m;
+  // interior equations: h0 m_{i-1} + 2(h0+h1) m_i + h1 m_{i+1} = 6((v_{i+1}-v_i)/h1 - (v_i-v_{i-1})/h0)
+  std::vector<double> diag(n, 1.0), upper(n, 0.0), lower(n, 0.0);
+  for (size_t i = 1; i + 1 < n; ++i) {
+    const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
+    lower[i] = h0;
+    diag[i] = 2.0 * (h0 + h1);
+    upper[i] = h1;
+    d[i] = 6.0 * ((v[i + 1] - v[i]) / h1 - (v[i] - v[i - 1]) / h0);
+  }
+  for (size_t i = 1; i < n; ++i) {  // forward elimination
+    const double w = lower[i] / diag[i - 1];
+    diag[i] -= w * upper[i - 1];
+    d[i] -= w * d[i - 1];
+  }
+  m[n - 1] = d[n - 1] / diag[n - 1];
+  for (size_t i = n - 1; i-- > 0;) m[i] = (d[i] - upper[i] * m[i + 1]) / diag[i];
+  return m;
+}
+
+struct Spline1 {
+  const std::vector<double>& t;
+  const std::vector<double>& v;
+  std::vector<double> m;
+  double operator()(double x, double* deriv = nullptr) const {
+    size_t i = std::upper_bound(t.begin(), t.end(), x) - t.begin();
+    i = std::clamp<size_t>(i, 1, t.size() - 1) - 1;
+    const double h = t[i + 1] - t[i];
+    const double a = (t[i + 1] - x) / h, b = (x - t[i]) / h;
+    if (deriv)
+      *deriv = (v[i + 1] - v[i]) / h + ((3 * b * b - 1) * m[i + 1] - (3 * a * a - 1) * m[i]) * h / 6.0;
+    return a * v[i] + b * v[i + 1] + ((a * a * a - a) * m[i] + (b * b * b - b) * m[i + 1]) * h * h / 6.0;
+  }
+};
+
+bool segments_cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r,
+                    const Eigen::Vector2d& u) {
+  auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+  const double d1 = cross(q - p, r - p), d2 = cross(q - p, u - p);
+  const double d3 = cross(u - r, p - r), d4 = cross(u - r, q - r);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 && d4 != 0;
+}
+
+}  // namespace
+
+Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, const ProfileFitOptions& options,
+                            const std::string& source) {
+  require_positive(options.sample_spacing_m, "sample_spacing_m");
+  require_non_negative(options.smoothing_rms_m, "smoothing_rms_m");
+  for (size_t i = 0; i < pts.size(); ++i)
+    if (!pts[i].allFinite()) throw InputError(source, 0, "point " + std::to_string(i + 1) + " is not finite");
+  if (options.function_of_y)
+    std::stable_sort(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.x() < b.x(); });
+  else if (pts.size() >= 2 && pts.front().x() > pts.back().x())
+    std::reverse(pts.begin(), pts.end());
+  // drop duplicates (closer than 1 nm to the previous kept point)
+  std::vector<Eigen::Vector2d> p;
+  for (const auto& q : pts)
+    if (p.empty() || (q - p.back()).norm() > 1e-9) p.push_back(q);
+  if (p.size() < 4) throw InputError(source, 0, "a profile needs at least 4 distinct points, got " + std::to_string(p.size()));
+  // self-intersection of the polyline (non-adjacent segments)
+  for (size_t i = 0; i + 1 < p.size(); ++i)
+    for (size_t j = i + 2; j + 1 < p.size(); ++j)
+      if (segments_cross(p[i], p[i + 1], p[j], p[j + 1])) {
+        std::ostringstream m;
+        m << "profile self-intersects between points " << i + 1 << " and " << j + 1 << " (y = " << p[i].x() * 1e3
+          << " mm and " << p[j].x() * 1e3 << " mm)";
+        throw InputError(source, 0, m.str());
+      }
+  // chord-length parameter, interpolating splines y(t), z(t)
+  std::vector<double> t(p.size(), 0.0), vy(p.size()), vz(p.size());
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (i) t[i] = t[i - 1] + (p[i] - p[i - 1]).norm();
+    vy[i] = p[i].x();
+    vz[i] = p[i].y();
+  }
+  Spline1 sy{t, vy, natural_spline_second_derivatives(t, vy)};
+  Spline1 sz{t, vz, natural_spline_second_derivatives(t, vz)};
+  // arc length of the spline by fine Gauss-free trapezoid on the derivative norm
+  const int fine = static_cast<int>(std::ceil(t.back() / (options.sample_spacing_m * 0.1))) + 1;
+  std::vector<double> tf(fine + 1), sf(fine + 1, 0.0);
+  double prev = 0.0;
+  for (int k = 0; k <= fine; ++k) {
+    tf[k] = t.back() * k / fine;
+    double dy, dz;
+    sy(tf[k], &dy);
+    sz(tf[k], &dz);
+    const double speed = std::hypot(dy, dz);
+    if (k) sf[k] = sf[k - 1] + 0.5 * (speed + prev) * (tf[k] - tf[k - 1]);
+    prev = speed;
+  }
+  Profile out;
+  out.kind_ = kind;
+  out.source_ = source;
+  out.length_ = sf.back();
+  const int n = std::max(4, static_cast<int>(std::ceil(out.length_ / options.sample_spacing_m)) + 1);
+  out.h_ = out.length_ / (n - 1);
+  out.y_.resize(n);
+  out.z_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    const double s = std::min(i * out.h_, sf.back());
+    size_t k = std::upper_bound(sf.begin(), sf.end(), s) - sf.begin();
+    k = std::clamp<size_t>(k, 1, sf.size() - 1) - 1;
+    const double w = (sf[k + 1] > sf[k]) ? (s - sf[k]) / (sf[k + 1] - sf[k]) : 0.0;
+    const double tt = tf[k] + w * (tf[k + 1] - tf[k]);
+    out.y_[i] = sy(tt);
+    out.z_[i] = sz(tt);
+  }
+  std::vector<double> sgrid(n);
+  for (int i = 0; i < n; ++i) sgrid[i] = i * out.h_;
+  out.y2_ = natural_spline_second_derivatives(sgrid, out.y_);
+  out.z2_ = natural_spline_second_derivatives(sgrid, out.z_);
+  out.y_min_ = *std::min_element(out.y_.begin(), out.y_.end());
+  out.y_max_ = *std::max_element(out.y_.begin(), out.y_.end());
+  return out;
+}
+
+void Profile::locate(double s, int& i, double& t) const {
+  const int n = static_cast<int>(y_.size());
+  const double u = std::clamp(s, 0.0, length_) / h_;
+  i = std::min(static_cast<int>(u), n - 2);
+  t = u - i;
+}
+
+Eigen::Vector2d Profile::position(double s) const {
+  int i;
+  double b;
+  locate(s, i, b);
+  const double a = 1.0 - b, c = (a * a * a - a) * h_ * h_ / 6.0, d = (b * b * b - b) * h_ * h_ / 6.0;
+  return {a * y_[i] + b * y_[i + 1] + c * y2_[i] + d * y2_[i + 1], a * z_[i] + b * z_[i + 1] + c * z2_[i] + d * z2_[i + 1]};
+}
+
+Eigen::Vector2d Profile::tangent(double s) const {
+  int i;
+  double b;
+  locate(s, i, b);
+  const double a = 1.0 - b;
+  const double c = -(3 * a * a - 1) * h_ / 6.0, d = (3 * b * b - 1) * h_ / 6.0;
+  Eigen::Vector2d v((y_[i + 1] - y_[i]) / h_ + c * y2_[i] + d * y2_[i + 1], (z_[i + 1] - z_[i]) / h_ + c * z2_[i] + d * z2_[i + 1]);
+  return v.normalized();
+}
+
+Eigen::Vector2d Profile::normal(double s) const {
+  const Eigen::Vector2d t = tangent(s);
+  return {-t.y(), t.x()};
+}
+
+double Profile::curvature(double s) const {
+  int i;
+  double b;
+  locate(s, i, b);
+  const double a = 1.0 - b;
+  const Eigen::Vector2d dd(a * y2_[i] + b * y2_[i + 1], a * z2_[i] + b * z2_[i + 1]);
+  const Eigen::Vector2d t = tangent(s);
+  // kappa = t x t' ; convex (tangent turning clockwise for outward left normal) is positive
+  return -(t.x() * dd.y() - t.y() * dd.x());
+}
+
+double Profile::slope_angle(double s) const {
+  const Eigen::Vector2d t = tangent(s);
+  return std::atan2(t.y(), t.x());
+}
+
+std::optional<double> Profile::s_at(double y) const {
+  if (y < y_min_ || y > y_max_) return std::nullopt;
+  const int n = static_cast<int>(y_.size());
+  for (int i = 0; i + 1 < n; ++i) {
+    const double y0 = y_[i], y1 = y_[i + 1];
+    if ((y0 <= y && y <= y1 && y1 > y0) || (y1 <= y && y <= y0 && y0 > y1)) {
+      // refine by Newton/bisection on the cubic segment
+      double lo = i * h_, hi = (i + 1) * h_;
+      for (int it = 0; it < 40; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        const double ym = position(mid).x();
+        if ((ym < y) == (y1 > y0)) lo = mid; else hi = mid;
+      }
+      return 0.5 * (lo + hi);
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<double> Profile::height_at(double y) const {
+  auto s = s_at(y);
+  if (!s) return std::nullopt;
+  return position(*s).y();
+}
+
+double Profile::closest_s(const Eigen::Vector2d& q) const {
+  const int n = static_cast<int>(y_.size());
+  int best = 0;
+  double bestd = 1e300;
+  for (int i = 0; i < n; ++i) {
+    const double d = (Eigen::Vector2d(y_[i], z_[i]) - q).squaredNorm();
+    if (d < bestd) { bestd = d; best = i; }
+  }
+  double s = best * h_;
+  for (int it = 0; it < 8; ++it) {  // Newton on (P(s) - q) . t(s) = 0 with unit speed
+    const Eigen::Vector2d t = tangent(s);
+    s = std::clamp(s - (position(s) - q).dot(t), 0.0, length_);
+  }
+  return s;
+}
+
+std::vector<Eigen::Vector2d> Profile::samples() const {
+  std::vector<Eigen::Vector2d> out(y_.size());
+  for (size_t i = 0; i < y_.size(); ++i) out[i] = {y_[i], z_[i]};
+  return out;
+}
+
+std::vector<Eigen::Vector2d> Profile::sample(double spacing_m) const {
+  require_positive(spacing_m, "spacing_m");
+  const int n = std::max(2, static_cast<int>(std::ceil(length_ / spacing_m)) + 1);
+  std::vector<Eigen::Vector2d> out(n);
+  for (int i = 0; i < n; ++i) out[i] = position(length_ * i / (n - 1));
+  return out;
+}
+
+}  // namespace conforma
