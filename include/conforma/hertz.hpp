@@ -21,11 +21,26 @@ struct HertzResult {
   double approach_m = 0.0;      // rigid approach delta
   double normal_force_N = 0.0;  // N
   double stiffness_N_per_m15 = 0.0;  // C_H in N = C_H delta^(3/2)
+  double a_over_b = 0.0;        // semi-axis ratio a/b (also set for NoContact when A, B > 0)
+  double elliptic_K = 0.0;      // K(k), k^2 = 1 - g^2, g = min(a,b)/max(a,b)
+  double elliptic_E = 0.0;      // E(k)
 };
 
 // Load given: semi-axes, p0 and approach. Throws InputError for NaN or negative load / bad material.
 HertzResult SolveHertzForLoad(double A_per_m, double B_per_m, double normal_force_N, const Material& material);
 // Approach given (multibody penetration mode): load, semi-axes and p0.
 HertzResult SolveHertzForApproach(double A_per_m, double B_per_m, double approach_m, const Material& material);
+
+// Hertz pressure p0 sqrt(1 - x^2/a^2 - y^2/b^2) at (x, y); 0 outside the ellipse or without a solution.
+double HertzPressure(const HertzResult& hertz, double x_m, double y_m);
+
+// Complete elliptic integrals K(k), E(k) (modulus k, k^2 = 1 - g^2) from the complementary modulus g in (0, 1],
+// by the arithmetic-geometric mean; also returns K - E accurately (no cancellation as g -> 1).
+struct CompleteEllipticIntegrals {
+  double K = 0.0;
+  double E = 0.0;
+  double K_minus_E = 0.0;
+};
+CompleteEllipticIntegrals EllipticIntegralsFromComplementaryModulus(double g);
 
 }  // namespace conforma
