@@ -61,6 +61,28 @@ bool segments_cross(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Ei
 
 }  // namespace
 
+std::optional<std::pair<size_t, size_t>> find_self_intersection(const std::vector<Eigen::Vector2d>& p) {
+  // Segments sorted by their smallest y; a sweep compares each segment only with those overlapping it in y.
+  const size_t n = p.size() < 2 ? 0 : p.size() - 1;
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  auto lo = [&](size_t i) { return std::min(p[i].x(), p[i + 1].x()); };
+  auto hi = [&](size_t i) { return std::max(p[i].x(), p[i + 1].x()); };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo(a) < lo(b); });
+  std::optional<std::pair<size_t, size_t>> best;
+  for (size_t a = 0; a < n; ++a) {
+    const size_t i = order[a];
+    for (size_t b = a + 1; b < n && lo(order[b]) <= hi(i); ++b) {
+      const size_t j = order[b];
+      const size_t first = std::min(i, j), second = std::max(i, j);
+      if (second < first + 2) continue;
+      if (segments_cross(p[first], p[first + 1], p[second], p[second + 1]))
+        if (!best || std::make_pair(first, second) < *best) best = std::make_pair(first, second);
+    }
+  }
+  return best;
+}
+
 Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, const ProfileFitOptions& options,
                             const std::string& source) {
   require_positive(options.sample_spacing_m, "sample_spacing_m");
@@ -76,15 +98,12 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
   for (const auto& q : pts)
     if (p.empty() || (q - p.back()).norm() > 1e-9) p.push_back(q);
   if (p.size() < 4) throw InputError(source, 0, "a profile needs at least 4 distinct points, got " + std::to_string(p.size()));
-  // self-intersection of the polyline (non-adjacent segments)
-  for (size_t i = 0; i + 1 < p.size(); ++i)
-    for (size_t j = i + 2; j + 1 < p.size(); ++j)
-      if (segments_cross(p[i], p[i + 1], p[j], p[j + 1])) {
-        std::ostringstream m;
-        m << "profile self-intersects between points " << i + 1 << " and " << j + 1 << " (y = " << p[i].x() * 1e3
-          << " mm and " << p[j].x() * 1e3 << " mm)";
-        throw InputError(source, 0, m.str());
-      }
+  if (auto hit = find_self_intersection(p)) {
+    std::ostringstream m;
+    m << "profile self-intersects between points " << hit->first + 1 << " and " << hit->second + 1 << " (y = "
+      << p[hit->first].x() * 1e3 << " mm and " << p[hit->second].x() * 1e3 << " mm)";
+    throw InputError(source, 0, m.str());
+  }
   // chord-length parameter, interpolating splines y(t), z(t)
   std::vector<double> t(p.size(), 0.0), vy(p.size()), vz(p.size());
   for (size_t i = 0; i < p.size(); ++i) {

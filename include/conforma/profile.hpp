@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace conforma {
@@ -79,5 +80,8 @@ class Profile {
   std::vector<double> y_, z_, y2_, z2_;
   void locate(double s, int& i, double& t) const;
 };
+
+// First pair (i, j), j >= i + 2, of polyline segments [p_i, p_i+1] and [p_j, p_j+1] that properly cross.
+std::optional<std::pair<size_t, size_t>> find_self_intersection(const std::vector<Eigen::Vector2d>& polyline);
 
 }  // namespace conforma

@@ -1,0 +1,46 @@
+// Plain two-column profile files (.txt .dat .csv): "y z" per line, separated by commas, semicolons, tabs or
+// spaces; '#' starts a comment; non-numeric lines before the first data line are header lines.
+#include "conforma/error.hpp"
+#include "profile_io_internal.hpp"
+
+namespace conforma {
+
+namespace profile_io {
+
+ProfilePoints read_columns(const std::string& path, const ProfileReadOptions& options) {
+  if (!options.kind)
+    throw InputError(path, 0, "plain column profile files do not say wheel or rail: set ProfileReadOptions::kind");
+  const auto lines = read_lines(path);
+  ProfilePoints out;
+  out.source = path;
+  out.kind = *options.kind;
+  const double u = options.length_unit_m;
+  const double sy = options.mirror_y ? -u : u, sz = options.mirror_z ? -u : u;
+  bool in_data = false;
+  for (size_t li = 0; li < lines.size(); ++li) {
+    const int ln = static_cast<int>(li) + 1;
+    std::string t = lines[li];
+    if (const auto h = t.find('#'); h != std::string::npos) t = t.substr(0, h);
+    t = trim(t);
+    if (t.empty()) continue;
+    const auto f = split_fields(t);
+    double y, z;
+    const bool ok_y = parse_number(f[0], y);
+    if (!in_data && !ok_y) {  // header line (e.g. "y_mm,z_mm")
+      out.header["header." + std::to_string(ln)] = t;
+      continue;
+    }
+    in_data = true;
+    if (!ok_y) throw InputError(path, ln, "non-numeric value '" + f[0] + "'");
+    if (f.size() < 2) throw InputError(path, ln, "expected two columns 'y z', found '" + t + "'");
+    if (!parse_number(f[1], z)) throw InputError(path, ln, "non-numeric value '" + f[1] + "'");
+    out.points_m.emplace_back(sy * y, sz * z);
+    out.lines.push_back(ln);
+  }
+  if (out.points_m.empty()) throw InputError(path, 0, "no profile points found");
+  return out;
+}
+
+}  // namespace profile_io
+
+}  // namespace conforma

@@ -1,0 +1,185 @@
+// Profile file dispatch by extension, common ordering/validation of the points, and the CSV writer.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <numeric>
+#include <sstream>
+
+#include "conforma/error.hpp"
+#include "profile_io_internal.hpp"
+
+namespace conforma {
+
+namespace profile_io {
+
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return {};
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+std::string extension_of(const std::string& path) {
+  const auto slash = path.find_last_of("/\\");
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+  return lower(path.substr(dot + 1));
+}
+
+std::vector<std::string> read_lines(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open profile file");
+  std::vector<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+bool parse_number(const std::string& token, double& value) {
+  if (token.empty()) return false;
+  const char* b = token.c_str();
+  char* e = nullptr;
+  value = std::strtod(b, &e);
+  return e == b + token.size() && std::isfinite(value);
+}
+
+std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ' ' || c == '\t' || c == ',' || c == ';') {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  if (!cur.empty()) out.push_back(cur);
+  return out;
+}
+
+namespace {
+
+double mm(double v_m) { return v_m * 1e3; }
+
+std::string where(const ProfilePoints& p, size_t i) {
+  std::ostringstream s;
+  s << "(y = " << std::fixed << std::setprecision(3) << mm(p.points_m[i].x()) << " mm, z = " << mm(p.points_m[i].y()) << " mm)";
+  return s.str();
+}
+
+double path_length(const std::vector<Eigen::Vector2d>& v) {
+  double L = 0;
+  for (size_t i = 1; i < v.size(); ++i) L += (v[i] - v[i - 1]).norm();
+  return L;
+}
+
+}  // namespace
+
+void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
+  if (p.points_m.empty()) throw InputError(p.source, 0, "no profile points found");
+  auto& pts = p.points_m;
+  auto& lines = p.lines;
+  if (pts.size() >= 2 && pts.front().x() > pts.back().x()) {  // curve order from small to large y
+    std::reverse(pts.begin(), pts.end());
+    std::reverse(lines.begin(), lines.end());
+  }
+  constexpr double kFoldTol = 0.05e-3;  // y may run backwards this much (measurement noise on vertical faces)
+  if (fit.function_of_y) {
+    size_t first_back = 0;
+    double run_max = -1e300;
+    for (size_t i = 0; i < pts.size(); ++i) {
+      if (pts[i].x() < run_max - kFoldTol) { first_back = i; break; }
+      run_max = std::max(run_max, pts[i].x());
+    }
+    if (first_back) {
+      // Either an unordered point cloud (sort it) or an ordered curve that folds back (refuse).
+      std::vector<size_t> idx(pts.size());
+      std::iota(idx.begin(), idx.end(), 0);
+      std::stable_sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return pts[a].x() < pts[b].x(); });
+      std::vector<Eigen::Vector2d> sorted(pts.size());
+      std::vector<int> sorted_lines(pts.size());
+      for (size_t i = 0; i < idx.size(); ++i) {
+        sorted[i] = pts[idx[i]];
+        sorted_lines[i] = lines[idx[i]];
+      }
+      if (path_length(pts) <= 1.5 * path_length(sorted)) {
+        std::ostringstream m;
+        m << "profile folds back: y decreases by " << std::setprecision(3) << mm(run_max - pts[first_back].x())
+          << " mm " << where(p, first_back) << "; a " << to_string(p.kind)
+          << " profile must be single-valued in y (set ProfileFitOptions::function_of_y = false to allow folds)";
+        throw InputError(p.source, lines[first_back], m.str());
+      }
+      pts.swap(sorted);
+      lines.swap(sorted_lines);
+      p.notes.push_back("points were not ordered along the curve; sorted by y");
+    }
+  }
+  // drop exact repeats of the previous point (common at the ends of measured files)
+  std::vector<Eigen::Vector2d> kept;
+  std::vector<int> kept_lines;
+  for (size_t i = 0; i < pts.size(); ++i)
+    if (kept.empty() || (pts[i] - kept.back()).norm() > 1e-9) {
+      kept.push_back(pts[i]);
+      kept_lines.push_back(lines[i]);
+    }
+  pts.swap(kept);
+  lines.swap(kept_lines);
+  if (pts.size() < 4)
+    throw InputError(p.source, lines.empty() ? 0 : lines.back(),
+                     "a profile needs at least 4 distinct points, found " + std::to_string(pts.size()));
+  if (auto hit = find_self_intersection(pts)) {
+    std::ostringstream m;
+    m << "profile self-intersects: the segment starting at line " << lines[hit->first] << " " << where(p, hit->first)
+      << " crosses the segment starting at line " << lines[hit->second] << " " << where(p, hit->second);
+    throw InputError(p.source, lines[hit->second], m.str());
+  }
+}
+
+}  // namespace profile_io
+
+ProfilePoints ReadProfilePoints(const std::string& path, const ProfileReadOptions& options) {
+  require_positive(options.length_unit_m, "length_unit_m");
+  const std::string ext = profile_io::extension_of(path);
+  ProfilePoints p;
+  if (ext == "prw" || ext == "prr") p = profile_io::read_simpack(path, options);
+  else if (ext == "whl" || ext == "ban") p = profile_io::read_miniprof(path, options);
+  else if (ext == "txt" || ext == "dat" || ext == "csv") p = profile_io::read_columns(path, options);
+  else
+    throw InputError(path, 0, "unknown profile file type '." + ext +
+                                  "' (expected .prw .prr .ban .whl .txt .dat .csv)");
+  profile_io::finish_points(p, options.fit);
+  return p;
+}
+
+Profile LoadProfile(const std::string& path, const ProfileReadOptions& options) {
+  ProfilePoints p = ReadProfilePoints(path, options);
+  ProfileFitOptions fit = options.fit;
+  fit.function_of_y = false;  // the points are in validated curve order now
+  return Profile::FromPoints(std::move(p.points_m), p.kind, fit, path);
+}
+
+void SaveProfileCsv(const Profile& profile, const std::string& path, double spacing_m) {
+  require_positive(spacing_m, "spacing_m");
+  if (profile.empty()) throw InputError(path, 0, "cannot save an empty profile");
+  std::ofstream out(path);
+  if (!out) throw InputError(path, 0, "cannot open for writing");
+  out << "# " << to_string(profile.kind()) << " profile from " << profile.source()
+      << "; Conforma convention: y towards the field side, "
+      << (profile.kind() == ProfileKind::Wheel ? "z towards a larger wheel radius" : "z up") << "\n";
+  out << "y_mm,z_mm\n" << std::setprecision(10);
+  for (const auto& q : profile.sample(spacing_m)) out << q.x() * 1e3 << "," << q.y() * 1e3 << "\n";
+  if (!out) throw InputError(path, 0, "write failed");
+}
+
+}  // namespace conforma
