@@ -94,13 +94,32 @@ void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
     std::reverse(pts.begin(), pts.end());
     std::reverse(lines.begin(), lines.end());
   }
-  constexpr double kFoldTol = 0.05e-3;  // y may run backwards this much (measurement noise on vertical faces)
+  // A fold is the curve running back in y by more than 0.05 mm. Measured files show undercuts outside the
+  // running surface (flange back, rim face, underside of the rail head): tolerated when the backward run is steep
+  // (|dz| > 3 |dy| measured from the point of largest y so far) or lies well below the running surface (rail:
+  // more than 30 mm below its highest point; wheel: more than 5 mm below the median height, the tread level).
+  constexpr double kFoldTol = 0.05e-3, kSteep = 3.0;
+  double z_low = -1e300;
+  if (!pts.empty()) {
+    std::vector<double> zs(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) zs[i] = pts[i].y();
+    if (p.kind == ProfileKind::Rail) {
+      z_low = *std::max_element(zs.begin(), zs.end()) - 30e-3;
+    } else {
+      std::nth_element(zs.begin(), zs.begin() + zs.size() / 2, zs.end());
+      z_low = zs[zs.size() / 2] - 5e-3;
+    }
+  }
   if (fit.function_of_y) {
     size_t first_back = 0;
     double run_max = -1e300;
+    size_t i_max = 0;
     for (size_t i = 0; i < pts.size(); ++i) {
-      if (pts[i].x() < run_max - kFoldTol) { first_back = i; break; }
-      run_max = std::max(run_max, pts[i].x());
+      if (pts[i].x() < run_max - kFoldTol) {
+        const double dy = run_max - pts[i].x(), dz = std::abs(pts[i].y() - pts[i_max].y());
+        if (!(dz > kSteep * dy) && pts[i].y() > z_low) { first_back = i; break; }
+      }
+      if (pts[i].x() >= run_max) { run_max = pts[i].x(); i_max = i; }
     }
     if (first_back) {
       // Either an unordered point cloud (sort it) or an ordered curve that folds back (refuse).

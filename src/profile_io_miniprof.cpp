@@ -116,8 +116,11 @@ ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& o
       out.notes.push_back("rail: z mirrored (the flat crown was the z minimum)");
     }
   } else {
+    // The flange tip is a flat z-extreme; the other extreme is usually at the end of a steep face (rim face,
+    // flange back). If both or neither are flat, the extreme farther from the median (tread level) is the tip.
     const double zm = median(zs);
-    const bool tip_is_min = zm - zs[imin] > zs[imax] - zm;
+    const bool flat_max = local_slope(mm, imax) < 1.0, flat_min = local_slope(mm, imin) < 1.0;
+    const bool tip_is_min = flat_max != flat_min ? flat_min : zm - zs[imin] > zs[imax] - zm;
     const size_t itip = tip_is_min ? imin : imax;
     if (tip_is_min) {
       sz = -1.0;

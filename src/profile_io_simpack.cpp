@@ -17,12 +17,13 @@ namespace profile_io {
 
 namespace {
 
-// Removes a '!' comment that is not inside single quotes.
+// Removes a '!' or '%' comment that is not inside single quotes ('%' comments out points in CONTACT's
+// test files, e.g. circ_r300.prr).
 std::string strip_comment(const std::string& line) {
   bool quoted = false;
   for (size_t i = 0; i < line.size(); ++i) {
     if (line[i] == '\'') quoted = !quoted;
-    else if (line[i] == '!' && !quoted) return line.substr(0, i);
+    else if ((line[i] == '!' || line[i] == '%') && !quoted) return line.substr(0, i);
   }
   return line;
 }
