@@ -102,6 +102,7 @@ ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& o
     mm.emplace_back(x, y);
     out.lines.push_back(ln);
   }
+  out.header["format"] = old_style ? "MiniProf old style" : "MiniProf new style";
   if (mm.size() < 4) throw InputError(path, 0, "no profile points found (" + std::to_string(mm.size()) + " data rows)");
   std::vector<double> zs(mm.size()), ys(mm.size());
   for (size_t i = 0; i < mm.size(); ++i) { ys[i] = mm[i].x(); zs[i] = mm[i].y(); }
