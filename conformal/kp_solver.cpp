@@ -1,0 +1,325 @@
+// Kik-Piotrowski normal contact for one patch, approach given: planar KP, KPEC, conformal KP.
+// physics-reference §3.1-3.3, §4, §9; paper 003 eqs. 2-8 and 13.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "conforma/conformity.hpp"
+#include "conforma/error.hpp"
+#include "conforma/hertz.hpp"
+#include "conforma/influence.hpp"
+#include "conforma/kik_piotrowski.hpp"
+#include "kp_patch_interpolant.hpp"
+#include "kp_strip_integrals.hpp"
+
+namespace conforma {
+
+const char* to_string(KpStatus status) {
+  switch (status) {
+    case KpStatus::Ok: return "ok";
+    case KpStatus::NoContact: return "no_contact";
+    case KpStatus::ContactAtPatchBoundary: return "contact_at_patch_boundary";
+    case KpStatus::NoEquivalentEllipse: return "no_equivalent_ellipse";
+    case KpStatus::InfluenceNotPositive: return "influence_not_positive";
+  }
+  return "unknown";
+}
+
+KpOptions PlanarKpOptions(const Material& material) {
+  KpOptions options;
+  options.material = material;
+  return options;
+}
+
+KpOptions KpecOptions(const Material& material) {
+  KpOptions options = PlanarKpOptions(material);
+  options.penetration = KpPenetrationRule::VariableEpsilon;
+  return options;
+}
+
+KpOptions ConformalKpOptions(const Material& material) {
+  KpOptions options = PlanarKpOptions(material);
+  options.influence = KpInfluence::BlancoLorenzo;
+  return options;
+}
+
+namespace {
+
+using kp_detail::PatchInterpolant;
+
+// Root of f on [inside, outside] where f(inside) > 0 >= f(outside): Illinois false position.
+template <class F>
+double EdgeRoot(const F& f, double inside, double f_inside, double outside, double f_outside) {
+  double a = inside, fa = f_inside, b = outside, fb = f_outside;
+  const double f_scale = 1e-15 * (std::abs(f_inside) + std::abs(f_outside));
+  int side = 0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const double c = (a * fb - b * fa) / (fb - fa);
+    if (std::abs(b - a) <= 1e-14 * (std::abs(a) + std::abs(b)) + 1e-18) return c;
+    const double fc = f(c);
+    if (fc > 0.0) {
+      a = c;
+      fa = fc;
+      if (side == -1) fb *= 0.5;
+      side = -1;
+    } else {
+      b = c;
+      fb = fc;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    }
+    if (std::abs(fc) <= f_scale) return c;
+  }
+  return 0.5 * (a + b);
+}
+
+struct ContactRange {
+  double low = 0.0;
+  double high = 0.0;
+  bool cut = false;  // reached the end of the given strips
+};
+
+// The connected range around s_start where f > 0 (f(s_start) > 0). Walks the input nodes outward, then finds
+// each edge on the interpolant.
+template <class F>
+ContactRange FindRange(const PatchInterpolant& patch, const F& f, double s_start, double f_start) {
+  ContactRange range;
+  const auto& nodes = patch.nodes();
+  const size_t first_right = static_cast<size_t>(std::upper_bound(nodes.begin(), nodes.end(), s_start) - nodes.begin());
+  // right
+  {
+    double inside = s_start, f_in = f_start;
+    bool found = false;
+    for (size_t k = first_right; k <= nodes.size() && !found; ++k) {
+      const double s = k < nodes.size() ? nodes[k] : patch.domain_high();
+      const double value = f(s);
+      if (value <= 0.0) {
+        range.high = EdgeRoot(f, inside, f_in, s, value);
+        found = true;
+      } else {
+        inside = s;
+        f_in = value;
+      }
+    }
+    if (!found) {
+      range.high = patch.domain_high();
+      range.cut = true;
+    }
+  }
+  // left
+  {
+    double inside = s_start, f_in = f_start;
+    bool found = false;
+    for (size_t k = first_right; k-- > 0 && !found;) {
+      const double s = nodes[k];
+      if (s >= s_start) continue;
+      const double value = f(s);
+      if (value <= 0.0) {
+        range.low = EdgeRoot(f, inside, f_in, s, value);
+        found = true;
+      } else {
+        inside = s;
+        f_in = value;
+      }
+    }
+    if (!found) {
+      const double value = f(patch.domain_low());
+      if (value <= 0.0) {
+        range.low = EdgeRoot(f, inside, f_in, patch.domain_low(), value);
+      } else {
+        range.low = patch.domain_low();
+        range.cut = true;
+      }
+    }
+  }
+  return range;
+}
+
+// Position on the rail surface relative to the reference point (s = 0), (t0, n0) components:
+// integral of the tangent (cos alpha, -sin alpha) from 0 to s (the tangent turns with the normal).
+Eigen::Vector2d SurfaceStep(const PatchInterpolant& patch, double from, double to) {
+  const double mid = 0.5 * (from + to), half = 0.5 * (to - from);
+  const double node = 0.5773502691896257 * half;
+  const double a1 = patch.alpha(mid - node), a2 = patch.alpha(mid + node);
+  return half * Eigen::Vector2d(std::cos(a1) + std::cos(a2), -std::sin(a1) - std::sin(a2));
+}
+
+}  // namespace
+
+KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& geometry, double approach_m, const KpOptions& options) {
+  require_non_negative(approach_m, "approach_m");
+  require_positive(options.virtual_penetration_factor, "KpOptions.virtual_penetration_factor");
+  if (options.virtual_penetration_factor > 1.0)
+    throw InputError("KpOptions.virtual_penetration_factor must be <= 1, got " +
+                     std::to_string(options.virtual_penetration_factor));
+  if (options.strips_across_contact < 3 || options.strips_across_contact > 100000)
+    throw InputError("KpOptions.strips_across_contact must lie in [3, 100000], got " +
+                     std::to_string(options.strips_across_contact));
+  require_finite(options.conformity_threshold_deg, "KpOptions.conformity_threshold_deg");
+  const ElasticConstants elastic = CombinedElasticConstants(options.material);
+  const PatchInterpolant patch(geometry);
+
+  KpResult result;
+  result.approach_m = approach_m;
+  const double delta = approach_m;
+  const double s_contact = patch.MinimumGapLocation();
+  const double gap_contact = patch.gap(s_contact);
+  result.contact_point_s_m = s_contact;
+  result.contact_point_x_m = patch.x_offset(s_contact);
+  if (delta <= 0.0) return result;
+
+  // Virtual interpenetration g(s) = eps(s) delta - gap(s) (physics-reference §3.1 / §3.3).
+  const bool kpec = options.penetration == KpPenetrationRule::VariableEpsilon;
+  double s_mid = 0.0, a_squared_A = 0.0, spread = 0.0, b_hertz = 1.0;
+  if (kpec) {
+    // KPEC step 2: equivalent Hertz problem from the eps = 0.5 region (CONTACT m_snorm.f90, physics-reference §3.3).
+    auto half_region = [&](double s) { return 0.5 * delta - patch.gap(s); };
+    const double f0 = half_region(s_contact);
+    if (!(f0 > 0.0)) return result;
+    const ContactRange half = FindRange(patch, half_region, s_contact, f0);
+    s_mid = 0.5 * (half.low + half.high);
+    const double half_width = 0.5 * (half.high - half.low);
+    const double A = patch.curvature(s_contact);
+    const double B = 0.5 * delta / (half_width * half_width);
+    const HertzResult hertz = SolveHertzForApproach(A, B, delta, options.material);
+    if (hertz.status != HertzStatus::Ok) {
+      result.status = KpStatus::NoEquivalentEllipse;
+      return result;
+    }
+    a_squared_A = A * hertz.a_m * hertz.a_m;
+    spread = a_squared_A - B * hertz.b_m * hertz.b_m;
+    b_hertz = hertz.b_m;
+  }
+  const double eps = options.virtual_penetration_factor;
+  auto interpenetration = [&](double s) {
+    if (!kpec) return eps * delta - patch.gap(s);
+    const double t = (s - s_mid) / b_hertz;
+    const double eps_s = std::clamp((a_squared_A - spread * t * t) / delta, 0.0, 1.0);  // §3.3 step 3
+    return eps_s * delta - patch.gap(s);
+  };
+  const double g_contact = interpenetration(s_contact);
+  if (!(g_contact > 0.0)) return result;
+  result.virtual_penetration_m = g_contact + gap_contact;
+  const ContactRange range = FindRange(patch, interpenetration, s_contact, g_contact);
+
+  // Strips over exactly the contact range.
+  const int n = options.strips_across_contact;
+  const double ds = (range.high - range.low) / n;
+  const double c_contact = std::sqrt(g_contact / patch.curvature(s_contact));
+  const double x_contact = result.contact_point_x_m;
+  const bool blanco = options.influence == KpInfluence::BlancoLorenzo;
+  const double coupling_K = blanco ? CouplingParameter(options.coupling, elastic) : 0.0;
+  const double alpha_contact = patch.alpha(s_contact);
+  result.strips.resize(n);
+  double c_max = c_contact;
+  double influence_sum = 0.0;
+  for (int j = 0; j < n; ++j) {
+    KpStrip& strip = result.strips[j];
+    const double low = range.low + j * ds;
+    const double high = j + 1 == n ? range.high : low + ds;
+    strip.s_m = 0.5 * (low + high);
+    strip.ds_m = high - low;
+    strip.x_centre_m = patch.x_offset(strip.s_m);
+    strip.alpha_rad = patch.alpha(strip.s_m);
+    strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
+    c_max = std::max(c_max, strip.half_length_m);
+    kp_detail::StripLoad load;
+    load.s_low = low;
+    load.s_high = high;
+    load.half_length = strip.half_length_m;
+    load.centre_offset = strip.x_centre_m - x_contact;
+    if (blanco) {
+      load.alpha_low = patch.alpha(low) - alpha_contact;  // alpha = alpha_J - alpha_I (§4.1)
+      load.alpha_high = patch.alpha(high) - alpha_contact;
+    }
+    influence_sum +=
+        kp_detail::StripNormalDisplacementIntegral(load, s_contact, elastic.poisson_ratio, blanco, coupling_K);
+  }
+  if (!(influence_sum > 0.0)) {
+    result.status = KpStatus::InfluenceNotPositive;
+    result.strips.clear();
+    return result;
+  }
+  // Paper 003 eq. 8 / physics-reference §3.2: u_n(contact point) = delta with p = p0 sqrt(c^2 - x^2) / c_norm.
+  const double c_norm = kpec ? c_max : c_contact;
+  result.p0_Pa = M_PI * elastic.shear_modulus_Pa * delta * c_norm / influence_sum;
+  result.pmax_Pa = result.p0_Pa * c_max / c_norm;
+
+  // Forces along each strip's own normal n_j = cos(alpha_j) n0 + sin(alpha_j) t0, moments, extents.
+  std::vector<double> angles;
+  angles.reserve(n + 2);
+  angles.push_back(patch.alpha(range.low));
+  angles.push_back(patch.alpha(range.high));
+  Eigen::Vector2d position = SurfaceStep(patch, 0.0, result.strips[0].s_m);
+  double x_low = x_contact - c_contact, x_high = x_contact + c_contact;
+  double force_s = 0.0, force_x = 0.0;
+  for (int j = 0; j < n; ++j) {
+    KpStrip& strip = result.strips[j];
+    if (j > 0) position += SurfaceStep(patch, result.strips[j - 1].s_m, strip.s_m);
+    strip.position_m = position;
+    strip.peak_pressure_Pa = result.p0_Pa * strip.half_length_m / c_norm;
+    strip.force_N = 0.5 * M_PI * strip.peak_pressure_Pa * strip.half_length_m * strip.ds_m;
+    const Eigen::Vector2d force(std::sin(strip.alpha_rad) * strip.force_N, std::cos(strip.alpha_rad) * strip.force_N);
+    result.force_on_wheel_N += force;
+    result.moment_Nm += position.x() * force.y() - position.y() * force.x();
+    result.fn_surface_N += strip.force_N;
+    result.area_m2 += 2.0 * strip.half_length_m * strip.ds_m;
+    force_s += strip.force_N * strip.s_m;
+    force_x += strip.force_N * strip.x_centre_m;
+    if (strip.half_length_m > 0.0) {
+      x_low = std::min(x_low, strip.x_centre_m - strip.half_length_m);
+      x_high = std::max(x_high, strip.x_centre_m + strip.half_length_m);
+    }
+    angles.push_back(strip.alpha_rad);
+  }
+  result.fs_N = result.force_on_wheel_N.x();
+  result.fn_N = result.force_on_wheel_N.y();
+  if (result.fn_surface_N > 0.0) {
+    result.action_s_m = force_s / result.fn_surface_N;
+    result.action_x_m = force_x / result.fn_surface_N;
+  }
+  result.s_min_m = range.low;
+  result.s_max_m = range.high;
+  result.width_m = range.high - range.low;
+  result.length_m = x_high - x_low;
+  const ConformityIndex conformity = ComputeConformityIndex(angles, options.conformity_threshold_deg);
+  result.alpha_c_deg = conformity.alpha_c_deg;
+  result.is_conformal = conformity.is_conformal;
+  result.status = range.cut ? KpStatus::ContactAtPatchBoundary : KpStatus::Ok;
+  return result;
+}
+
+double KpPressureAt(const KpResult& result, double x_m, double s_m) {
+  if (result.strips.empty() || s_m < result.s_min_m || s_m > result.s_max_m) return 0.0;
+  for (const KpStrip& strip : result.strips) {
+    if (std::abs(s_m - strip.s_m) <= 0.5 * strip.ds_m) {
+      if (strip.half_length_m <= 0.0) return 0.0;
+      const double t = (x_m - strip.x_centre_m) / strip.half_length_m;
+      return std::abs(t) < 1.0 ? strip.peak_pressure_Pa * std::sqrt(1.0 - t * t) : 0.0;
+    }
+  }
+  return 0.0;
+}
+
+std::vector<KpPressureElement> SampleKpPressure(const KpResult& result, int elements_along_x) {
+  if (elements_along_x < 1) throw InputError("SampleKpPressure: elements_along_x must be >= 1");
+  std::vector<KpPressureElement> elements;
+  elements.reserve(result.strips.size() * elements_along_x);
+  for (const KpStrip& strip : result.strips) {
+    if (strip.half_length_m <= 0.0) continue;
+    const double dx = 2.0 * strip.half_length_m / elements_along_x;
+    for (int i = 0; i < elements_along_x; ++i) {
+      KpPressureElement element;
+      element.x_m = strip.x_centre_m - strip.half_length_m + (i + 0.5) * dx;
+      element.s_m = strip.s_m;
+      element.dx_m = dx;
+      element.ds_m = strip.ds_m;
+      const double t = (element.x_m - strip.x_centre_m) / strip.half_length_m;
+      element.pressure_Pa = strip.peak_pressure_Pa * std::sqrt(std::max(1.0 - t * t, 0.0));
+      elements.push_back(element);
+    }
+  }
+  return elements;
+}
+
+}  // namespace conforma

@@ -1,0 +1,149 @@
+// Influence integrals of one KP strip (physics-reference §3.2 "integration tip", §4.3; paper 003 eqs. 5, 8).
+#include "kp_strip_integrals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include "conforma/hertz.hpp"
+
+namespace conforma {
+namespace kp_detail {
+
+namespace {
+
+// Gauss-Legendre nodes and weights on [-1, 1] (positive half; symmetric).
+constexpr double kGauss2Node[1] = {0.5773502691896257};
+constexpr double kGauss2Weight[1] = {1.0};
+constexpr double kGauss4Node[2] = {0.3399810435848563, 0.8611363115940526};
+constexpr double kGauss4Weight[2] = {0.6521451548625461, 0.3478548451374538};
+constexpr double kGauss8Node[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
+constexpr double kGauss8Weight[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                                     0.1012285362903763};
+
+// Integral of f over [a, b] with the n-point rule (n = 2, 4, 8).
+template <class F>
+double Gauss(const F& f, double a, double b, int points) {
+  const double mid = 0.5 * (a + b);
+  const double half = 0.5 * (b - a);
+  const double* node = kGauss8Node;
+  const double* weight = kGauss8Weight;
+  int pairs = 4;
+  if (points == 2) {
+    node = kGauss2Node;
+    weight = kGauss2Weight;
+    pairs = 1;
+  } else if (points == 4) {
+    node = kGauss4Node;
+    weight = kGauss4Weight;
+    pairs = 2;
+  }
+  double sum = 0.0;
+  for (int i = 0; i < pairs; ++i) sum += weight[i] * (f(mid - half * node[i]) + f(mid + half * node[i]));
+  return sum * half;
+}
+
+// Integral of f over [t_start, t_end] with panels growing geometrically away from t_start (where f varies on the
+// scale first_panel), 8-point Gauss per panel.
+template <class F>
+double GradedGauss(const F& f, double t_start, double t_end, double first_panel) {
+  const double length = std::abs(t_end - t_start);
+  if (length <= 0.0) return 0.0;
+  const double direction = t_end > t_start ? 1.0 : -1.0;
+  double panel = std::min(std::max(first_panel, 1e-6 * length), length);
+  double position = 0.0;
+  double sum = 0.0;
+  while (position < length) {
+    const double next = (length - position < 1.5 * panel) ? length : position + panel;
+    sum += Gauss(f, t_start + direction * position, t_start + direction * next, 8);
+    position = next;
+    panel *= 4.0;
+  }
+  return direction * sum;
+}
+
+}  // namespace
+
+double SemiEllipseOverDistance(double half_length, double centre_offset, double u) {
+  const double c = half_length;
+  if (c <= 0.0) return 0.0;
+  if (centre_offset == 0.0) {
+    // Integral of sqrt(c^2 - x^2)/sqrt(x^2 + u^2) over [-c, c] = 2 sqrt(c^2+u^2) (K(k) - E(k)), k' = u/sqrt(c^2+u^2).
+    const double hypot = std::sqrt(c * c + u * u);
+    return 2.0 * hypot * EllipticIntegralsFromComplementaryModulus(u / hypot).K_minus_E;
+  }
+  const double d = centre_offset;
+  // Log-singular part phi(0) * integral of 1/sqrt(x^2 + u^2) in closed form, bounded rest numerically in t
+  // (x = d + c sin t), panels graded towards the point x = 0 (or the end nearest to it).
+  const double phi0 = std::abs(d) < c ? std::sqrt(c * c - d * d) : 0.0;
+  const double singular = phi0 * (std::asinh((d + c) / u) - std::asinh((d - c) / u));
+  const double t_zero = std::asin(std::clamp(-d / c, -1.0, 1.0));
+  auto rest = [&](double t) {
+    const double x = d + c * std::sin(t);
+    const double cos_t = std::cos(t);
+    return (c * cos_t - phi0) * c * cos_t / std::sqrt(x * x + u * u);
+  };
+  const double first_panel = 0.5 * u / c;
+  return singular + GradedGauss(rest, t_zero, 0.5 * M_PI, first_panel) -
+         GradedGauss(rest, t_zero, -0.5 * M_PI, first_panel);
+}
+
+double SemiEllipseCoupling(double half_length, double centre_offset, double u) {
+  const double c = half_length;
+  if (c <= 0.0) return 0.0;
+  const std::complex<double> w(-centre_offset, u);
+  const std::complex<double> root = std::sqrt(w - c) * std::sqrt(w + c);  // branch ~ w at infinity, cut on [-c, c]
+  return M_PI * (root.imag() - u);
+}
+
+double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observation, double poisson_ratio,
+                                       bool blanco, double coupling_K) {
+  const double c = strip.half_length;
+  const double d = strip.centre_offset;
+  if (c <= 0.0 || strip.s_high <= strip.s_low) return 0.0;
+  const double alpha_slope = (strip.alpha_high - strip.alpha_low) / (strip.s_high - strip.s_low);
+  auto alpha_at = [&](double s) { return strip.alpha_low + alpha_slope * (s - strip.s_low); };
+  const bool coupled = blanco && coupling_K != 0.0;
+  // Regular integrand at s != s_observation.
+  auto integrand = [&](double s) {
+    const double u = std::abs(s - s_observation);
+    double value = (1.0 - poisson_ratio) * SemiEllipseOverDistance(c, d, u);
+    if (blanco) {
+      const double alpha = alpha_at(s);
+      value *= std::cos(alpha);
+      if (coupled) value += coupling_K * std::sin(alpha) * (s > s_observation ? 1.0 : -1.0) * SemiEllipseCoupling(c, d, u);
+    }
+    return value;
+  };
+  // A piece [a, b] of the strip not containing the observation point in its interior.
+  auto regular_piece = [&](double a, double b) {
+    const double distance = std::min(std::abs(a - s_observation), std::abs(b - s_observation));
+    const double ratio = distance / (b - a);
+    const int points = ratio < 0.5 ? 8 : (ratio < 2.0 ? 4 : 2);
+    return Gauss(integrand, a, b, points);
+  };
+  if (s_observation <= strip.s_low || s_observation >= strip.s_high) {
+    if (s_observation == strip.s_low || s_observation == strip.s_high) {
+      // touches the observation point: handled like a singular half below
+    } else {
+      return regular_piece(strip.s_low, strip.s_high);
+    }
+  }
+  // The strip holds the observation point: split there. Near u = 0 the 1/r part behaves like
+  // -2 phi(0) w_c(0) ln u (phi(0) = sqrt(c^2 - d^2)); subtract it and add its exact integral h (ln h - 1).
+  const double phi0 = std::abs(d) < c ? std::sqrt(c * c - d * d) : 0.0;
+  const double weight0 = blanco ? std::cos(alpha_at(s_observation)) : 1.0;
+  const double log_coefficient = 2.0 * (1.0 - poisson_ratio) * phi0 * weight0;
+  double total = 0.0;
+  for (int side = 0; side < 2; ++side) {
+    const double h = side == 0 ? s_observation - strip.s_low : strip.s_high - s_observation;
+    if (h <= 0.0) continue;
+    const double sign = side == 0 ? -1.0 : 1.0;
+    auto subtracted = [&](double u) { return integrand(s_observation + sign * u) + log_coefficient * std::log(u); };
+    total += Gauss(subtracted, 0.0, h, 8) - log_coefficient * h * (std::log(h) - 1.0);
+  }
+  return total;
+}
+
+}  // namespace kp_detail
+}  // namespace conforma

@@ -1,0 +1,35 @@
+#pragma once
+// Private to the KP solvers: influence integrals of one KP strip (semi-elliptic pressure in x, constant
+// half-length across the strip width) at one observation point. Kernels are those of influence.hpp
+// (physics-reference §4.3, paper 003 eq. 5); here they are integrated exactly in x and by Gauss quadrature in s.
+namespace conforma {
+namespace kp_detail {
+
+// F1 = integral over x in [d - c, d + c] of sqrt(c^2 - (x - d)^2) / sqrt(x^2 + u^2); u > 0.
+// d = 0: closed form 2 sqrt(c^2 + u^2) (K(k) - E(k)), k'^2 = u^2 / (c^2 + u^2) (complete elliptic integrals).
+// d != 0: the log-singular part phi(0) (asinh...) in closed form, the bounded rest by graded Gauss quadrature.
+double SemiEllipseOverDistance(double half_length, double centre_offset, double u);
+
+// F2 = u * integral of sqrt(c^2 - (x - d)^2) / (x^2 + u^2) dx = pi (Im sqrt((w - c)(w + c)) - u), w = -d + i u
+// (Stieltjes transform of the semicircle); bounded as u -> 0.
+double SemiEllipseCoupling(double half_length, double centre_offset, double u);
+
+// One strip of load: s in [s_low, s_high], semi-ellipse half-length c centred at x offset d from the observation
+// point, relative normal rotation alpha_J - alpha_I varying linearly from alpha_low to alpha_high across it.
+struct StripLoad {
+  double s_low = 0.0;
+  double s_high = 0.0;
+  double half_length = 0.0;
+  double centre_offset = 0.0;
+  double alpha_low = 0.0;
+  double alpha_high = 0.0;
+};
+
+// Integral over the strip of sqrt(c^2 - (x-d)^2) * [(1 - nu) w_c / r + coupling_K w_s (s - s_obs) / r^2], with
+// w_c = cos(alpha), w_s = sin(alpha) when blanco is true, else w_c = 1, w_s = 0. Unit m^2 (times 1/(pi G) and the
+// pressure scale p0 / c_norm it gives the normal displacement at the observation point).
+double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observation, double poisson_ratio,
+                                       bool blanco, double coupling_K);
+
+}  // namespace kp_detail
+}  // namespace conforma

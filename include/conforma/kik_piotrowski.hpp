@@ -1,0 +1,115 @@
+#pragma once
+// Kik-Piotrowski (KP) normal contact on one PatchGeometry: planar KP (virtual penetration eps = 0.55),
+// KPEC (CONTACT's variable-eps correction, exact for elliptic patches) and the conformal extension of
+// Distaso et al. 2026 (paper 003 eqs. 2-8: curvilinear rail coordinates x^r, s^r and the Blanco-Lorenzo
+// corrected influence function). physics-reference §§3, 4, 5, 9.
+//
+// The solver resamples the patch: it finds the contact range [s_min, s_max] of the virtual interpenetration
+// on the input strips (cubic Hermite interpolation of the gap, exact for quadratic gaps), then lays
+// strips_across_contact equal strips over exactly that range. On strip j the pressure is the KP semi-ellipse
+//     p(x, s_j) = p0 * sqrt(c_j^2 - (x - m_j)^2) / c_norm                        (paper 003 eq. 7)
+// with half-length c_j = sqrt(g_j / A_j), centre m_j = x_offset(s_j), c_norm = c at the contact point (KP)
+// or the largest half-length (KPEC). p0 follows from the contact condition u_n = delta at the contact point
+// (minimum gap), paper 003 eq. 8, with the influence integrals done per strip exactly in x (complete
+// elliptic integrals) and by Gauss quadrature in s with the logarithmic singularity subtracted.
+#include <Eigen/Core>
+#include <vector>
+
+#include "conforma/influence.hpp"
+#include "conforma/material.hpp"
+#include "conforma/patch.hpp"
+
+namespace conforma {
+
+enum class KpPenetrationRule {
+  ConstantEpsilon,   // Kik & Piotrowski 2008: g = eps * delta - gap (physics-reference §3.1)
+  VariableEpsilon,   // KPEC, CONTACT m_snorm.f90 (physics-reference §3.3)
+};
+
+enum class KpInfluence {
+  HalfSpace,      // Boussinesq: (1 - nu) / (pi G r), both bodies combined (paper 003 eq. 1)
+  BlancoLorenzo,  // paper 003 eqs. 2, 3, 5, 8: [(1 - nu) cos(a) / r + K sin(a) s / r^2] / (pi G), a = alpha_J - alpha_I
+};
+
+enum class KpStatus {
+  Ok,
+  NoContact,               // the virtual interpenetration is nowhere positive (approach <= 0 or gap too large)
+  ContactAtPatchBoundary,  // the contact reaches the end of the given strips: the patch was cut (result still valid
+                           // for the part inside)
+  NoEquivalentEllipse,     // KPEC only: no Hertz solution for the equivalent ellipse
+  InfluenceNotPositive,    // conformal only: the corrected influence integral is <= 0 (normals turned > 90 deg)
+};
+const char* to_string(KpStatus status);
+
+struct KpOptions {
+  KpPenetrationRule penetration = KpPenetrationRule::ConstantEpsilon;
+  KpInfluence influence = KpInfluence::HalfSpace;
+  double virtual_penetration_factor = 0.55;  // eps of Kik & Piotrowski (CONTACT user guide eps_kp = 0.55)
+  // K of the Blanco-Lorenzo sin(alpha) coupling term (paper 003 eq. 3), see influence.hpp: CombinedBodies uses
+  // Kalker's difference parameter, 0 for wheel and rail of the same steel (physics-reference §0, §4.3) - the
+  // default; PaperSingleBody uses the paper's quasi-identity value (1 - 2 nu) / (2 (1 - nu)).
+  ConformalCoupling coupling = ConformalCoupling::CombinedBodies;
+  int strips_across_contact = 41;  // resolution along s^r (the x direction is integrated exactly)
+  double conformity_threshold_deg = 18.0;  // paper 003 §4.3
+  Material material;
+};
+
+// One strip of the solved patch. Pressure on the strip: peak_pressure_Pa * sqrt(1 - ((x - x_centre_m)/half_length_m)^2).
+struct KpStrip {
+  double s_m = 0.0;               // strip centre along s^r (patch coordinates)
+  double ds_m = 0.0;              // strip width
+  double x_centre_m = 0.0;        // m_j
+  double half_length_m = 0.0;     // c_j
+  double alpha_rad = 0.0;         // local normal angle from the reference normal
+  double peak_pressure_Pa = 0.0;  // p0 c_j / c_norm
+  double force_N = 0.0;           // (pi/2) peak c_j ds, along the strip's own normal
+  Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // strip centre on the rail surface, (tangent t0, normal n0)
+                                                          // components relative to the reference point
+};
+
+struct KpResult {
+  KpStatus status = KpStatus::NoContact;
+  std::vector<KpStrip> strips;
+  double approach_m = 0.0;             // rigid approach delta
+  double virtual_penetration_m = 0.0;  // eps * delta (KP) or eps(s_contact) * delta (KPEC)
+  double contact_point_s_m = 0.0;      // observation point of the contact condition (minimum gap)
+  double contact_point_x_m = 0.0;
+  double p0_Pa = 0.0;    // paper 003 eq. 8 (KP: pressure at the contact point; KPEC: scale of the longest strip)
+  double pmax_Pa = 0.0;  // largest pressure in the patch
+  double fn_N = 0.0;     // resultant pressure force along the reference normal (CONTACT's fn_bar)
+  double fs_N = 0.0;     // its component along the reference tangent t0 (+s direction); 0 for a planar patch
+  double fn_surface_N = 0.0;  // integral of the pressure over the curved surface (CONTACT's fn_tilde)
+  Eigen::Vector2d force_on_wheel_N = Eigen::Vector2d::Zero();  // (fs_N, fn_N): the pressure pushes the wheel along +n
+  double moment_Nm = 0.0;     // moment of force_on_wheel about the longitudinal axis through the reference point,
+                              // positive turning t0 towards n0
+  double action_s_m = 0.0;    // force-weighted mean s of the strips
+  double action_x_m = 0.0;    // force-weighted mean x (yaw lead)
+  double area_m2 = 0.0;       // curved contact area, sum 2 c_j ds
+  double width_m = 0.0;       // extent along s^r, s_max - s_min
+  double length_m = 0.0;      // extent along x^r
+  double s_min_m = 0.0;
+  double s_max_m = 0.0;
+  double alpha_c_deg = 0.0;   // conformity index, paper 003 eq. 13
+  bool is_conformal = false;  // alpha_c_deg > threshold
+};
+
+// Approach given: contact area, pressure and forces. Throws InputError for an inconsistent patch, NaN or a
+// negative approach, bad options.
+KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& patch, double approach_m, const KpOptions& options);
+
+// Options of the three named models of the architecture guide.
+KpOptions PlanarKpOptions(const Material& material);      // eps = 0.55, half-space
+KpOptions KpecOptions(const Material& material);          // variable eps, half-space
+KpOptions ConformalKpOptions(const Material& material);   // eps = 0.55, Blanco-Lorenzo
+
+// Pressure at (x, s) of a solved patch (0 outside the contact).
+double KpPressureAt(const KpResult& result, double x_m, double s_m);
+
+// The pressure sampled on a grid of elements: each strip cut into elements_along_x equal elements across its
+// contact length; pressure at the element centre.
+struct KpPressureElement {
+  double x_m = 0.0, s_m = 0.0, dx_m = 0.0, ds_m = 0.0, pressure_Pa = 0.0;
+};
+std::vector<KpPressureElement> SampleKpPressure(const KpResult& result, int elements_along_x);
+
+}  // namespace conforma
