@@ -70,6 +70,15 @@ double C23AsymptoteAgtB(double g, double nu) {
   return 2.0 * M_PI / (3.0 * std::pow(g, 1.5) * ((1.0 - nu) * lambda - 2.0 + 4.0 * nu));
 }
 
+// g^power for the four exponents used (0, -1/2, 1, 3/2), without std::pow (this runs once per patch).
+double Power(double g, double power) {
+  if (power == 0.0) return 1.0;
+  if (power == 1.0) return g;
+  if (power == 1.5) return g * std::sqrt(g);
+  if (power == -0.5) return 1.0 / std::sqrt(g);
+  return std::pow(g, power);
+}
+
 // One coefficient at one table Poisson ratio (column): the table interpolated in g of C * g^power
 // (power = exponent that keeps it bounded), and below g = 0.1 the asymptote with a linear correction.
 double CoefficientAtNode(const std::array<Row, 10>& table, int column, double g, double power,
@@ -86,9 +95,9 @@ double CoefficientAtNode(const std::array<Row, 10>& table, int column, double g,
   if (i < 0) i = 0;
   const double t = position - i;
   const double g0 = 0.1 * (i + 1), g1 = 0.1 * (i + 2);
-  const double f0 = table[i][column] * std::pow(g0, power);
-  const double f1 = table[i + 1][column] * std::pow(g1, power);
-  return ((1.0 - t) * f0 + t * f1) / std::pow(g, power);
+  const double f0 = table[i][column] * Power(g0, power);
+  const double f1 = table[i + 1][column] * Power(g1, power);
+  return ((1.0 - t) * f0 + t * f1) / Power(g, power);
 }
 
 // Quadratic Lagrange interpolation of 1/C in nu through nu = 0, 0.25, 0.5 (§2.2, CONTACT).
