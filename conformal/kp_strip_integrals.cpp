@@ -59,7 +59,7 @@ double GradedGauss(const F& f, double t_start, double t_end, double first_panel)
     position = next;
     panel *= 4.0;
   }
-  return direction * sum;
+  return sum;  // Gauss() on a reversed interval already carries the sign
 }
 
 }  // namespace
