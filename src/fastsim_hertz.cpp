@@ -29,6 +29,10 @@ void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& opt
   require_positive(input.b_m, "b_m");
   require_non_negative(input.normal_force_N, "normal_force_N");
   require_non_negative(input.friction_coefficient, "friction_coefficient");
+  require_finite(input.creepages.xi, "xi");
+  require_finite(input.creepages.eta, "eta");
+  require_finite(input.creepages.phi_per_m, "phi_per_m");
+  require_non_negative(input.rolling_speed_m_per_s, "rolling_speed_m_per_s");
   input.material.validate();
   if (input.nx < 1 || input.ny < 1) throw InputError("SolveFastsimHertz: nx and ny must be >= 1");
   if (input.normal_force_N == 0.0) {

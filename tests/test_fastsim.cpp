@@ -354,6 +354,8 @@ TEST(Fastsim, DegenerateAndBadInput) {
   const FastsimResult none = SolveFastsimHertz(in, FastsimOptions{});
   EXPECT_EQ(none.status, FastsimStatus::NoContact);
   EXPECT_EQ(none.fx_N, 0.0);
+  in.creepages.eta = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(SolveFastsimHertz(in, FastsimOptions{}), InputError);  // bad input even without load
   in = Patch(1.0);
   in.creepages.xi = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(SolveFastsimHertz(in, FastsimOptions{}), InputError);
