@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "conforma/error.hpp"
+#include "profile_smoothing.hpp"
 
 namespace conforma {
 
@@ -98,6 +99,9 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
   for (const auto& q : pts)
     if (p.empty() || (q - p.back()).norm() > 1e-9) p.push_back(q);
   if (p.size() < 4) throw InputError(source, 0, "a profile needs at least 4 distinct points, got " + std::to_string(p.size()));
+  // noisy points: replace them by the parametric smoothing spline sampled at a quarter of the output spacing
+  if (options.smoothing_rms_m > 0)
+    p = profile_smoothing::smooth(p, options.smoothing_rms_m, 0.25 * options.sample_spacing_m, source);
   if (auto hit = find_self_intersection(p)) {
     std::ostringstream m;
     m << "profile self-intersects between points " << hit->first + 1 << " and " << hit->second + 1 << " (y = "
