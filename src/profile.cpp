@@ -16,24 +16,23 @@ namespace {
 // Second derivatives of the natural cubic spline through (t_i, v_i) (tridiagonal Thomas algorithm).
 std::vector<double> natural_spline_second_derivatives(const std::vector<double>& t, const std::vector<double>& v) {
   const size_t n = t.size();
-  std::vector<double> m(n, 0.0), c(n, 0.0), d(n, 0.0);
+  std::vector<double> m(n, 0.0);
   if (n < 3) return m;
-  // interior equations: h0 m_{i-1} + 2(h0+h1) m_i + h1 m_{i+1} = 6((v_{i+1}-v_i)/h1 - (v_i-v_{i-1})/h0)
-  std::vector<double> diag(n, 1.0), upper(n, 0.0), lower(n, 0.0);
+  // interior equations: h0 m_{i-1} + 2(h0+h1) m_i + h1 m_{i+1} = 6((v_{i+1}-v_i)/h1 - (v_i-v_{i-1})/h0),
+  // natural ends m_0 = m_{n-1} = 0. Forward elimination keeps the modified diagonal in `diag` and the modified
+  // right-hand side in m.
+  std::vector<double> diag(n, 1.0);
   for (size_t i = 1; i + 1 < n; ++i) {
     const double h0 = t[i] - t[i - 1], h1 = t[i + 1] - t[i];
-    lower[i] = h0;
-    diag[i] = 2.0 * (h0 + h1);
-    upper[i] = h1;
-    d[i] = 6.0 * ((v[i + 1] - v[i]) / h1 - (v[i] - v[i - 1]) / h0);
+    const double rhs = 6.0 * ((v[i + 1] - v[i]) / h1 - (v[i] - v[i - 1]) / h0);
+    const double upper_prev = i >= 2 ? h0 : 0.0;  // upper coefficient of row i-1 (row 0 is the identity)
+    const double w = h0 / diag[i - 1];
+    diag[i] = 2.0 * (h0 + h1) - w * upper_prev;
+    m[i] = rhs - w * m[i - 1];
   }
-  for (size_t i = 1; i < n; ++i) {  // forward elimination
-    const double w = lower[i] / diag[i - 1];
-    diag[i] -= w * upper[i - 1];
-    d[i] -= w * d[i - 1];
-  }
-  m[n - 1] = d[n - 1] / diag[n - 1];
-  for (size_t i = n - 1; i-- > 0;) m[i] = (d[i] - upper[i] * m[i + 1]) / diag[i];
+  m[n - 1] = 0.0;
+  for (size_t i = n - 2; i >= 1; --i) m[i] = (m[i] - (i + 2 < n ? t[i + 1] - t[i] : 0.0) * m[i + 1]) / diag[i];
+  m[0] = 0.0;
   return m;
 }
 
