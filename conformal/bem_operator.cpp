@@ -34,24 +34,30 @@ Convolution::Convolution(const Eigen::MatrixXd& kernel, int nx, int ns, bool use
       const int a = (di + px_) % px_, b = (dj + ps_) % ps_;
       kernel_spectrum_[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = kernel_(di + nx_ - 1, dj + ns_ - 1);
     }
-  Transform(kernel_spectrum_, false);
+  Transform(kernel_spectrum_, false, ps_);
   kernel_.resize(0, 0);
 }
 
-// 2-D FFT by rows and columns of 1-D transforms (Eigen's kissfft backend has no 2-D transform).
-void Convolution::Transform(std::vector<std::complex<double>>& data, bool inverse) {
-  Eigen::FFT<double> fft;
-  for (int b = 0; b < ps_; ++b) {  // along x (contiguous)
-    line_in_.assign(data.begin() + static_cast<long>(b) * px_, data.begin() + static_cast<long>(b + 1) * px_);
-    if (inverse) fft.inv(line_out_, line_in_); else fft.fwd(line_out_, line_in_);
-    std::copy(line_out_.begin(), line_out_.end(), data.begin() + static_cast<long>(b) * px_);
-  }
-  line_in_.resize(static_cast<size_t>(ps_));
-  for (int a = 0; a < px_; ++a) {  // along s (stride px)
-    for (int b = 0; b < ps_; ++b) line_in_[static_cast<size_t>(b)] = data[static_cast<size_t>(a) + static_cast<size_t>(px_) * b];
-    if (inverse) fft.inv(line_out_, line_in_); else fft.fwd(line_out_, line_in_);
-    for (int b = 0; b < ps_; ++b) data[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = line_out_[static_cast<size_t>(b)];
-  }
+// 2-D FFT by rows and columns of 1-D transforms (Eigen's kissfft backend has no 2-D transform). Only the
+// first `columns` lines along x carry data (zero padding) or are needed (the output window), so the
+// x-transforms are restricted to them: forward x then s, inverse s then x.
+void Convolution::Transform(std::vector<std::complex<double>>& data, bool inverse, int columns) {
+  auto along_x = [&]() {
+    for (int b = 0; b < columns; ++b) {
+      line_in_.assign(data.begin() + static_cast<long>(b) * px_, data.begin() + static_cast<long>(b + 1) * px_);
+      if (inverse) fft_.inv(line_out_, line_in_); else fft_.fwd(line_out_, line_in_);
+      std::copy(line_out_.begin(), line_out_.end(), data.begin() + static_cast<long>(b) * px_);
+    }
+  };
+  auto along_s = [&]() {
+    line_in_.resize(static_cast<size_t>(ps_));
+    for (int a = 0; a < px_; ++a) {
+      for (int b = 0; b < ps_; ++b) line_in_[static_cast<size_t>(b)] = data[static_cast<size_t>(a) + static_cast<size_t>(px_) * b];
+      if (inverse) fft_.inv(line_out_, line_in_); else fft_.fwd(line_out_, line_in_);
+      for (int b = 0; b < ps_; ++b) data[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = line_out_[static_cast<size_t>(b)];
+    }
+  };
+  if (inverse) { along_s(); along_x(); } else { along_x(); along_s(); }
 }
 
 void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
@@ -71,9 +77,9 @@ void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
   for (int j = 0; j < ns_; ++j)
     for (int i = 0; i < nx_; ++i)
       work_[static_cast<size_t>(i) + static_cast<size_t>(px_) * j] = in[i + static_cast<long>(nx_) * j];
-  Transform(work_, false);
+  Transform(work_, false, ns_);
   for (size_t k = 0; k < work_.size(); ++k) work_[k] *= kernel_spectrum_[k];
-  Transform(work_, true);
+  Transform(work_, true, ns_);
   for (int j = 0; j < ns_; ++j)
     for (int i = 0; i < nx_; ++i)
       out[i + static_cast<long>(nx_) * j] = work_[static_cast<size_t>(i) + static_cast<size_t>(px_) * j].real();

@@ -3,6 +3,7 @@
 // circular convolution, Liu, Wang & Liu 2000) or by direct summation. Vectors are column-major
 // nx x ns fields flattened as i + nx * j.
 #include <Eigen/Core>
+#include <unsupported/Eigen/FFT>
 #include <complex>
 #include <optional>
 #include <vector>
@@ -22,9 +23,10 @@ class Convolution {
   void Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out);
 
  private:
-  void Transform(std::vector<std::complex<double>>& data, bool inverse);
+  void Transform(std::vector<std::complex<double>>& data, bool inverse, int columns);
   int nx_, ns_, px_ = 0, ps_ = 0;
   bool use_fft_;
+  Eigen::FFT<double> fft_;  // keeps its twiddle tables between transforms
   Eigen::MatrixXd kernel_;
   std::vector<std::complex<double>> kernel_spectrum_;
   std::vector<std::complex<double>> work_, line_in_, line_out_;
