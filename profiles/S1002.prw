@@ -7,6 +7,7 @@
   spline.begin
     approx.smooth  = +0.000000000000000e+00
     comment        = 'S1002 (EN 13715)'
+    type           =  0                       ! Original data file type
     point.dist.min = +0.000000000000000e+00
     shift.y        = +0.000000000000000e+00
     shift.z        = +0.000000000000000e+00

@@ -157,6 +157,12 @@ void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
   if (pts.size() < 4)
     throw InputError(p.source, lines.empty() ? 0 : lines.back(),
                      "a profile needs at least 4 distinct points, found " + std::to_string(pts.size()));
+  if (p.kind == ProfileKind::Wheel && pts.front().x() > -0.060) {
+    std::ostringstream m;
+    m << "wheel: the profile starts at y = " << std::setprecision(4) << mm(pts.front().x())
+      << " mm, not near the flange back at -70 mm; its y origin may not be the taping line";
+    p.notes.push_back(m.str());
+  }
   if (auto hit = find_self_intersection(pts)) {
     std::ostringstream m;
     m << "profile self-intersects: the segment starting at line " << lines[hit->first] << " " << where(p, hit->first)

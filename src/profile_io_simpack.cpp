@@ -168,6 +168,7 @@ void SaveProfileSimpack(const Profile& profile, const std::string& path, double 
       << "\n  header.begin\n    version       =  1\n    type          =  " << (wheel ? 1 : 0)
       << "                       ! 0=rail profile, 1=wheel profile\n  header.end\n  spline.begin\n"
       << "    approx.smooth  = +0.000000000000000e+00\n    comment        = '" << comment << "'\n"
+      << "    type           =  0                       ! Original data file type\n"
       << "    point.dist.min = +0.000000000000000e+00\n    shift.y        = +0.000000000000000e+00\n"
       << "    shift.z        = +0.000000000000000e+00\n    rotate         = +0.000000000000000e+00\n"
       << "    bound.y.min    = +1.000000000000000e+00\n    bound.y.max    = +0.000000000000000e+00\n"
