@@ -149,3 +149,17 @@ TEST(ProfileStandard, CommittedProfileFilesMatchTheGenerators) {
   EXPECT_EQ(n, 13);
   std::filesystem::remove_all(tmp);
 }
+
+TEST(ProfileStandard, RailFlanksReachAtLeast25mmBelowTheTop) {
+  for (RailSection r : {RailSection::R60E1, RailSection::R54E1, RailSection::R50E6, RailSection::R50E4})
+    for (double a : {0.0, rail_inclination_1in40(), rail_inclination_1in20()}) {
+      const Profile p = MakeRail(r, a);
+      EXPECT_LE(p.position(0.0).y(), -0.025) << to_string(r) << " gauge side, inclination " << a;
+      EXPECT_LE(p.position(p.length()).y(), -0.025) << to_string(r) << " field side, inclination " << a;
+      // gauge side first (s increases towards the field side), highest point at the origin
+      EXPECT_LT(p.position(0.0).x(), p.position(p.length()).x());
+      EXPECT_NEAR(*p.height_at(0.0), 0.0, 1e-9);
+      // the 1:20 head flank is straight: zero curvature 20 mm below the top on the gauge side
+      EXPECT_NEAR(p.curvature(p.closest_s({-0.040, -0.020})), 0.0, 1.0);
+    }
+}
