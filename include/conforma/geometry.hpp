@@ -1,0 +1,208 @@
+#pragma once
+// Wheel-rail contact geometry of a wheelset on straight track: frames, track set-up, wheelset pose, rigid
+// contact search with yaw and roll, and the rigid two-rail equilibrium (z, roll) used for Delta r(y).
+//
+// FRAMES (tested against the Manchester reference in tests/test_manchester_geometry.cpp)
+//   Track frame (right-handed): x along the track in the rolling direction, y lateral positive towards the
+//     LEFT rail, z up. The top of the rails (highest point of each mounted rail) is at z = 0.
+//   Side frame of wheel/rail `side` (Left, Right): (x, eta, z) with eta = sigma * y, sigma = +1 (left),
+//     -1 (right): eta points to the FIELD side of that rail for both sides. Profiles are stored in the
+//     right-side convention of profile.hpp (y towards the field side), so in the side frame a rail profile
+//     point (y_r, z_r) sits at eta = rail_origin_eta + y_r, z = z_r, and both sides are handled by the same
+//     code. The left side is the mirror image (left-handed for the left rail, as CONTACT reports it).
+//   Wheelset pose: lateral shift y (+ towards the left rail), vertical position z of the axle centre
+//     above (rail-top level + mean nominal radius), roll phi about +x (+ raises the LEFT wheel), yaw psi
+//     about +z (+ turns the heading towards the left: the left wheel moves backwards, -b sin psi).
+//     The rotation is R = Rz(psi) Rx(phi); in the side frame of side sigma it is Rz(sigma psi) Rx(sigma phi).
+//   Wheel placement: flange back at wheel-profile y = flange_back_position (S1002: -70 mm) and the two flange
+//     backs flange_back_distance apart, so the wheel-profile origin (taping line) is at body eta
+//     b = flange_back_distance / 2 - flange_back_position (750 mm for 1360 / -70 mm).
+//   Rail placement: each rail is mounted with its inclination (cant towards the track centre, applied to the
+//     uninclined profile; 0 when the file is already canted), re-referenced to its highest point, and placed
+//     so that the gauge-side point gauge_height below the top is at eta = gauge / 2.
+//   Contact angle delta: angle of the outward RAIL normal from the track vertical, POSITIVE when the normal
+//     leans towards the track centre (gauge side): flange contact about +1.1 rad. CONTACT's delta_cp for the
+//     left rail (its left-handed frame) has the opposite sign: delta_cp = -delta.
+//   Lead: x coordinate of a contact point in the track frame relative to the axle centre (+ ahead).
+//
+// RIGID CONTACT SEARCH (paper 001 eqs. 4-6): the wheel surface point whose outward normal has no component
+// along the track x axis lies on the wheel's silhouette seen along x. For a wheel-profile point (y_w, r, r')
+// its angle theta about the axle solves R00 sin(theta) - R02 cos(theta) = R01 r' (closed form); for yaw
+// alone sin(theta) = -tan(psi) r'. The silhouette points form a plane curve in the side frame (eta, z) and,
+// the rail being a prism along x, wheel and rail touch where this curve touches the rail profile. Candidates
+// are the local minima of the vertical separation (found on a coarse scan and refined by Brent's method),
+// each then refined to the minimum of the gap along the local rail normal (exactly the rigid gap; at
+// contact both minima coincide).
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "conforma/profile.hpp"
+
+namespace conforma {
+
+enum class Side { Left = 0, Right = 1 };
+inline double side_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
+inline int side_index(Side side) { return static_cast<int>(side); }
+const char* to_string(Side side);
+
+struct TrackSetup {
+  double gauge_m = 1.435;                    // measured gauge_height_m below the top of the rails
+  double gauge_height_m = 0.014;
+  double flange_back_distance_m = 1.360;
+  double flange_back_position_m = -0.070;    // wheel-profile y of the flange back
+  std::array<double, 2> nominal_radius_m{0.46, 0.46};  // [Left, Right]
+  double rail_inclination_rad = 0.0;         // applied to both (uninclined) rail profiles
+  std::array<Profile, 2> wheel;              // [Left, Right], each in the right-side convention
+  std::array<Profile, 2> rail;               // [Left, Right], each in the right-side convention
+  void validate() const;                     // throws InputError naming the parameter
+};
+// Same wheel and rail profile on both sides.
+TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double rail_inclination_rad = 0.0);
+
+struct WheelsetPose {
+  double lateral_m = 0.0;
+  double vertical_m = 0.0;
+  double roll_rad = 0.0;
+  double yaw_rad = 0.0;
+};
+
+struct GeometryOptions {
+  double table_spacing_m = 0.1e-3;   // uniform y tables of wheel and rail (cubic Hermite between nodes)
+  double scan_spacing_m = 0.5e-3;    // coarse silhouette scan along the wheel profile (multiple of the above)
+  double max_slope = 12.0;           // |dz/dy| beyond which profile parts are left out (85 deg)
+  double candidate_window_m = 2e-3;  // local minima up to this much above the smallest gap are reported
+  double contact_tolerance_m = 1e-6; // minima within this of the smallest gap count as contact points
+};
+
+enum class ContactStatus { Ok, NoOverlap /* silhouette does not face the rail head */ };
+const char* to_string(ContactStatus status);
+
+struct RigidContactPoint {
+  double gap_m = 0.0;               // rigid gap along the rail normal (< 0: interpenetration)
+  double vertical_gap_m = 0.0;      // vertical separation at the vertical-gap minimum
+  Eigen::Vector3d wheel_point_m = Eigen::Vector3d::Zero();  // track frame
+  Eigen::Vector3d rail_point_m = Eigen::Vector3d::Zero();   // track frame (x = lead of the wheel point)
+  Eigen::Vector2d rail_profile_m = Eigen::Vector2d::Zero(); // mounted rail-profile (y, z), origin at its top
+  double rail_s_m = 0.0;            // arc length on the mounted rail profile
+  Eigen::Vector2d wheel_profile_m = Eigen::Vector2d::Zero();// wheel-profile (y_w, z_w)
+  double contact_angle_rad = 0.0;   // rail normal from vertical, + towards the gauge side
+  double rolling_radius_m = 0.0;    // r0 + z_w(y_w)
+  double lead_m = 0.0;              // longitudinal position of the wheel contact point
+  double wheel_theta_rad = 0.0;     // angle about the axle of the silhouette point (+ ahead)
+  double wheel_lateral_curvature_per_m = 0.0;  // convex > 0
+  double rail_lateral_curvature_per_m = 0.0;   // convex > 0
+  double hertz_A_per_m = 0.0;       // cos(alpha_w) / (2 r)  (alpha_w: wheel profile slope angle)
+  double hertz_B_per_m = 0.0;       // (kappa_wheel + kappa_rail) / 2
+};
+
+struct WheelContactResult {
+  ContactStatus status = ContactStatus::NoOverlap;
+  std::vector<RigidContactPoint> points;  // local gap minima within candidate_window_m, smallest gap first
+  int contact_count = 0;                  // points within contact_tolerance_m of the smallest gap
+};
+
+struct WheelsetContactResult {
+  std::array<WheelContactResult, 2> wheel;  // [Left, Right]
+};
+
+struct EquilibriumOptions {
+  double tolerance_m = 1e-10;
+  int max_iterations = 60;
+  // false: the roll stays at guess.roll_rad and each wheel takes its own smallest-gap contact (the wheelset
+  // is lowered onto the left rail; the right wheel's gap is then not zero). This is how the EN 15302
+  // benchmark Delta r tables are reproduced (see tests/test_conicity_en15302.cpp).
+  bool include_roll = true;
+};
+enum class EquilibriumStatus { Converged, NotConverged, NoContact };
+const char* to_string(EquilibriumStatus status);
+
+struct EquilibriumResult {
+  EquilibriumStatus status = EquilibriumStatus::NoContact;
+  WheelsetPose pose;                   // lateral and yaw as given; vertical and roll solved
+  WheelsetContactResult contact;       // at the solved pose
+  double rolling_radius_difference_m = 0.0;  // r_left - r_right at the smallest-gap contact points
+  int iterations = 0;
+};
+
+// Everything that depends only on the track set-up (mounted rails, uniform tables) is prepared once; the
+// pose evaluations are const and thread-safe.
+class WheelsetTrackGeometry {
+ public:
+  explicit WheelsetTrackGeometry(TrackSetup setup, const GeometryOptions& options = {});
+
+  const TrackSetup& setup() const { return setup_; }
+  const GeometryOptions& options() const { return options_; }
+  // Mounted rail profile of a side (inclined, origin at its highest point), right-side convention.
+  const Profile& mounted_rail(Side side) const { return sides_[side_index(side)].mounted_rail; }
+  // eta of the mounted rail-profile origin in the side frame.
+  double rail_origin_eta_m(Side side) const { return sides_[side_index(side)].rail_origin_eta; }
+  double wheel_origin_eta_m() const { return wheel_origin_eta_; }
+
+  WheelContactResult RigidContact(Side side, const WheelsetPose& pose) const;
+  WheelsetContactResult RigidContacts(const WheelsetPose& pose) const;
+  // Smallest vertical separation of one wheel (cheap: coarse scan + Brent), and the track-frame y of that
+  // point. Returns false when the wheel does not face the rail head.
+  bool MinimumVerticalGap(Side side, const WheelsetPose& pose, double* gap_m, double* track_y_m) const;
+  // Vertical position and roll so that both wheels touch their rails (rigid), for a given lateral shift and
+  // yaw. `guess` supplies starting values of vertical_m and roll_rad (continuation along a sweep).
+  EquilibriumResult SolveRigidEquilibrium(double lateral_m, double yaw_rad, const WheelsetPose& guess = {},
+                                          const EquilibriumOptions& options = {}) const;
+
+  // ---- lower-level access used by the candidate and creepage modules ----
+  struct Frame {               // pose in the side frame of one side
+    Eigen::Matrix3d rotation;  // Rz(sigma psi) Rx(sigma phi)
+    Eigen::Vector3d centre;    // (0, sigma y, mean r0 + z)
+    double sin_beta = 0.0, cos_beta = 1.0, rho = 1.0;  // silhouette closed-form constants
+  };
+  Frame SideFrame(Side side, const WheelsetPose& pose) const;
+  // Silhouette point of the wheel at wheel-profile y_w (side frame); false outside the wheel table or when
+  // the silhouette condition has no solution. theta, radius, slope r' optional outputs.
+  bool SilhouettePoint(Side side, const Frame& frame, double y_w, Eigen::Vector3d* point, double* theta = nullptr,
+                       double* radius = nullptr, double* slope = nullptr) const;
+  // Rail height and slope at side-frame eta; false outside the rail table.
+  bool RailHeight(Side side, double eta, double* z, double* slope) const;
+  // Rigid gap along the local rail normal at side-frame eta of the rail surface: the signed distance from
+  // the rail point along its outward normal to the wheel silhouette (< 0: interpenetration). y_w_guess is
+  // the starting wheel-profile y (updated to the solution). False if no intersection was found.
+  bool NormalGap(Side side, const Frame& frame, double eta, double* y_w_guess, double* gap_m,
+                 Eigen::Vector3d* wheel_point = nullptr) const;
+  // Arc length on the mounted rail at side-frame eta (rail table), and the inverse.
+  double RailArcLength(Side side, double eta) const;
+  double RailEtaAtArcLength(Side side, double s) const;
+  // Wheel profile quantities at y_w: radial height z_w, slope, curvature (convex > 0).
+  bool WheelProfileAt(Side side, double y_w, double* z_w, double* slope, double* curvature) const;
+  double WheelTableBegin(Side side) const { return sides_[side_index(side)].wheel.y0; }
+  double WheelTableEnd(Side side) const { return sides_[side_index(side)].wheel.y_end(); }
+  double RailTableBegin(Side side) const { return sides_[side_index(side)].rail.y0; }
+  double RailTableEnd(Side side) const { return sides_[side_index(side)].rail.y_end(); }
+  // Fills the derived quantities of a contact point from (y_w, eta_rail) in the side frame.
+  RigidContactPoint MakeContactPoint(Side side, const Frame& frame, const WheelsetPose& pose, double y_w,
+                                     double eta_rail, double gap_m, double vertical_gap_m) const;
+
+  // Uniform table z(y) of a function-like profile part, cubic Hermite between nodes.
+  struct GraphTable {
+    double y0 = 0.0, h = 1e-4;
+    std::vector<double> z, dz, kappa, s;  // value, slope, signed curvature (convex > 0), arc length
+    size_t size() const { return z.size(); }
+    double y_end() const { return z.empty() ? y0 : y0 + h * static_cast<double>(z.size() - 1); }
+    bool eval(double y, double* value, double* slope) const;
+  };
+
+ private:
+  struct SideData {
+    Profile mounted_rail;
+    double rail_origin_eta = 0.0;
+    GraphTable rail;   // in side-frame eta
+    GraphTable wheel;  // in wheel-profile y_w (z = radial height z_w)
+    double nominal_radius = 0.46;
+  };
+  TrackSetup setup_;
+  GeometryOptions options_;
+  std::array<SideData, 2> sides_;
+  double wheel_origin_eta_ = 0.75;
+  double mean_radius_ = 0.46;
+};
+
+}  // namespace conforma

@@ -1,0 +1,126 @@
+// Rigid two-rail equilibrium of a wheelset: for a given lateral shift and yaw, the vertical position and
+// roll for which both wheels touch their rails (smallest vertical separation zero on each side).
+#include <algorithm>
+#include <cmath>
+
+#include "conforma/error.hpp"
+#include "conforma/geometry.hpp"
+
+namespace conforma {
+
+EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m, double yaw_rad,
+                                                               const WheelsetPose& guess,
+                                                               const EquilibriumOptions& options) const {
+  require_finite(lateral_m, "lateral_m");
+  require_finite(yaw_rad, "yaw_rad");
+  require_finite(guess.vertical_m, "guess.vertical_m");
+  require_finite(guess.roll_rad, "guess.roll_rad");
+  require_positive(options.tolerance_m, "EquilibriumOptions.tolerance_m");
+  EquilibriumResult out;
+  WheelsetPose pose = guess;
+  pose.lateral_m = lateral_m;
+  pose.yaw_rad = yaw_rad;
+  // The vertical gap of a wheel grows exactly by dz when the wheelset is lifted by dz, so for a given roll
+  // the left wheel touches at z*(phi) = z - g_left(z, phi). The remaining condition is the 1-D root
+  // F(phi) = g_right(z*(phi), phi) = 0; F is continuous (a minimum over contact candidates) and decreases
+  // with phi (lever about -(track half width)). Secant steps safeguarded by a bracket (Illinois).
+  double y_contact;
+  auto F = [&](double phi, double* z_star, bool* ok) {
+    WheelsetPose p = pose;
+    p.roll_rad = phi;
+    double gl, gr;
+    *ok = MinimumVerticalGap(Side::Left, p, &gl, &y_contact);
+    if (!*ok) return 0.0;
+    p.vertical_m -= gl;
+    *z_star = p.vertical_m;
+    *ok = MinimumVerticalGap(Side::Right, p, &gr, &y_contact);
+    return gr;
+  };
+  bool ok;
+  if (!options.include_roll) {
+    double gl;
+    ok = MinimumVerticalGap(Side::Left, pose, &gl, &y_contact);
+    if (ok) {
+      pose.vertical_m -= gl;
+      out.status = EquilibriumStatus::Converged;
+    }
+    out.pose = pose;
+    if (!ok) return out;
+    out.contact = RigidContacts(pose);
+    if (out.contact.wheel[0].points.empty() || out.contact.wheel[1].points.empty()) {
+      out.status = EquilibriumStatus::NoContact;
+      return out;
+    }
+    auto smallest_vertical = [](const WheelContactResult& w) {
+      return *std::min_element(w.points.begin(), w.points.end(), [](const auto& a, const auto& b) {
+        return a.vertical_gap_m < b.vertical_gap_m;
+      });
+    };
+    out.rolling_radius_difference_m = smallest_vertical(out.contact.wheel[0]).rolling_radius_m -
+                                      smallest_vertical(out.contact.wheel[1]).rolling_radius_m;
+    return out;
+  }
+  double z0, z1;
+  double phi0 = pose.roll_rad;
+  double f0 = F(phi0, &z0, &ok);
+  if (!ok) {
+    out.pose = pose;
+    return out;
+  }
+  out.status = EquilibriumStatus::NotConverged;
+  // dF/dphi = (y_right - y_left) of the contact points, about -1.5 m: first secant step from that estimate
+  const double slope_estimate = -2.0 * wheel_origin_eta_;
+  double phi1 = phi0 - f0 / slope_estimate;
+  double f1 = F(phi1, &z1, &ok);
+  if (!ok) { phi1 = phi0; f1 = f0; z1 = z0; }
+  // bracket
+  double a = phi0, fa = f0, za = z0, b = phi1, fb = f1, zb = z1;
+  int it = 0;
+  for (; it < options.max_iterations && fa * fb > 0; ++it) {  // expand towards the root
+    const double step = (b - a) * 1.6;
+    a = b; fa = fb; za = zb;
+    b = b + (step == 0.0 ? 1e-4 : step);
+    fb = F(b, &zb, &ok);
+    if (!ok) break;
+  }
+  double phi = b, fphi = fb, zphi = zb;
+  if (ok && fa * fb <= 0) {
+    int side = 0;
+    for (; it < options.max_iterations; ++it) {
+      if (std::abs(fa) < std::abs(fb)) { phi = a; fphi = fa; zphi = za; } else { phi = b; fphi = fb; zphi = zb; }
+      if (std::abs(fphi) < options.tolerance_m) break;
+      const double c = (fa * b - fb * a) / (fa - fb);  // regula falsi with the Illinois modification
+      double zc;
+      const double fc = F(c, &zc, &ok);
+      if (!ok) break;
+      if (fc * fb > 0) {
+        b = c; fb = fc; zb = zc;
+        if (side == -1) fa *= 0.5;
+        side = -1;
+      } else {
+        a = c; fa = fc; za = zc;
+        if (side == +1) fb *= 0.5;
+        side = +1;
+      }
+      if (std::abs(b - a) < 1e-15) break;
+    }
+  }
+  if (ok) {
+    fphi = F(phi, &zphi, &ok);  // true residual (the Illinois step scales stored values)
+    if (ok && std::abs(fphi) < options.tolerance_m) out.status = EquilibriumStatus::Converged;
+  }
+  out.iterations = it;
+  pose.roll_rad = phi;
+  pose.vertical_m = zphi;
+  out.pose = pose;
+  out.contact = RigidContacts(pose);
+  if (out.contact.wheel[0].points.empty() || out.contact.wheel[1].points.empty()) {
+    out.status = EquilibriumStatus::NoContact;
+    return out;
+  }
+  out.rolling_radius_difference_m =
+      out.contact.wheel[0].points.front().rolling_radius_m - out.contact.wheel[1].points.front().rolling_radius_m;
+  return out;
+}
+
+}  // namespace conforma

@@ -1,0 +1,349 @@
+// Track set-up and the prepared wheelset-track geometry: mounted rails, uniform profile tables, the side
+// frames of a pose and the wheel silhouette (frames and conventions: include/conforma/geometry.hpp).
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "conforma/error.hpp"
+#include "conforma/geometry.hpp"
+
+namespace conforma {
+
+const char* to_string(Side side) { return side == Side::Left ? "left" : "right"; }
+const char* to_string(ContactStatus status) { return status == ContactStatus::Ok ? "ok" : "no overlap"; }
+const char* to_string(EquilibriumStatus status) {
+  switch (status) {
+    case EquilibriumStatus::Converged: return "converged";
+    case EquilibriumStatus::NotConverged: return "not converged";
+    default: return "no contact";
+  }
+}
+
+void TrackSetup::validate() const {
+  require_positive(gauge_m, "TrackSetup.gauge_m");
+  require_non_negative(gauge_height_m, "TrackSetup.gauge_height_m");
+  require_positive(flange_back_distance_m, "TrackSetup.flange_back_distance_m");
+  require_finite(flange_back_position_m, "TrackSetup.flange_back_position_m");
+  require_positive(nominal_radius_m[0], "TrackSetup.nominal_radius_m[left]");
+  require_positive(nominal_radius_m[1], "TrackSetup.nominal_radius_m[right]");
+  require_finite(rail_inclination_rad, "TrackSetup.rail_inclination_rad");
+  if (std::abs(rail_inclination_rad) > 0.2) throw InputError("TrackSetup.rail_inclination_rad must be within +-0.2 rad");
+  for (int k = 0; k < 2; ++k) {
+    const char* side = k == 0 ? "left" : "right";
+    if (wheel[k].empty()) throw InputError(std::string("TrackSetup.wheel[") + side + "] is empty");
+    if (rail[k].empty()) throw InputError(std::string("TrackSetup.rail[") + side + "] is empty");
+    if (wheel[k].kind() != ProfileKind::Wheel)
+      throw InputError(std::string("TrackSetup.wheel[") + side + "] is a rail profile (" + wheel[k].source() + ")");
+    if (rail[k].kind() != ProfileKind::Rail)
+      throw InputError(std::string("TrackSetup.rail[") + side + "] is a wheel profile (" + rail[k].source() + ")");
+  }
+}
+
+TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double rail_inclination_rad) {
+  TrackSetup t;
+  t.wheel = {wheel, wheel};
+  t.rail = {rail, rail};
+  t.rail_inclination_rad = rail_inclination_rad;
+  return t;
+}
+
+bool WheelsetTrackGeometry::GraphTable::eval(double y, double* value, double* slope) const {
+  if (z.size() < 2) return false;
+  const double u = (y - y0) / h;
+  if (!(u >= 0.0) || u > static_cast<double>(z.size() - 1)) return false;
+  const size_t i = std::min(static_cast<size_t>(u), z.size() - 2);
+  const double t = u - static_cast<double>(i), t2 = t * t, t3 = t2 * t;
+  // cubic Hermite on [i, i+1] with node values and slopes
+  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+  if (value) *value = h00 * z[i] + h10 * h * dz[i] + h01 * z[i + 1] + h11 * h * dz[i + 1];
+  if (slope) {
+    const double d00 = (6 * t2 - 6 * t) / h, d10 = 3 * t2 - 4 * t + 1, d01 = (-6 * t2 + 6 * t) / h, d11 = 3 * t2 - 2 * t;
+    *slope = d00 * z[i] + d10 * dz[i] + d01 * z[i + 1] + d11 * dz[i + 1];
+  }
+  return true;
+}
+
+namespace {
+
+using GraphTable = WheelsetTrackGeometry::GraphTable;
+
+// Uniform table of the longest function-like part (tangent towards +y, |slope| <= max_slope) of a profile,
+// shifted by y_offset. Nodes are found by Newton on y(s) along the spline (profile.hpp).
+GraphTable build_table(const Profile& p, double y_offset, double spacing, double max_slope, const char* what) {
+  const double hs = p.spacing();
+  const int n = static_cast<int>(std::round(p.length() / hs)) + 1;
+  auto ok = [&](double s) {
+    const Eigen::Vector2d t = p.tangent(s);
+    return t.x() > 0 && std::abs(t.y()) <= max_slope * t.x();
+  };
+  int best_a = 0, best_b = -1, a = -1;
+  for (int i = 0; i <= n; ++i) {
+    const bool good = i < n && ok(std::min(i * hs, p.length()));
+    if (good && a < 0) a = i;
+    if (!good && a >= 0) {
+      if (i - 1 - a > best_b - best_a) { best_a = a; best_b = i - 1; }
+      a = -1;
+    }
+  }
+  if (best_b - best_a < 4)
+    throw InputError(std::string(what) + " (" + p.source() + ") has no function-like part to tabulate");
+  const double s_a = best_a * hs, s_b = std::min(best_b * hs, p.length());
+  const double y_a = p.position(s_a).x(), y_b = p.position(s_b).x();
+  GraphTable t;
+  t.h = spacing;
+  t.y0 = std::ceil(y_a / spacing) * spacing;  // nodes on a global multiple of the spacing
+  const int m = static_cast<int>(std::floor((y_b - t.y0) / spacing + 1e-9)) + 1;
+  if (m < 4) throw InputError(std::string(what) + " (" + p.source() + ") is too narrow to tabulate");
+  t.z.resize(m);
+  t.dz.resize(m);
+  t.kappa.resize(m);
+  t.s.resize(m);
+  double s = s_a;
+  for (int k = 0; k < m; ++k) {
+    const double y = t.y0 + k * spacing;
+    for (int it = 0; it < 30; ++it) {
+      const double dy = p.position(s).x() - y;
+      if (std::abs(dy) < 1e-13) break;
+      s = std::clamp(s - dy / std::max(p.tangent(s).x(), 1e-3), s_a, s_b);
+    }
+    const Eigen::Vector2d q = p.position(s), tg = p.tangent(s);
+    t.z[k] = q.y();
+    t.dz[k] = tg.y() / tg.x();
+    t.kappa[k] = p.curvature(s);
+    t.s[k] = s;
+  }
+  t.y0 += y_offset;
+  return t;
+}
+
+// Highest point of a rail curve (parabolic refinement on the samples).
+Eigen::Vector2d highest_point(const std::vector<Eigen::Vector2d>& pts) {
+  size_t k = std::max_element(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.y() < b.y(); }) - pts.begin();
+  Eigen::Vector2d top = pts[k];
+  if (k > 0 && k + 1 < pts.size()) {
+    const Eigen::Vector2d &a = pts[k - 1], &b = pts[k], &c = pts[k + 1];
+    const double d1 = (b.y() - a.y()) / (b.x() - a.x()), d2 = (c.y() - b.y()) / (c.x() - b.x());
+    const double curv = (d2 - d1) / (c.x() - a.x());
+    if (curv < 0 && std::isfinite(curv)) {
+      const double yv = 0.5 * (a.x() + b.x()) - d1 / (2 * curv);
+      top = Eigen::Vector2d(yv, a.y() + d1 * (yv - a.x()) + curv * (yv - a.x()) * (yv - b.x()));
+    }
+  }
+  return top;
+}
+
+// Mounted rail: inclined by `inclination` (cant towards the track centre, -y) and re-referenced so that its
+// highest point is at z = 0 (and at y = 0 when an inclination is applied, as standard_profiles.hpp does).
+Profile mount_rail(const Profile& rail, double inclination) {
+  std::vector<Eigen::Vector2d> pts = rail.samples();
+  const double c = std::cos(inclination), s = std::sin(inclination);
+  for (auto& p : pts) p = Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+  Eigen::Vector2d top = highest_point(pts);
+  if (inclination == 0.0) top.x() = 0.0;
+  if (inclination == 0.0 && std::abs(top.y()) < 1e-12) return rail;
+  for (auto& p : pts) p -= top;
+  ProfileFitOptions fit;
+  fit.function_of_y = false;
+  fit.sample_spacing_m = rail.spacing();
+  return Profile::FromPoints(std::move(pts), ProfileKind::Rail, fit, rail.source() + " (mounted)");
+}
+
+// Gauge-side point gauge_height below the top of the mounted rail: y of the first crossing of that level
+// walking from the highest point towards the gauge side (s decreasing).
+double gauge_point_y(const Profile& rail, double gauge_height) {
+  const double level = -gauge_height;
+  const double hs = rail.spacing();
+  const int n = static_cast<int>(std::round(rail.length() / hs));
+  int top = 0;
+  for (int i = 0; i <= n; ++i)
+    if (rail.position(i * hs).y() > rail.position(top * hs).y()) top = i;
+  for (int i = top; i > 0; --i) {
+    if (rail.position((i - 1) * hs).y() <= level) {
+      double lo = (i - 1) * hs, hi = i * hs;  // z(lo) <= level < z(hi)
+      for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (rail.position(mid).y() <= level) lo = mid; else hi = mid;
+      }
+      return rail.position(0.5 * (lo + hi)).x();
+    }
+  }
+  std::ostringstream m;
+  m << "rail profile (" << rail.source() << ") does not reach " << gauge_height * 1e3
+    << " mm below its top on the gauge side: the gauge cannot be measured";
+  throw InputError(m.str());
+}
+
+}  // namespace
+
+WheelsetTrackGeometry::WheelsetTrackGeometry(TrackSetup setup, const GeometryOptions& options)
+    : setup_(std::move(setup)), options_(options) {
+  setup_.validate();
+  require_positive(options_.table_spacing_m, "GeometryOptions.table_spacing_m");
+  require_positive(options_.scan_spacing_m, "GeometryOptions.scan_spacing_m");
+  require_positive(options_.max_slope, "GeometryOptions.max_slope");
+  require_non_negative(options_.candidate_window_m, "GeometryOptions.candidate_window_m");
+  require_non_negative(options_.contact_tolerance_m, "GeometryOptions.contact_tolerance_m");
+  wheel_origin_eta_ = 0.5 * setup_.flange_back_distance_m - setup_.flange_back_position_m;
+  mean_radius_ = 0.5 * (setup_.nominal_radius_m[0] + setup_.nominal_radius_m[1]);
+  for (int k = 0; k < 2; ++k) {
+    SideData& d = sides_[k];
+    d.nominal_radius = setup_.nominal_radius_m[k];
+    d.mounted_rail = mount_rail(setup_.rail[k], setup_.rail_inclination_rad);
+    d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
+    d.rail = build_table(d.mounted_rail, d.rail_origin_eta, options_.table_spacing_m, options_.max_slope, "rail");
+    d.wheel = build_table(setup_.wheel[k], 0.0, options_.table_spacing_m, options_.max_slope, "wheel");
+  }
+}
+
+WheelsetTrackGeometry::Frame WheelsetTrackGeometry::SideFrame(Side side, const WheelsetPose& pose) const {
+  const double sigma = side_sign(side);
+  const double psi = sigma * pose.yaw_rad, phi = sigma * pose.roll_rad;
+  const double cp = std::cos(psi), sp = std::sin(psi), cf = std::cos(phi), sf = std::sin(phi);
+  Frame f;
+  // R = Rz(psi) Rx(phi)
+  f.rotation << cp, -sp * cf, sp * sf,
+                sp, cp * cf, -cp * sf,
+                0.0, sf, cf;
+  f.centre = Eigen::Vector3d(0.0, sigma * pose.lateral_m, mean_radius_ + pose.vertical_m);
+  const double a = f.rotation(0, 0), c = f.rotation(0, 2);
+  f.rho = std::hypot(a, c);
+  f.cos_beta = a / f.rho;
+  f.sin_beta = c / f.rho;
+  return f;
+}
+
+bool WheelsetTrackGeometry::SilhouettePoint(Side side, const Frame& f, double y_w, Eigen::Vector3d* point,
+                                            double* theta, double* radius, double* slope) const {
+  const SideData& d = sides_[side_index(side)];
+  double z_w, r_slope;
+  if (!d.wheel.eval(y_w, &z_w, &r_slope)) return false;
+  const double r = d.nominal_radius + z_w;
+  // paper 001 eqs. (4)-(6): R00 sin(theta) - R02 cos(theta) = R01 r'  ->  theta = beta + asin(R01 r' / rho)
+  const double sin_gamma = f.rotation(0, 1) * r_slope / f.rho;
+  if (!(std::abs(sin_gamma) < 1.0)) return false;
+  const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
+  const double sin_theta = f.sin_beta * cos_gamma + f.cos_beta * sin_gamma;
+  const double cos_theta = f.cos_beta * cos_gamma - f.sin_beta * sin_gamma;
+  const Eigen::Vector3d q(r * sin_theta, wheel_origin_eta_ + y_w, -r * cos_theta);
+  *point = f.centre + f.rotation * q;
+  if (theta) *theta = std::atan2(sin_theta, cos_theta);
+  if (radius) *radius = r;
+  if (slope) *slope = r_slope;
+  return true;
+}
+
+bool WheelsetTrackGeometry::RailHeight(Side side, double eta, double* z, double* slope) const {
+  return sides_[side_index(side)].rail.eval(eta, z, slope);
+}
+
+bool WheelsetTrackGeometry::WheelProfileAt(Side side, double y_w, double* z_w, double* slope, double* curvature) const {
+  const GraphTable& t = sides_[side_index(side)].wheel;
+  if (!t.eval(y_w, z_w, slope)) return false;
+  if (curvature) {
+    const double u = std::clamp((y_w - t.y0) / t.h, 0.0, static_cast<double>(t.size() - 1));
+    const size_t i = std::min(static_cast<size_t>(u), t.size() - 2);
+    const double w = u - static_cast<double>(i);
+    *curvature = (1 - w) * t.kappa[i] + w * t.kappa[i + 1];
+  }
+  return true;
+}
+
+double WheelsetTrackGeometry::RailArcLength(Side side, double eta) const {
+  const GraphTable& t = sides_[side_index(side)].rail;
+  const double u = std::clamp((eta - t.y0) / t.h, 0.0, static_cast<double>(t.size() - 1));
+  const size_t i = std::min(static_cast<size_t>(u), t.size() - 2);
+  const double w = u - static_cast<double>(i);
+  // ds/deta = sqrt(1 + z'^2): Hermite on s with that slope keeps it accurate between the nodes
+  const double g0 = std::sqrt(1 + t.dz[i] * t.dz[i]), g1 = std::sqrt(1 + t.dz[i + 1] * t.dz[i + 1]);
+  const double w2 = w * w, w3 = w2 * w;
+  return (2 * w3 - 3 * w2 + 1) * t.s[i] + (w3 - 2 * w2 + w) * t.h * g0 + (-2 * w3 + 3 * w2) * t.s[i + 1] +
+         (w3 - w2) * t.h * g1;
+}
+
+double WheelsetTrackGeometry::RailEtaAtArcLength(Side side, double s) const {
+  const GraphTable& t = sides_[side_index(side)].rail;
+  const size_t k = std::upper_bound(t.s.begin(), t.s.end(), s) - t.s.begin();
+  const size_t i = std::clamp<size_t>(k, 1, t.size() - 1) - 1;
+  double lo = t.y0 + i * t.h, hi = lo + t.h;
+  if (s <= t.s.front()) return t.y0;
+  if (s >= t.s.back()) return t.y_end();
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (RailArcLength(side, mid) < s) lo = mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+bool WheelsetTrackGeometry::NormalGap(Side side, const Frame& f, double eta, double* y_w_guess, double* gap_m,
+                                      Eigen::Vector3d* wheel_point) const {
+  double zr, mr;
+  if (!RailHeight(side, eta, &zr, &mr)) return false;
+  const double nn = std::sqrt(1 + mr * mr);
+  const double n_eta = -mr / nn, n_z = 1.0 / nn;
+  // intersection of the rail normal line with the silhouette: f(y_w) = (p - P) x n = 0 (secant iterations)
+  auto cross = [&](double y_w, Eigen::Vector3d* p) {
+    if (!SilhouettePoint(side, f, y_w, p)) return std::nan("");
+    return ((*p)(1) - eta) * n_z - ((*p)(2) - zr) * n_eta;
+  };
+  Eigen::Vector3d p0, p1;
+  double y0 = *y_w_guess, y1 = y0 + 1e-5;
+  double f0 = cross(y0, &p0), f1 = cross(y1, &p1);
+  if (!std::isfinite(f0) || !std::isfinite(f1)) return false;
+  for (int it = 0; it < 30 && std::abs(f1) > 1e-13; ++it) {
+    const double den = f1 - f0;
+    if (den == 0.0) break;
+    double y2 = y1 - f1 * (y1 - y0) / den;
+    const double step_max = 5e-3;
+    y2 = std::clamp(y2, y1 - step_max, y1 + step_max);
+    Eigen::Vector3d p2;
+    const double f2 = cross(y2, &p2);
+    if (!std::isfinite(f2)) return false;
+    y0 = y1; f0 = f1; p0 = p1;
+    y1 = y2; f1 = f2; p1 = p2;
+  }
+  if (std::abs(f1) > 1e-9) return false;
+  *y_w_guess = y1;
+  *gap_m = (p1(1) - eta) * n_eta + (p1(2) - zr) * n_z;
+  if (wheel_point) *wheel_point = p1;
+  return true;
+}
+
+RigidContactPoint WheelsetTrackGeometry::MakeContactPoint(Side side, const Frame& f, const WheelsetPose& pose,
+                                                          double y_w, double eta_rail, double gap_m,
+                                                          double vertical_gap_m) const {
+  (void)pose;
+  const SideData& d = sides_[side_index(side)];
+  const double sigma = side_sign(side);
+  RigidContactPoint c;
+  c.gap_m = gap_m;
+  c.vertical_gap_m = vertical_gap_m;
+  Eigen::Vector3d pw;
+  double theta = 0, radius = d.nominal_radius, slope = 0;
+  SilhouettePoint(side, f, y_w, &pw, &theta, &radius, &slope);
+  double zr = 0, mr = 0;
+  RailHeight(side, eta_rail, &zr, &mr);
+  c.wheel_point_m = Eigen::Vector3d(pw(0), sigma * pw(1), pw(2));
+  c.rail_point_m = Eigen::Vector3d(pw(0), sigma * eta_rail, zr);
+  c.rail_profile_m = Eigen::Vector2d(eta_rail - d.rail_origin_eta, zr);
+  c.rail_s_m = RailArcLength(side, eta_rail);
+  double z_w = 0, wslope = 0, wkappa = 0;
+  WheelProfileAt(side, y_w, &z_w, &wslope, &wkappa);
+  c.wheel_profile_m = Eigen::Vector2d(y_w, z_w);
+  c.contact_angle_rad = std::atan(mr);  // rail normal (-z', 1): leans to -eta (gauge side) when z' > 0
+  c.rolling_radius_m = radius;
+  c.lead_m = pw(0) - f.centre(0);
+  c.wheel_theta_rad = theta;
+  c.wheel_lateral_curvature_per_m = wkappa;
+  const GraphTable& rt = d.rail;
+  const double u = std::clamp((eta_rail - rt.y0) / rt.h, 0.0, static_cast<double>(rt.size() - 1));
+  const size_t i = std::min(static_cast<size_t>(u), rt.size() - 2);
+  const double w = u - static_cast<double>(i);
+  c.rail_lateral_curvature_per_m = (1 - w) * rt.kappa[i] + w * rt.kappa[i + 1];
+  // physics-reference §1.1: A = cos(alpha_w) / (2 r) (wheel rolling curvature in the tilted plane; rail
+  // straight), B = (1/R_y^w + 1/R_y^r) / 2 with convex curvatures positive
+  c.hertz_A_per_m = std::cos(std::atan(wslope)) / (2.0 * radius);
+  c.hertz_B_per_m = 0.5 * (c.wheel_lateral_curvature_per_m + c.rail_lateral_curvature_per_m);
+  return c;
+}
+
+}  // namespace conforma
