@@ -119,7 +119,8 @@ double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observat
   auto regular_piece = [&](double a, double b) {
     const double distance = std::min(std::abs(a - s_observation), std::abs(b - s_observation));
     const double ratio = distance / (b - a);
-    const int points = ratio < 0.5 ? 8 : (ratio < 2.0 ? 4 : 2);
+    // Thresholds away from the half-integer ratios of a centred observation point (no switching by rounding).
+    const int points = ratio < 1.0 ? 8 : (ratio < 3.0 ? 4 : 2);
     return Gauss(integrand, a, b, points);
   };
   if (s_observation <= strip.s_low || s_observation >= strip.s_high) {

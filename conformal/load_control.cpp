@@ -86,8 +86,7 @@ WheelNormalResult SolveWheelForLoad(const std::vector<WheelPatch>& patches, doub
       return current;
     }
     if (load < load_N) low = std::max(low, approach); else high = std::min(high, approach);
-    // A bracket collapsed to rounding level: accept when the load is within a looser 1e-6 (KPEC's equivalent
-    // ellipse carries the Hertz solver's own rounding into N(delta)).
+    // A bracket collapsed to rounding level: accept when the load is within a looser 1e-6 (rounding in N(delta)).
     if (std::isfinite(high) && high - low <= 1e-13 * high) {
       current.status = std::abs(load - load_N) <= std::max(1e-6, options.relative_tolerance) * load_N
                            ? LoadControlStatus::Ok
