@@ -210,6 +210,20 @@ TEST(BemSolver, BlancoEqualsHalfSpaceOnAFlatPatchAndCurvedSurfaceForceMeasure) {
   EXPECT_LT(curved.normal_force_reference_N, 20e3);
 }
 
+TEST(BemSolver, IterationLimitIsAStatusNotAnError) {
+  const Material material;
+  const BemGrid grid = QuadraticGapGrid(1.0, 1.0, 32, 32, 8e-3, 8e-3);
+  BemOptions options;
+  options.normal_force_N = 50e3;
+  options.max_iterations = 3;
+  const BemResult r = SolveBemNormal(grid, material, options);
+  EXPECT_EQ(r.status, BemStatus::NotConverged);
+  EXPECT_EQ(r.iterations, 3);
+  EXPECT_TRUE(std::isfinite(r.approach_m));
+  EXPECT_TRUE(r.pressure_Pa.allFinite());
+  EXPECT_NEAR(r.normal_force_reference_N, 50e3, 1e-9 * 50e3);  // the force scaling holds at every iterate
+}
+
 TEST(BemSolver, NoContactAndBadInput) {
   const Material material;
   const BemGrid grid = QuadraticGapGrid(1.0, 1.0, 8, 8, 1e-3, 1e-3);
