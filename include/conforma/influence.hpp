@@ -17,9 +17,11 @@
 // Conformal correction (physics-reference §4.2, CONTACT "version 1 = original Blanco formulas"; paper 003
 // eq. 2): for a relative rotation alpha = alpha_J - alpha_I of the local normals,
 //     B_ix = A_ix,   B_is = A_is cos(alpha) + A_in sin(alpha),   B_in = A_in cos(alpha) - A_is sin(alpha).
-// Version 1 is chosen because it is what paper 003 eq. (2) writes (B_nn cos - B_nt sin) and what CONTACT's
-// groove reference (shared data) was computed with; for identical steels (K = 0) versions 1 and 3 give the
-// same B_nn = A_nn cos(alpha), which is all a normal-only solver uses.
+// Version 1 is chosen because it is what paper 003 eq. (2) writes (B_nn cos - B_nt sin). CONTACT's groove
+// reference (shared data; groove_li.inp has IF_VAR = 3) used version 3, which rotates the displacement rows
+// (B_nn = A_sn sin + A_nn cos, B_ns = A_ss sin + A_ns cos); for identical steels (K = 0) both give the same
+// B_nn = A_nn cos(alpha), which is all a normal-only solver uses. They differ in B_ns (version 1: A_nn sin,
+// version 3: A_ss sin), i.e. in how lateral tractions feed the normal displacement.
 //
 // Coupling term. With the physically consistent COMBINED two-body coefficients the n-s coupling is
 // A_ns = (K/pi G) * Y / r^2 with Kalker's difference parameter K (0 for identical materials), so
