@@ -145,14 +145,21 @@ double CouplingParameter(ConformalCoupling coupling, const ElasticConstants& ela
 }
 
 // §4.2 version 1: B_ix = A_ix, B_is = A_is cos + A_in sin, B_in = A_in cos - A_is sin.
-ConformalInfluence BlancoCorrected(const HalfSpaceInfluence& a, double relative_rotation_rad) {
+// §4.2 version 3: B_xj = A_xj, B_sj = A_sj cos - A_nj sin, B_nj = A_sj sin + A_nj cos.
+ConformalInfluence BlancoCorrected(const HalfSpaceInfluence& a, double relative_rotation_rad, BlancoVersion version) {
   require_finite(relative_rotation_rad, "relative normal rotation alpha");
   const double c = std::cos(relative_rotation_rad), sn = std::sin(relative_rotation_rad);
   ConformalInfluence b;
-  for (int i = 0; i < 3; ++i) {
-    b.b[i][0] = a(i, 0);
-    b.b[i][1] = a(i, 1) * c + a(i, 2) * sn;
-    b.b[i][2] = a(i, 2) * c - a(i, 1) * sn;
+  for (int k = 0; k < 3; ++k) {
+    if (version == BlancoVersion::RotatedRows) {
+      b.b[0][k] = a(0, k);
+      b.b[1][k] = a(1, k) * c - a(2, k) * sn;
+      b.b[2][k] = a(1, k) * sn + a(2, k) * c;
+    } else {
+      b.b[k][0] = a(k, 0);
+      b.b[k][1] = a(k, 1) * c + a(k, 2) * sn;
+      b.b[k][2] = a(k, 2) * c - a(k, 1) * sn;
+    }
   }
   return b;
 }

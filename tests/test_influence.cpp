@@ -123,6 +123,22 @@ TEST(Influence, BlancoCorrectionStructureForEqualMaterials) {
     for (int j = 0; j < 3; ++j) EXPECT_EQ(b0(i, j), a(i, j));
 }
 
+TEST(Influence, BlancoVersionThreeRotatesTheDisplacementRows) {
+  const ElasticConstants e = Steel();
+  const double alpha = -0.4;
+  const HalfSpaceInfluence a = RectangleInfluence(-0.6e-3, 0.8e-3, 0.2e-3, 0.25e-3, e);
+  const ConformalInfluence v1 = BlancoCorrected(a, alpha);
+  const ConformalInfluence v3 = BlancoCorrected(a, alpha, BlancoVersion::RotatedRows);
+  // K = 0: the same B_nn; B_ns differs (A_nn sin in version 1, A_ss sin in version 3).
+  EXPECT_NEAR(v3.nn(), v1.nn(), 1e-18);
+  EXPECT_NEAR(v3(2, 1), a.ss * std::sin(alpha), 1e-18);
+  EXPECT_NEAR(v1(2, 1), a.nn * std::sin(alpha), 1e-18);
+  EXPECT_NEAR(v3(1, 2), -a.nn * std::sin(alpha), 1e-18);
+  // Version 3 is a rotation of the rows: the s-n block keeps its determinant.
+  const double det_a = a.ss * a.nn - a.ns() * a.sn;
+  EXPECT_NEAR(v3(1, 1) * v3(2, 2) - v3(1, 2) * v3(2, 1), det_a, 1e-12 * std::fabs(det_a));
+}
+
 TEST(Influence, PaperSingleBodyCouplingVariant) {
   const ElasticConstants e = Steel();
   const double nu = e.poisson_ratio;

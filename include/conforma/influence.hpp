@@ -97,7 +97,12 @@ struct ConformalInfluence {
   double operator()(int i, int j) const { return b[i][j]; }
   double nn() const { return b[2][2]; }
 };
-ConformalInfluence BlancoCorrected(const HalfSpaceInfluence& half_space, double relative_rotation_rad);
+enum class BlancoVersion {
+  Original = 1,     // §4.2 version 1 (default): rotate the load at J (columns)
+  RotatedRows = 3,  // §4.2 version 3 (CONTACT IF_VAR = 3): B_sj = A_sj cos - A_nj sin, B_nj = A_sj sin + A_nj cos
+};
+ConformalInfluence BlancoCorrected(const HalfSpaceInfluence& half_space, double relative_rotation_rad,
+                                   BlancoVersion version = BlancoVersion::Original);
 
 // Corrected normal-normal rectangle coefficient B_nn = A_nn cos(alpha) - A_ns sin(alpha) with the coupling
 // of the chosen variant (paper 003 eq. 2 / eq. 5 integrated over the rectangle). m/Pa.
