@@ -146,6 +146,8 @@ ArchardMap ArchardMap::Paper000Roller() {
   return m;
 }
 
+WearLaw::WearLaw() : wear_index(WearIndexLaw::Usfd()), archard(ArchardMap::Jendel()) {}
+
 void WearLaw::validate() const {
   if (kind == WearLawKind::WearIndex) wear_index.validate();
   else archard.validate();

@@ -109,9 +109,10 @@ enum class WearLawKind { WearIndex, Archard };
 const char* to_string(WearLawKind kind);
 
 struct WearLaw {
+  WearLaw();  // wear-index kind with the USFD table; archard = ArchardMap::Jendel()
   WearLawKind kind = WearLawKind::WearIndex;
-  WearIndexLaw wear_index = WearIndexLaw::Usfd();  // used when kind == WearIndex
-  ArchardMap archard = ArchardMap::Jendel();        // used when kind == Archard
+  WearIndexLaw wear_index;  // used when kind == WearIndex
+  ArchardMap archard;       // used when kind == Archard
   const std::string& name() const { return kind == WearLawKind::WearIndex ? wear_index.name : archard.name; }
   void validate() const;
 

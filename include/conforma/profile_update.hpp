@@ -1,0 +1,102 @@
+#pragma once
+// Profile update of one wear step (paper 003 §6 eqs. 18-19, paper 001 §6.2 eqs. 28-30,
+// physics-reference §8.3 steps 6-9).
+//
+// Order (our choice, documented in UpdateProfile): SMOOTH, then SCALE, then REMOVE.
+//   1. Mass-conserving smoothing S of the accumulated depth (penalised least squares, CHOLMOD).
+//      S is positively homogeneous, S(c d) = c S(d) for c > 0, so smoothing first and scaling second is
+//      the same as the paper's scale-then-smooth, except that the scale factor is fixed on the SMOOTHED
+//      maximum: the final max depth equals the cap exactly (up to rounding) and the distance of the step
+//      is distance_step = distance_represented * cap / max(S(d)) (paper 001 eq. 28 with the adaptive
+//      threshold of paper 003 §6).
+//   2. Removal along the local outward normal: P_new(s) = P(s) - d(s) n(s) (eqs. 18-19), then
+//      re-parametrisation by arc length (Profile::FromPoints, input order = arc-length order).
+//   3. Validity checks of the new profile (no self-intersection, no new folds in y, curvature bound).
+#include <limits>
+#include <string>
+
+#include "conforma/profile.hpp"
+#include "conforma/wear_distribution.hpp"
+
+namespace conforma {
+
+// ---------------------------------------------------------------- mass-conserving smoothing
+// Whittaker smoother (penalised least squares with second differences) on the uniform s grid:
+//   (W + lambda D2^T D2) f = W d,   W = trapezoid weights (1/2 at the ends, 1 inside)
+// Because D2 * 1 = 0, 1^T W f = 1^T W d: the removed area (trapezoid) is preserved exactly, and linear
+// depth fields pass unchanged. Inside the grid the gain at wavelength Lw is
+// 1 / (1 + 16 lambda sin^4(pi h / Lw)); lambda is chosen so the gain is 1/2 at cutoff_wavelength_m.
+// Negative values (ringing next to spikes) are clipped to 0 and the remaining field is rescaled by the
+// area ratio, so the result is >= 0 and keeps the area exactly.
+// The paper-001 sliding mean over 1-5 % of the profile points (about 1.5-7.5 mm on a wheel) has its
+// half-gain wavelength at about 1.66 window widths; the default 5 mm is within that range.
+struct DepthSmoothingOptions {
+  double cutoff_wavelength_m = 5.0e-3;  // half-gain wavelength; 0 disables smoothing
+};
+struct DepthSmoothingResult {
+  WearDistribution depth;
+  double area_in_m2 = 0.0;    // trapezoid area of the input
+  double area_out_m2 = 0.0;   // trapezoid area of the output
+  size_t clipped_nodes = 0;   // nodes where the smoother went negative and were set to 0
+};
+// Throws InputError for negative or non-finite input depth.
+DepthSmoothingResult SmoothDepthMassConserving(const WearDistribution& depth, const DepthSmoothingOptions& options);
+
+// ---------------------------------------------------------------- removal along the normal
+// Points P(s_i) - d_i n(s_i) at the depth grid nodes, re-parametrised by arc length with the given
+// sample spacing (0: the profile's own spacing). The depth grid must span the profile's arc length
+// (WearDistribution::ForProfile). Throws InputError if the grid does not match or the new curve
+// self-intersects (message from Profile::FromPoints, prefixed with `context`).
+Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth, double output_spacing_m = 0.0,
+                          const std::string& context = "profile update");
+
+// ---------------------------------------------------------------- validity
+struct ProfileValidityOptions {
+  // Kink criterion: |curvature| must stay below this [1/m] (1/(1 mm)) wherever the previous profile was
+  // below it; where the previous profile itself was sharper (e.g. a tight flange radius), the new
+  // curvature may not exceed 1.2 x the previous maximum within +-2 mm.
+  double max_curvature_1_m = 1.0e3;
+};
+struct ProfileValidity {
+  bool valid = true;
+  std::string reason;                 // empty when valid
+  double max_abs_curvature_1_m = 0.0; // of the new profile
+  int y_folds_before = 0, y_folds_after = 0;  // sign changes of dy/ds along the curve
+};
+ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& previous,
+                                     const ProfileValidityOptions& options = {});
+
+// ---------------------------------------------------------------- one update step
+struct ProfileUpdateOptions {
+  double max_depth_per_step_m = 0.4e-3;  // cap on the largest depth of a step (paper 003 §6: 0.4 mm)
+  // Upper limit of the distance one step may represent (e.g. to land on the target mileage); when it
+  // binds, the max depth of the step is below the cap.
+  double max_distance_step_m = std::numeric_limits<double>::infinity();
+  DepthSmoothingOptions smoothing;
+  ProfileValidityOptions validity;
+  double output_spacing_m = 0.0;  // arc-length spacing of the new profile; 0 = that of the old one
+  int step_index = 0;             // only for messages ("wear step 3: ...")
+};
+
+enum class ProfileUpdateStatus { Updated, NoWear, InvalidProfile };
+const char* to_string(ProfileUpdateStatus status);
+
+struct ProfileUpdateResult {
+  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;
+  std::string message;           // names the step and the failed check when status != Updated
+  Profile profile;               // the new profile (the old one when status != Updated)
+  WearDistribution removed_depth;  // smoothed, scaled depth actually removed [m]
+  double scale_factor = 0.0;     // removed_depth = scale_factor * S(accumulated)
+  double distance_step_m = 0.0;  // distance the step represents = distance_represented * scale_factor
+  double max_depth_m = 0.0;      // max of removed_depth (= cap unless max_distance_step_m binds)
+  double removed_area_m2 = 0.0;  // integral of removed_depth ds
+  DepthSmoothingResult smoothing;  // diagnostics of step 1 (before scaling)
+  ProfileValidity validity;
+};
+
+// accumulated_depth: the depth the simulated distance `distance_represented_m` removes (e.g. a wheel's
+// depth per metre with distance 1 m), on the grid WearDistribution::ForProfile(profile, h).
+ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution& accumulated_depth,
+                                  double distance_represented_m, const ProfileUpdateOptions& options = {});
+
+}  // namespace conforma

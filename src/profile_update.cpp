@@ -1,0 +1,179 @@
+#include "conforma/profile_update.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+const char* to_string(ProfileUpdateStatus status) {
+  switch (status) {
+    case ProfileUpdateStatus::Updated: return "updated";
+    case ProfileUpdateStatus::NoWear: return "no wear";
+    case ProfileUpdateStatus::InvalidProfile: return "invalid profile";
+  }
+  return "?";
+}
+
+// paper 003 eqs. 18-19, paper 001 eq. 30: P_new(s) = P(s) - d(s) n(s), then arc-length re-parametrisation
+Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth, double output_spacing_m,
+                          const std::string& context) {
+  if (profile.empty()) throw InputError(context + ": the profile is empty");
+  require_non_negative(output_spacing_m, "output_spacing_m");
+  if (depth.size() < 2 || std::abs(depth.length_m() - profile.length()) > 1e-9 + 1e-9 * profile.length()) {
+    std::ostringstream m;
+    m << context << ": depth grid length " << depth.length_m() * 1e3 << " mm does not match the profile arc length "
+      << profile.length() * 1e3 << " mm";
+    throw InputError(m.str());
+  }
+  std::vector<Eigen::Vector2d> points(depth.size());
+  for (size_t i = 0; i < depth.size(); ++i) {
+    const double s = depth.s(i), d = depth.depth_m[i];
+    if (!std::isfinite(d)) throw InputError(context + ": depth at node " + std::to_string(i) + " is not finite");
+    points[i] = profile.position(s) - d * profile.normal(s);
+  }
+  ProfileFitOptions fit;
+  fit.smoothing_rms_m = 0.0;
+  fit.sample_spacing_m = output_spacing_m > 0.0 ? output_spacing_m : profile.spacing();
+  fit.function_of_y = false;  // keep the arc-length order of the old profile
+  return Profile::FromPoints(std::move(points), profile.kind(), fit, context);
+}
+
+namespace {
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// First pair of non-adjacent polyline segments that properly cross (sweep over segments sorted by y).
+std::optional<std::pair<size_t, size_t>> first_crossing(const std::vector<Eigen::Vector2d>& p) {
+  const size_t n = p.size() < 2 ? 0 : p.size() - 1;
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  auto lo = [&](size_t i) { return std::min(p[i].x(), p[i + 1].x()); };
+  auto hi = [&](size_t i) { return std::max(p[i].x(), p[i + 1].x()); };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo(a) < lo(b); });
+  for (size_t a = 0; a < n; ++a)
+    for (size_t b = a + 1; b < n && lo(order[b]) <= hi(order[a]); ++b) {
+      const size_t i = std::min(order[a], order[b]), j = std::max(order[a], order[b]);
+      if (j < i + 2) continue;
+      const double d1 = cross2(p[i + 1] - p[i], p[j] - p[i]), d2 = cross2(p[i + 1] - p[i], p[j + 1] - p[i]);
+      const double d3 = cross2(p[j + 1] - p[j], p[i] - p[j]), d4 = cross2(p[j + 1] - p[j], p[i + 1] - p[j]);
+      if (d1 * d2 < 0.0 && d3 * d4 < 0.0) return std::make_pair(i, j);
+    }
+  return std::nullopt;
+}
+
+int count_y_folds(const std::vector<Eigen::Vector2d>& p) {
+  // sign changes of dy along the polyline, ignoring segments with |dy| below 1e-3 of their length
+  int folds = 0, last = 0;
+  for (size_t i = 0; i + 1 < p.size(); ++i) {
+    const Eigen::Vector2d d = p[i + 1] - p[i];
+    const double len = d.norm();
+    if (len == 0.0 || std::abs(d.x()) < 1e-3 * len) continue;
+    const int sign = d.x() > 0 ? 1 : -1;
+    if (last != 0 && sign != last) ++folds;
+    last = sign;
+  }
+  return folds;
+}
+
+}  // namespace
+
+ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& previous, const ProfileValidityOptions& o) {
+  require_positive(o.max_curvature_1_m, "max_curvature_1_m");
+  ProfileValidity v;
+  const auto pts = updated.samples();
+  for (const auto& p : pts)
+    if (!p.allFinite()) {
+      v.valid = false;
+      v.reason = "the profile has non-finite points";
+      return v;
+    }
+  if (auto hit = first_crossing(pts)) {
+    std::ostringstream m;
+    m << "the profile self-intersects near y = " << pts[hit->first].x() * 1e3 << " mm and y = "
+      << pts[hit->second].x() * 1e3 << " mm";
+    v.valid = false;
+    v.reason = m.str();
+    return v;
+  }
+  v.y_folds_before = count_y_folds(previous.samples());
+  v.y_folds_after = count_y_folds(pts);
+  if (v.y_folds_after > v.y_folds_before) {
+    v.valid = false;
+    v.reason = "the profile is no longer single-valued in y: " + std::to_string(v.y_folds_after) +
+               " folds, the previous profile had " + std::to_string(v.y_folds_before);
+    return v;
+  }
+  // curvature: sampled at the new profile's nodes; old curvature near the corresponding arc length
+  const double h = updated.spacing(), ratio = previous.length() / updated.length(), window = 2e-3;
+  const double hp = previous.spacing();
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const double s = h * i;
+    const double kappa = std::abs(updated.curvature(s));
+    v.max_abs_curvature_1_m = std::max(v.max_abs_curvature_1_m, kappa);
+    if (kappa <= o.max_curvature_1_m) continue;
+    double old_max = 0.0;
+    for (double so = s * ratio - window; so <= s * ratio + window; so += hp)
+      old_max = std::max(old_max, std::abs(previous.curvature(so)));
+    if (kappa > o.max_curvature_1_m && (old_max <= o.max_curvature_1_m || kappa > 1.2 * old_max)) {
+      std::ostringstream m;
+      m << "kink: |curvature| = " << kappa << " 1/m (radius " << 1e3 / kappa << " mm) at s = " << s * 1e3
+        << " mm, y = " << pts[i].x() * 1e3 << " mm exceeds the limit " << o.max_curvature_1_m
+        << " 1/m (previous profile there: " << old_max << " 1/m)";
+      v.valid = false;
+      v.reason = m.str();
+    }
+  }
+  return v;
+}
+
+ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution& accumulated,
+                                  double distance_represented_m, const ProfileUpdateOptions& o) {
+  require_positive(distance_represented_m, "distance_represented_m");
+  require_positive(o.max_depth_per_step_m, "max_depth_per_step_m");
+  if (!(o.max_distance_step_m > 0.0)) throw InputError("max_distance_step_m must be > 0");
+  const std::string step = "wear step " + std::to_string(o.step_index) + " (" + to_string(profile.kind()) + ")";
+  ProfileUpdateResult r;
+  r.profile = profile;
+  // 1. mass-conserving smoothing (before scaling; S is positively homogeneous)
+  r.smoothing = SmoothDepthMassConserving(accumulated, o.smoothing);
+  const double smoothed_max = r.smoothing.depth.max_depth_m();
+  if (!(smoothed_max > 0.0)) {
+    r.status = ProfileUpdateStatus::NoWear;
+    r.message = step + ": no wear to remove";
+    r.removed_depth = r.smoothing.depth;
+    return r;
+  }
+  // 2. scaling: the largest depth of the step equals the cap (paper 003 §6), km_step = km_sim * factor
+  r.scale_factor = std::min(o.max_depth_per_step_m / smoothed_max, o.max_distance_step_m / distance_represented_m);
+  r.distance_step_m = distance_represented_m * r.scale_factor;
+  r.removed_depth = r.smoothing.depth;
+  for (double& v : r.removed_depth.depth_m) v *= r.scale_factor;
+  r.max_depth_m = r.removed_depth.max_depth_m();
+  r.removed_area_m2 = r.removed_depth.area_m2();
+  // 3. removal along the normal and re-parametrisation, 4. validity
+  Profile updated;
+  try {
+    updated = RemoveAlongNormal(profile, r.removed_depth, o.output_spacing_m, step);
+  } catch (const InputError& e) {
+    r.status = ProfileUpdateStatus::InvalidProfile;
+    r.message = e.what();
+    return r;
+  }
+  r.validity = CheckProfileValidity(updated, profile, o.validity);
+  if (!r.validity.valid) {
+    r.status = ProfileUpdateStatus::InvalidProfile;
+    r.message = step + ": updated profile is invalid: " + r.validity.reason;
+    return r;
+  }
+  r.status = ProfileUpdateStatus::Updated;
+  r.profile = std::move(updated);
+  return r;
+}
+
+}  // namespace conforma

@@ -1,0 +1,237 @@
+// Profile update: mass-conserving smoothing, scaling to the cap, removal along the normal,
+// re-parametrisation and validity (paper 003 §6 eqs. 18-19, paper 001 §6.2 eqs. 28-30).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_update.hpp"
+#include "conforma/standard_profiles.hpp"
+
+using namespace conforma;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Circular arc of radius R (centre (0, -R)), angles [-half_angle, half_angle] from +z, s from -y to +y.
+Profile circle_arc(double R, double half_angle, ProfileKind kind = ProfileKind::Rail) {
+  std::vector<Eigen::Vector2d> pts;
+  const int n = 2001;
+  for (int i = 0; i < n; ++i) {
+    const double t = -half_angle + 2 * half_angle * i / (n - 1);
+    pts.emplace_back(R * std::sin(t), R * std::cos(t) - R);
+  }
+  ProfileFitOptions fit;
+  fit.function_of_y = false;
+  return Profile::FromPoints(pts, kind, fit, "circle");
+}
+
+Profile flat_line(double length) {
+  std::vector<Eigen::Vector2d> pts;
+  for (int i = 0; i <= 100; ++i) pts.emplace_back(-0.5 * length + length * i / 100, 0.0);
+  return Profile::FromPoints(pts, ProfileKind::Rail);
+}
+
+double gauss(double x, double centre, double sigma) { return std::exp(-0.5 * std::pow((x - centre) / sigma, 2)); }
+
+// Synthetic tread + flange wear on an S1002-type wheel, as a function of the lateral position y [m]:
+// tread band around the taping line (y = 0) and a narrower band on the flange flank, plus per-node
+// noise (the numerical noise the paper's smoothing is for).
+WearDistribution tread_flange_depth(const Profile& wheel, double spacing, unsigned seed, double noise) {
+  WearDistribution d = WearDistribution::ForProfile(wheel, spacing);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (size_t i = 0; i < d.size(); ++i) {
+    const double y = wheel.position(d.s(i)).x();
+    const double clean = 1.0e-6 * gauss(y, 0.0, 8e-3) + 0.35e-6 * gauss(y, -38e-3, 2.5e-3);
+    d.depth_m[i] = clean * (1.0 + noise * (u(rng) - 0.5));
+  }
+  return d;
+}
+
+std::string sci(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3e", v);
+  return buf;
+}
+
+double relative(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+}  // namespace
+
+TEST(ProfileUpdate, SmoothingConservesAreaAndIsNonNegative) {
+  const WearDistribution grid = WearDistribution::Zero(0.14, 0.1e-3);
+  // 1. spiky: isolated single-node spikes of random height (worst case for ringing)
+  WearDistribution spiky = grid;
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<size_t> node(0, grid.size() - 1);
+  for (int k = 0; k < 40; ++k) spiky.depth_m[node(rng)] += 1e-6 * (1 + k % 5);
+  // 2. smooth: a wide Gaussian
+  WearDistribution smooth = grid;
+  for (size_t i = 0; i < grid.size(); ++i) smooth.depth_m[i] = 2e-6 * gauss(grid.s(i), 0.07, 10e-3);
+  // 3. realistic two peaks (tread + flange) with noise and sharp edges (contact band limits)
+  WearDistribution two = grid;
+  for (size_t i = 0; i < grid.size(); ++i) {
+    const double s = grid.s(i);
+    double v = (std::abs(s - 0.085) < 0.015 ? 1e-6 * (1 - std::pow((s - 0.085) / 0.015, 2)) : 0.0) +
+               (std::abs(s - 0.035) < 0.003 ? 0.4e-6 : 0.0);
+    two.depth_m[i] = v * (1.0 + 0.5 * std::sin(1.3e4 * s));
+  }
+  const char* names[3] = {"spiky", "smooth", "two_peak"};
+  int k = 0;
+  for (const WearDistribution* d : {&spiky, &smooth, &two}) {
+    const DepthSmoothingResult r = SmoothDepthMassConserving(*d, DepthSmoothingOptions{});
+    const double err = relative(r.depth.area_m2(), d->area_m2());
+    RecordProperty(std::string("area_error_") + names[k++], sci(err));
+    EXPECT_LT(err, 0.005);
+    EXPECT_LT(err, 1e-9);  // exact up to rounding by construction
+    for (double v : r.depth.depth_m) EXPECT_GE(v, 0.0);
+    EXPECT_LE(r.depth.max_depth_m(), d->max_depth_m() * (1 + 1e-9));
+  }
+  // the spikes must actually be smoothed (max drops) and the ringing clipped
+  const DepthSmoothingResult r = SmoothDepthMassConserving(spiky, DepthSmoothingOptions{});
+  EXPECT_LT(r.depth.max_depth_m(), 0.2 * spiky.max_depth_m());
+  EXPECT_GT(r.clipped_nodes, 0u);
+}
+
+TEST(ProfileUpdate, SmoothingGainIsHalfAtTheCutoffWavelength) {
+  // Whittaker smoother: gain 1 / (1 + 16 lambda sin^4(pi h / L)) = 1/2 at L = cutoff (interior).
+  const WearDistribution grid = WearDistribution::Zero(0.2, 0.1e-3);
+  const double cutoff = 5e-3;
+  for (double wavelength : {cutoff, 4 * cutoff, 0.25 * cutoff}) {
+    WearDistribution d = grid;
+    for (size_t i = 0; i < d.size(); ++i) d.depth_m[i] = 1e-6 * (1.0 + 0.5 * std::sin(2 * kPi * d.s(i) / wavelength));
+    const DepthSmoothingResult r = SmoothDepthMassConserving(d, DepthSmoothingOptions{cutoff});
+    const size_t mid = d.size() / 2;
+    double amplitude = 0.0;  // measured amplitude in the middle (away from the ends)
+    for (size_t i = mid - 500; i < mid + 500; ++i) amplitude = std::max(amplitude, std::abs(r.depth.depth_m[i] - 1e-6));
+    const double sine = std::sin(kPi * 0.1e-3 / wavelength), s4 = std::pow(std::sin(kPi * 0.1e-3 / cutoff), 4);
+    const double expected = 0.5e-6 / (1.0 + std::pow(sine, 4) / s4);
+    EXPECT_NEAR(amplitude, expected, 0.01 * 0.5e-6) << wavelength;
+  }
+}
+
+TEST(ProfileUpdate, UniformDepthOnCircleAndLine) {
+  const double R = 0.02, d = 0.4e-3;
+  const Profile arc = circle_arc(R, 1.0);
+  WearDistribution depth = WearDistribution::ForProfile(arc, 0.1e-3);
+  std::fill(depth.depth_m.begin(), depth.depth_m.end(), d);
+  const Profile worn = RemoveAlongNormal(arc, depth);
+  // every point of the new profile (its stored samples and between them) lies on the circle R - d
+  double worst = 0.0;
+  for (int i = 0; i <= 4000; ++i) {
+    const Eigen::Vector2d p = worn.position(worn.length() * i / 4000.0);
+    worst = std::max(worst, std::abs((p - Eigen::Vector2d(0, -R)).norm() - (R - d)));
+  }
+  RecordProperty("circle_radius_error_m", sci(worst));
+  EXPECT_LT(worst, 1e-6);
+  // The length shrinks by (R - d)/R up to the end normals: the natural-spline end conditions of Profile tilt
+  // the end tangent by about kappa h / 3 (1.7e-3 rad here), which moves each end point d * 1.7e-3 = 0.7 um
+  // ALONG the circle (the radius stays exact).
+  EXPECT_NEAR(worn.length(), arc.length() * (R - d) / R, 2e-6);
+  EXPECT_NEAR(worn.curvature(worn.length() / 2), 1.0 / (R - d), 1e-3 / (R - d));
+
+  const Profile line = flat_line(0.1);
+  WearDistribution dl = WearDistribution::ForProfile(line, 0.1e-3);
+  std::fill(dl.depth_m.begin(), dl.depth_m.end(), d);
+  const Profile lowered = RemoveAlongNormal(line, dl);
+  for (int i = 0; i <= 1000; ++i) EXPECT_NEAR(lowered.position(lowered.length() * i / 1000.0).y(), -d, 1e-9);
+  // a depth grid for another profile is rejected
+  EXPECT_THROW(RemoveAlongNormal(line, depth), InputError);
+}
+
+TEST(ProfileUpdate, StepScalesToTheCapAndSetsTheDistance) {
+  // accumulated depth 1.6 um uniform over 50 km -> cap 0.4 mm reached after 12500 km; circle R -> R - 0.4 mm
+  const double R = 0.3;
+  const Profile arc = circle_arc(R, 0.15);
+  WearDistribution acc = WearDistribution::ForProfile(arc, 0.1e-3);
+  std::fill(acc.depth_m.begin(), acc.depth_m.end(), 1.6e-6);
+  const ProfileUpdateResult r = UpdateProfile(arc, acc, 50e3);
+  ASSERT_EQ(r.status, ProfileUpdateStatus::Updated) << r.message;
+  EXPECT_NEAR(r.max_depth_m, 0.4e-3, 1e-12);
+  EXPECT_NEAR(r.distance_step_m, 12500e3, 1e-3);
+  double worst = 0.0;
+  for (const auto& p : r.profile.samples()) worst = std::max(worst, std::abs((p - Eigen::Vector2d(0, -R)).norm() - (R - 0.4e-3)));
+  EXPECT_LT(worst, 1e-6);
+  // distance limit binds: half the distance, half the depth
+  ProfileUpdateOptions o;
+  o.max_distance_step_m = 6250e3;
+  const ProfileUpdateResult half = UpdateProfile(arc, acc, 50e3, o);
+  EXPECT_NEAR(half.max_depth_m, 0.2e-3, 1e-12);
+  // no wear: unchanged, status says so
+  std::fill(acc.depth_m.begin(), acc.depth_m.end(), 0.0);
+  const ProfileUpdateResult none = UpdateProfile(arc, acc, 50e3);
+  EXPECT_EQ(none.status, ProfileUpdateStatus::NoWear);
+  EXPECT_EQ(none.profile.length(), arc.length());
+}
+
+TEST(ProfileUpdate, KinkIsReportedWithTheStep) {
+  // an unsmoothed V-notch (0.4 mm deep, 2 mm wide) has a corner at its bottom: invalid, the message names
+  // the step and the kink
+  const Profile line = flat_line(0.05);
+  WearDistribution acc = WearDistribution::ForProfile(line, 0.1e-3);
+  const size_t mid = acc.size() / 2;
+  for (size_t i = mid - 10; i <= mid + 10; ++i) acc.depth_m[i] = 1e-6 * (1.0 - std::abs(double(i) - double(mid)) / 10.0);
+  ProfileUpdateOptions o;
+  o.smoothing.cutoff_wavelength_m = 0.0;
+  o.step_index = 7;
+  const ProfileUpdateResult r = UpdateProfile(line, acc, 1.0, o);
+  EXPECT_EQ(r.status, ProfileUpdateStatus::InvalidProfile);
+  EXPECT_NE(r.message.find("wear step 7"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("kink"), std::string::npos) << r.message;
+  // with the default smoothing the same field is a smooth dent: valid
+  o.smoothing = DepthSmoothingOptions{};
+  const ProfileUpdateResult ok = UpdateProfile(line, acc, 1.0, o);
+  EXPECT_EQ(ok.status, ProfileUpdateStatus::Updated) << ok.message;
+  EXPECT_NEAR(ok.max_depth_m, 0.4e-3, 1e-12);
+}
+
+TEST(ProfileUpdate, S1002TwentyStepsStayValid) {
+  Profile wheel = MakeS1002();
+  const Profile original = wheel;
+  ProfileUpdateOptions o;
+  double total_distance = 0.0, worst_area = 0.0, worst_cap = 0.0, max_kappa = 0.0;
+  for (int step = 1; step <= 20; ++step) {
+    o.step_index = step;
+    const WearDistribution acc = tread_flange_depth(wheel, 0.1e-3, step, 0.6);
+    const ProfileUpdateResult r = UpdateProfile(wheel, acc, 1000.0, o);
+    ASSERT_EQ(r.status, ProfileUpdateStatus::Updated) << r.message;
+    worst_cap = std::max(worst_cap, relative(r.max_depth_m, o.max_depth_per_step_m));
+    worst_area = std::max(worst_area, relative(r.removed_area_m2, r.scale_factor * acc.area_m2()));
+    max_kappa = std::max(max_kappa, r.validity.max_abs_curvature_1_m);
+    EXPECT_EQ(r.validity.y_folds_after, 0);
+    total_distance += r.distance_step_m;
+    wheel = r.profile;
+  }
+  RecordProperty("worst_cap_error", sci(worst_cap));
+  RecordProperty("worst_area_error", sci(worst_area));
+  RecordProperty("max_abs_curvature_1_m", sci(max_kappa));
+  EXPECT_LT(worst_cap, 0.01);
+  EXPECT_LT(worst_area, 0.005);
+  // the tread lost about 20 x 0.4 mm at its peak (the field is fixed in y): radius at y = 0 down by 7-8 mm
+  const double drop = *original.height_at(0.0) - *wheel.height_at(0.0);
+  RecordProperty("tread_drop_mm", sci(drop * 1e3));
+  // the active flange flank (around y = -38 mm, outward normal towards +z and +y) moved towards the flange
+  // back (-y): the flange is thinner at z = 15 mm
+  auto flank_y = [](const Profile& p, double z) {  // first y (from the flange back) where the flank passes z
+    double lo = -0.045, hi = -0.030;  // bisection on the flank between the flange tip and the root
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (*p.height_at(mid) > z ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  const double flank_shift = flank_y(wheel, 15e-3) - flank_y(original, 15e-3);
+  RecordProperty("flank_shift_mm", sci(flank_shift * 1e3));
+  RecordProperty("s1002_height_at_minus38_mm", sci(*original.height_at(-0.038) * 1e3));
+  EXPECT_LT(flank_shift, -0.5e-3);
+  EXPECT_GT(drop, 7.0e-3);
+  EXPECT_LT(drop, 8.0e-3 + 1e-6);
+  // the flange back and the outer tread end are untouched
+  EXPECT_NEAR(*wheel.height_at(0.055), *original.height_at(0.055), 1e-6);
+  EXPECT_GT(total_distance, 0.0);
+}
