@@ -21,6 +21,7 @@ struct SparseCholesky::Impl {
     cholmod_start(&common);
     common.print = 0;          // no console output from CHOLMOD
     common.error_handler = nullptr;
+    common.final_ll = 1;       // LL^T: a matrix that is not positive definite is reported (LDL^T would pass)
   }
   ~Impl() {
     if (factor) cholmod_free_factor(&factor, &common);
