@@ -1,0 +1,69 @@
+#pragma once
+// Local friction laws mu(gamma) of the dimensionless slip gamma = |s| (slip velocity / rolling speed), the slope
+// reduction k, and the variable-friction FASTSIM kernel (paper 002: Gimenez et al., "Application of Fastsim with
+// variable coefficient of friction using twin disc experimental measurements"; physics-reference §7).
+//
+// Laws (paper 002 §2.2):
+//   Constant      mu(gamma) = mu
+//   F1aExponential mu(gamma) = mu_o [alpha + (1 - alpha) exp(-beta gamma)]                       (eq. 6)
+//   F1bPiecewise  mu(gamma) = mu_s - (mu_s - mu_d) gamma / gamma_c  (gamma <= gamma_c), mu_d beyond (eq. 7)
+//   F2            mu(gamma) = mu_s exp(-alpha gamma) + mu_d (1 - exp(-beta gamma))               (eq. 8)
+// Slope reduction (paper 002 §2.3, eq. 9): every flexibility is divided by k, 0 < k <= 1 (values slightly above 1
+// are accepted, as the paper identifies k = 1.07 on dry curves).
+#include <array>
+#include <string>
+
+#include "conforma/fastsim.hpp"
+
+namespace conforma {
+
+enum class FrictionLawKind { Constant, F1aExponential, F1bPiecewise, F2 };
+const char* to_string(FrictionLawKind kind);
+
+struct FrictionLaw {
+  FrictionLawKind kind = FrictionLawKind::Constant;
+  // Parameters, in the order of the paper's equations:
+  //   Constant: {mu}
+  //   F1aExponential: {mu_o, alpha, beta}
+  //   F1bPiecewise: {mu_s, mu_d, gamma_c}
+  //   F2: {mu_s, alpha, mu_d, beta}
+  std::array<double, 4> parameters{0.3, 0.0, 0.0, 0.0};
+
+  static FrictionLaw Constant(double mu);
+  static FrictionLaw F1a(double mu_o, double alpha, double beta);
+  static FrictionLaw F1b(double mu_s, double mu_d, double gamma_c);
+  static FrictionLaw F2(double mu_s, double alpha, double mu_d, double beta);
+
+  int parameter_count() const;
+  double operator()(double gamma) const;  // mu(gamma), gamma >= 0
+  double derivative(double gamma) const;  // d mu / d gamma (right derivative at the kink of F1b)
+  double static_value() const { return (*this)(0.0); }
+  bool is_constant() const { return kind == FrictionLawKind::Constant; }
+  // Throws InputError unless the parameters are finite and physical (mu >= 0, rates >= 0, gamma_c > 0,
+  // 0 <= alpha <= 1 for F1a, mu(gamma) >= 0 everywhere).
+  void validate() const;
+  std::string describe() const;
+};
+
+// L_i / k for the three flexibilities (paper 002 eq. 9). Throws InputError unless k > 0.
+FastsimFlexibilities ReducedFlexibilities(const FastsimFlexibilities& flexibilities, double slope_reduction);
+
+// Variable-friction FASTSIM on a strip patch (paper 002 §2.1, physics-reference §7.2). Same marching, patch,
+// creepage and sign conventions as SolveFastsimStrips; the only difference is the traction bound: an element is
+// in adhesion when the trial traction satisfies |p_trial| <= mu(0) p_n; otherwise its slip modulus gamma solves
+// the element equation (slip s = L (p - p_trial) / h componentwise, p = mu(gamma) p_n p_trial / |p_trial|)
+//     gamma = K (|p_trial| - mu(gamma) p_n),   K = |(L1 p_trial_x, L2 p_trial_y)| / (h |p_trial|)
+// by safeguarded Newton from gamma = 0 on the bracket [0, K |p_trial|] (the root reached from the adhesion side,
+// i.e. without recuperation of static friction inside one element). A constant law gives exactly the core's answer.
+// patch.friction_coefficient must be empty (the law replaces it).
+void SolveFastsimStripsVariableFriction(const FastsimPatch& patch, const FastsimFlexibilities& flexibilities,
+                                        const FastsimCreepages& creepages, const FrictionLaw& law,
+                                        double rolling_speed_m_per_s, const FastsimOptions& options,
+                                        FastsimResult* result);
+
+// Dispatch: constant law -> SolveFastsimStrips (the core), otherwise the variable-friction kernel.
+void SolveFastsimStripsWithLaw(const FastsimPatch& patch, const FastsimFlexibilities& flexibilities,
+                               const FastsimCreepages& creepages, const FrictionLaw& law,
+                               double rolling_speed_m_per_s, const FastsimOptions& options, FastsimResult* result);
+
+}  // namespace conforma
