@@ -138,6 +138,13 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
   require_positive(o.max_depth_per_step_m, "max_depth_per_step_m");
   if (!(o.max_distance_step_m > 0.0)) throw InputError("max_distance_step_m must be > 0");
   const std::string step = "wear step " + std::to_string(o.step_index) + " (" + to_string(profile.kind()) + ")";
+  if (profile.empty()) throw InputError(step + ": the profile is empty");
+  if (accumulated.size() < 2 || std::abs(accumulated.length_m() - profile.length()) > 1e-9 + 1e-9 * profile.length()) {
+    std::ostringstream m;
+    m << step << ": depth grid length " << accumulated.length_m() * 1e3
+      << " mm does not match the profile arc length " << profile.length() * 1e3 << " mm";
+    throw InputError(m.str());
+  }
   ProfileUpdateResult r;
   r.profile = profile;
   // 1. mass-conserving smoothing (before scaling; S is positively homogeneous)

@@ -131,6 +131,7 @@ ArchardMap ArchardMap::Jendel() {
 ArchardMap ArchardMap::Paper000Wheel() {
   ArchardMap m;
   m.name = "paper 000 Table 3, wheel (scaled roller rig)";
+  m.hardness_Pa = 100 * 9.80665e6;  // paper 000 Table 4: HB 100 (kgf/mm^2)
   const double inf = std::numeric_limits<double>::infinity(), s = 370e-4;
   m.bins = {{0.1, 1e-4, s},   {0.2, 3.6e-4, s}, {0.3, 8.5e-4, s}, {0.4, 29e-4, s},
             {0.5, 31.8e-4, s}, {0.7, 18e-4, s}, {inf, 1e-4, s}};
@@ -140,6 +141,7 @@ ArchardMap ArchardMap::Paper000Wheel() {
 ArchardMap ArchardMap::Paper000Roller() {
   ArchardMap m;
   m.name = "paper 000 Table 3, roller (scaled roller rig)";
+  m.hardness_Pa = 160 * 9.80665e6;  // paper 000 Table 4: HB 160 (kgf/mm^2)
   const double inf = std::numeric_limits<double>::infinity(), s = 520e-4;
   m.bins = {{0.1, 2e-4, s},  {0.2, 7.8e-4, s}, {0.3, 13.3e-4, s}, {0.4, 48.2e-4, s},
             {0.5, 53e-4, s}, {0.7, 21.7e-4, s}, {inf, 2e-4, s}};

@@ -126,6 +126,30 @@ TEST(WearDistribution, TimeContactPointAndClassSums) {
   EXPECT_NEAR(first.result().wheel_depth_per_metre.area_m2(), A.wheel_depth_per_metre.area_m2(), 1e-24);
 }
 
+TEST(WearDistribution, SeparateWheelAndRailLawsArchard) {
+  // wheel: USFD; rail: Archard (Jendel map). One cell: p = 1 GPa, s = (0.01, 0), V = 30 m/s -> v_slip = 0.3 m/s,
+  // k = 35e-4: rail depth per passage = k p |s| dx / H = 35e-4 * 1e9 * 0.01 * 0.5e-3 / 2.75e9 = 6.3636e-9 m.
+  // Wheel: I_w = 4e8 * 0.01 / 1e6 = 4 N/mm^2 (mild) -> K = 21.2 -> 21.2 * 0.5e-3 / 7850 mm = 1.3503e-9 m.
+  WearModel model;
+  model.rail_law.kind = WearLawKind::Archard;
+  WearPatch p;
+  p.rolling_speed_m_s = 30.0;
+  p.wheel_radius_m = 0.46;
+  WearCell c;
+  c.traction_Pa = {4e8, 0};
+  c.slip = {0.01, 0};
+  c.pressure_Pa = 1e9;
+  c.length_x_m = 0.5e-3;
+  c.area_m2 = 0.5e-3 * 1e-3;  // 1 mm wide: deposited area = depth * 1 mm
+  c.wheel_s_m = 50e-3;
+  c.rail_s_m = 20e-3;
+  p.cells.push_back(c);
+  const WearDistribution g = WearDistribution::Zero(0.1, 0.1e-3);
+  const PatchWear w = ComputePatchWear(p, model, g, g);
+  EXPECT_NEAR(w.rail_depth_per_passage.area_m2() / 1e-3, 6.363636e-9, 1e-14);
+  EXPECT_NEAR(w.wheel_depth_per_passage.area_m2() / 1e-3, 21.2 * 0.5e-3 / 7850.0 * 1e-3, 1e-16);
+}
+
 TEST(WearDistribution, BadCellsAreNamed) {
   WearPatch p = severe_patch(5e-3, 4e-3, 10, 10, 70e-3, 35e-3);
   p.cells[3].pressure_Pa = -1.0;

@@ -107,6 +107,12 @@ TEST(WearLaw, ArchardMaps) {
     for (double v : {0.05, 0.2, 0.3, 0.69, 0.7, 5.0})
       EXPECT_DOUBLE_EQ(file.archard.coefficient(p, v), jendel.coefficient(p, v)) << p << " " << v;
   EXPECT_DOUBLE_EQ(file.archard.hardness_Pa, jendel.hardness_Pa);
+  const WearLaw wheel_file = LoadWearLaw(kLawDir + "archard_paper000_wheel.csv");
+  const ArchardMap wheel = ArchardMap::Paper000Wheel();
+  EXPECT_DOUBLE_EQ(wheel_file.archard.hardness_Pa, wheel.hardness_Pa);
+  for (double p : {1e8, 0.7e9, 0.9e9})
+    for (double v : {0.05, 0.15, 0.25, 0.35, 0.45, 0.6, 0.7, 3.0})
+      EXPECT_DOUBLE_EQ(wheel_file.archard.coefficient(p, v), wheel.coefficient(p, v)) << p << " " << v;
 }
 
 TEST(WearLaw, MalformedFilesNameTheLine) {

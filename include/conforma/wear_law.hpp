@@ -98,7 +98,8 @@ struct ArchardMap {
   static ArchardMap Jendel();
   // Paper 000 Table 3 (scaled roller rig, soft Fe360 wheel / Fe510 roller, tuned to the rig): wheel and
   // roller maps, values verbatim; the table labels them "m/km", we read them as the dimensionless Archard
-  // coefficient of eq. 6-8 (as Jendel's). Hardness is the user's to set (paper 000 Table 4: HB 100 / 160).
+  // coefficient of eq. 6-8 (as Jendel's). Hardness from paper 000 Table 4: HB 100 (wheel) / HB 160
+  // (roller), taken as kgf/mm^2 (0.98 / 1.57 GPa). Rig-specific: recalibrate before full-scale use.
   static ArchardMap Paper000Wheel();
   static ArchardMap Paper000Roller();
 };
