@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <sstream>
-#include <utility>
 #include <vector>
 
 #include "conforma/error.hpp"
@@ -46,27 +44,6 @@ Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth,
 
 namespace {
 
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-// First pair of non-adjacent polyline segments that properly cross (sweep over segments sorted by y).
-std::optional<std::pair<size_t, size_t>> first_crossing(const std::vector<Eigen::Vector2d>& p) {
-  const size_t n = p.size() < 2 ? 0 : p.size() - 1;
-  std::vector<size_t> order(n);
-  for (size_t i = 0; i < n; ++i) order[i] = i;
-  auto lo = [&](size_t i) { return std::min(p[i].x(), p[i + 1].x()); };
-  auto hi = [&](size_t i) { return std::max(p[i].x(), p[i + 1].x()); };
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return lo(a) < lo(b); });
-  for (size_t a = 0; a < n; ++a)
-    for (size_t b = a + 1; b < n && lo(order[b]) <= hi(order[a]); ++b) {
-      const size_t i = std::min(order[a], order[b]), j = std::max(order[a], order[b]);
-      if (j < i + 2) continue;
-      const double d1 = cross2(p[i + 1] - p[i], p[j] - p[i]), d2 = cross2(p[i + 1] - p[i], p[j + 1] - p[i]);
-      const double d3 = cross2(p[j + 1] - p[j], p[i] - p[j]), d4 = cross2(p[j + 1] - p[j], p[i + 1] - p[j]);
-      if (d1 * d2 < 0.0 && d3 * d4 < 0.0) return std::make_pair(i, j);
-    }
-  return std::nullopt;
-}
-
 int count_y_folds(const std::vector<Eigen::Vector2d>& p) {
   // sign changes of dy along the polyline, ignoring segments with |dy| below 1e-3 of their length
   int folds = 0, last = 0;
@@ -93,7 +70,7 @@ ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& prev
       v.reason = "the profile has non-finite points";
       return v;
     }
-  if (auto hit = first_crossing(pts)) {
+  if (auto hit = find_self_intersection(pts)) {
     std::ostringstream m;
     m << "the profile self-intersects near y = " << pts[hit->first].x() * 1e3 << " mm and y = "
       << pts[hit->second].x() * 1e3 << " mm";

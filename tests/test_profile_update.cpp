@@ -115,6 +115,15 @@ TEST(ProfileUpdate, SmoothingGainIsHalfAtTheCutoffWavelength) {
   }
 }
 
+TEST(ProfileUpdate, SmoothingKeepsLinearFields) {
+  // D2 annihilates linear functions: a linear depth ramp is a fixed point of the smoother (ends included)
+  WearDistribution ramp = WearDistribution::Zero(0.1, 0.1e-3);
+  for (size_t i = 0; i < ramp.size(); ++i) ramp.depth_m[i] = 1e-6 * (0.2 + 3.0 * ramp.s(i));
+  const DepthSmoothingResult r = SmoothDepthMassConserving(ramp, DepthSmoothingOptions{});
+  for (size_t i = 0; i < ramp.size(); ++i) EXPECT_NEAR(r.depth.depth_m[i], ramp.depth_m[i], 1e-12 * 1e-6);
+  EXPECT_EQ(r.clipped_nodes, 0u);
+}
+
 TEST(ProfileUpdate, UniformDepthOnCircleAndLine) {
   const double R = 0.02, d = 0.4e-3;
   const Profile arc = circle_arc(R, 1.0);
