@@ -21,6 +21,9 @@ struct SparseCholesky::Impl {
     cholmod_start(&common);
     common.print = 0;          // no console output from CHOLMOD
     common.error_handler = nullptr;
+    // Simplicial factorisation: no BLAS calls, so results do not depend on the BLAS thread count (the
+    // banded smoothing systems gain nothing from supernodes).
+    common.supernodal = CHOLMOD_SIMPLICIAL;
     common.final_ll = 1;       // LL^T: a matrix that is not positive definite is reported (LDL^T would pass)
   }
   ~Impl() {

@@ -1,5 +1,5 @@
 #pragma once
-// Sparse symmetric positive definite solves with SuiteSparse CHOLMOD (supernodal/simplicial Cholesky,
+// Sparse symmetric positive definite solves with SuiteSparse CHOLMOD (simplicial LL^T Cholesky,
 // fill-reducing ordering chosen by CHOLMOD). A thin RAII owner of the CHOLMOD workspace and factor:
 // CHOLMOD types stay in the .cpp, so users of this header need neither cholmod.h nor its include path.
 //
