@@ -5,6 +5,9 @@
 #include <cmath>
 
 #include "conforma/error.hpp"
+#include "conforma/profile_update.hpp"
+#include "conforma/rail_update.hpp"
+#include "conforma/standard_profiles.hpp"
 #include "conforma/wear_distribution.hpp"
 
 using namespace conforma;
@@ -160,4 +163,53 @@ TEST(WearDistribution, BadCellsAreNamed) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("wear cell 3"), std::string::npos) << e.what();
   }
+}
+
+TEST(WearDistribution, ChainFromCellsToUpdatedProfiles) {
+  // Hertz-like patch on the S1002 tread (y = 0) against a 60E1 1:40 rail crown (y = 0): pressure
+  // p0 sqrt(1 - x^2/a^2 - y^2/b^2), leading 60 % adhesion (no slip), trailing slip zone with traction mu p
+  // along the slip (slip 2e-3 along x). Bookkeeping: removed wheel area per metre = sum(rate * area) / (2 pi R).
+  const Profile wheel = MakeS1002();
+  const Profile rail = MakeRail(RailSection::R60E1, rail_inclination_1in40());
+  const double a = 6e-3, b = 5e-3, p0 = 1.1e9, mu = 0.3, R = 0.46, V = 25.0;
+  const int nx = 60, ny = 50;
+  const double dx = 2 * a / nx, dy = 2 * b / ny;
+  WearPatch patch;
+  patch.rolling_speed_m_s = V;
+  patch.wheel_radius_m = R;
+  const double sw0 = *wheel.s_at(0.0), sr0 = *rail.s_at(0.0);
+  WearModel model;
+  double expected_area = 0.0;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double x = a - (i + 0.5) * dx, y = -b + (j + 0.5) * dy;  // i = 0 at the leading edge
+      const double r2 = (x / a) * (x / a) + (y / b) * (y / b);
+      if (r2 >= 1.0) continue;
+      WearCell c;
+      c.pressure_Pa = p0 * std::sqrt(1.0 - r2);
+      const bool slipping = x < a * std::sqrt(1.0 - (y / b) * (y / b)) - 1.2 * a * std::sqrt(1.0 - (y / b) * (y / b));
+      c.slip = slipping ? Eigen::Vector2d(2e-3, 0.0) : Eigen::Vector2d::Zero();
+      c.traction_Pa = Eigen::Vector2d(mu * c.pressure_Pa * (slipping ? 1.0 : 0.5), 0.0);
+      c.area_m2 = dx * dy;
+      c.length_x_m = dx;
+      c.wheel_s_m = sw0 + y;
+      c.rail_s_m = sr0 + y;
+      patch.cells.push_back(c);
+      expected_area += model.wheel_law.depth_per_rolled_metre(c.traction_Pa, c.slip, c.pressure_Pa, V, Material{}) *
+                       c.area_m2 / (2 * kPi * R);
+    }
+  const WearDistribution wheel_grid = WearDistribution::ForProfile(wheel), rail_grid = WearDistribution::ForProfile(rail);
+  const TrackClassWear tc = IntegrateTrackClass({WearSample{{patch}, 100.0}}, model, wheel_grid, rail_grid);
+  ASSERT_GT(expected_area, 0.0);
+  EXPECT_NEAR(tc.wheel_depth_per_metre.area_m2(), expected_area, 1e-10 * expected_area);
+  EXPECT_EQ(tc.area_outside_m2, 0.0);
+  // I_w = 0.3 * 1.1e9 * sqrt(...) * 2e-3 / 1e6 <= 0.66 N/mm^2: mild regime everywhere
+  const ProfileUpdateResult w = UpdateProfile(wheel, tc.wheel_depth_per_metre, 1.0);
+  ASSERT_EQ(w.status, ProfileUpdateStatus::Updated) << w.message;
+  EXPECT_NEAR(w.max_depth_m, 0.4e-3, 1e-12);
+  EXPECT_NEAR(w.distance_step_m, 0.4e-3 / w.smoothing.depth.max_depth_m(), 1e-9 * w.distance_step_m);
+  RecordProperty("wheel_km_per_0.4mm_step", std::to_string(w.distance_step_m / 1e3));
+  const RailStepResult r = UpdateRail(rail, {tc.rail_depth_per_passage}, {}, 1.0);
+  ASSERT_EQ(r.status, ProfileUpdateStatus::Updated) << r.message;
+  EXPECT_NEAR(r.mean_removed_depth.max_depth_m(), 0.1e-3, 1e-6 * 0.1e-3);
 }
