@@ -11,12 +11,20 @@
 namespace conforma {
 
 namespace {
-
 struct VerticalMinimum {
   double y_w = 0.0, gap = 0.0, eta = 0.0;
 };
-
 }  // namespace
+
+double WheelsetTrackGeometry::VerticalGapAt(Side side, const Frame& f, double y_w, double* eta) const {
+  Eigen::Vector3d p;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  if (!SilhouettePoint(side, f, y_w, &p)) return inf;
+  double zr;
+  if (!RailHeight(side, p(1), &zr, nullptr)) return inf;
+  if (eta) *eta = p(1);
+  return p(2) - zr;
+}
 
 // Local minima of the vertical gap z_wheel(eta) - z_rail(eta) along the wheel silhouette.
 static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f,
@@ -58,6 +66,15 @@ static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const Whe
     prev2 = prev1;
     prev1 = cur;
   }
+}
+
+std::vector<WheelsetTrackGeometry::VerticalGapMinimum> WheelsetTrackGeometry::VerticalGapMinima(
+    Side side, const Frame& frame) const {
+  std::vector<VerticalMinimum> minima;
+  vertical_minima(*this, side, frame, &minima);
+  std::vector<VerticalGapMinimum> out(minima.size());
+  for (size_t i = 0; i < minima.size(); ++i) out[i] = {minima[i].y_w, minima[i].gap, minima[i].eta};
+  return out;
 }
 
 bool WheelsetTrackGeometry::MinimumVerticalGap(Side side, const WheelsetPose& pose, double* gap_m,

@@ -177,6 +177,13 @@ class WheelsetTrackGeometry {
   double WheelTableEnd(Side side) const { return sides_[side_index(side)].wheel.y_end(); }
   double RailTableBegin(Side side) const { return sides_[side_index(side)].rail.y0; }
   double RailTableEnd(Side side) const { return sides_[side_index(side)].rail.y_end(); }
+  // Local minima of the vertical separation along the wheel silhouette (coarse scan + Brent).
+  struct VerticalGapMinimum {
+    double y_w = 0.0, gap_m = 0.0, eta = 0.0;
+  };
+  std::vector<VerticalGapMinimum> VerticalGapMinima(Side side, const Frame& frame) const;
+  // Vertical separation at wheel-profile y_w (silhouette point minus rail below it); +inf outside.
+  double VerticalGapAt(Side side, const Frame& frame, double y_w, double* eta = nullptr) const;
   // Fills the derived quantities of a contact point from (y_w, eta_rail) in the side frame.
   RigidContactPoint MakeContactPoint(Side side, const Frame& frame, const WheelsetPose& pose, double y_w,
                                      double eta_rail, double gap_m, double vertical_gap_m) const;

@@ -31,7 +31,12 @@ struct PatchGeometry {
   Eigen::Vector2d reference_point_m = Eigen::Vector2d::Zero();
   Eigen::Vector2d reference_normal = Eigen::Vector2d(0.0, 1.0);  // unit, outward from the rail
   double reference_s_on_rail_m = 0.0;   // arc length of the reference point on the rail profile
-  double contact_angle_rad = 0.0;       // angle of reference_normal from vertical (track frame), + towards field? see geometry.hpp
+  double contact_angle_rad = 0.0;       // angle of reference_normal from the track vertical, + towards the
+                                        // track centre (gauge side; flange ~ +1.1 rad), see geometry.hpp
+  // Added by the geometry: the approach along the reference normal that reproduces the rigid
+  // interpenetration of this region at the pose (= -min of the local gaps before they were shifted to
+  // min gap_m = 0). 0 when the patch was built for a touching pose.
+  double rigid_approach_m = 0.0;
 
   size_t strips() const { return s_m.size(); }
 };

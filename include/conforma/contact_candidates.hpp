@@ -1,0 +1,65 @@
+#pragma once
+// Elastic contact candidates of one wheel: every separate interpenetration region of the wheel silhouette
+// and the rail at a pose (or at the pose pushed down so that Hertz contacts carry a vertical load), each
+// as a PatchGeometry in curvilinear rail coordinates (patch.hpp) for the normal solvers.
+//
+// Region: an interval [s_a, s_b] of rail arc length between two intersections of the wheel silhouette with
+// the rail (exact intersections, so the same for vertical or normal gaps). Reference point = CENTRE of the
+// region on the rail, s_ref = (s_a + s_b) / 2 (as CONTACT defines its contact reference point); reference
+// normal = rail normal there. Strips of width ds, uniform in s, cover the region plus a margin on each side.
+// Per strip: gap along the local rail normal (shifted so that its minimum over the patch is 0; the shift is
+// PatchGeometry::rigid_approach_m), A(s) = cos(alpha_w) / (2 r) (alpha_w: wheel profile slope angle at the
+// silhouette point facing the strip; physics-reference §1.1), wheel radius r(s), alpha(s) = angle of the
+// local rail normal from the reference normal (+ towards +s), x_offset(s) = lead of the silhouette point.
+#include <vector>
+
+#include "conforma/geometry.hpp"
+#include "conforma/hertz.hpp"
+#include "conforma/material.hpp"
+#include "conforma/patch.hpp"
+
+namespace conforma {
+
+struct CandidateOptions {
+  double strip_width_m = 0.1e-3;
+  double margin_fraction = 0.25;  // margin on each side, as a fraction of the region width
+  int min_margin_strips = 3;
+  double load_tolerance = 1e-6;   // relative, for the load-given mode
+  // Load-given mode: the regions are taken at this fraction of the Hertz push-down. 1 = the rigid
+  // interpenetration at the Hertz approach (the bare definition); Kik-Piotrowski's virtual penetration
+  // epsilon = 0.55 (physics-reference §3.1) gives regions the size of the elastic contact area.
+  double penetration_factor = 1.0;
+  // Regions separated by less than this rail arc length are combined into one patch (CONTACT's D_COMB,
+  // 4 mm there). 0 keeps every interpenetration region separate.
+  double combine_distance_m = 0.0;
+};
+
+enum class CandidateStatus { Ok, NoContact /* no interpenetration */, NoOverlap /* wheel not over the rail */ };
+const char* to_string(CandidateStatus status);
+
+struct ContactCandidate {
+  PatchGeometry patch;
+  RigidContactPoint reference;  // quantities at the reference point (rolling radius, wheel point, Hertz A, B)
+  double region_start_s_m = 0.0, region_end_s_m = 0.0;  // interpenetration region on the rail (arc length)
+  double normal_force_estimate_N = 0.0;                 // Hertz estimate (load-given mode only)
+};
+
+struct CandidateResult {
+  CandidateStatus status = CandidateStatus::NoOverlap;
+  WheelsetPose pose;                         // the pose the regions were taken at
+  std::vector<ContactCandidate> candidates;  // ordered along the rail (gauge side first)
+};
+
+// Regions at the given pose (interpenetration of the rigid profiles).
+CandidateResult FindContactCandidates(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                      const CandidateOptions& options = {});
+
+// Load-given: the wheel is first lowered (roll, yaw and lateral fixed) until it touches, then pushed down by
+// dz such that the Hertz contacts at the rigid contact points (SolveHertzForApproach with approach
+// (dz - vertical gap) cos(delta)) carry the vertical load, sum N_i cos(delta_i) = load; regions are taken at
+// that pose (times options.penetration_factor). Throws InputError for a negative or non-finite load.
+CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& geometry, Side side,
+                                             const WheelsetPose& pose, double vertical_load_N,
+                                             const Material& material, const CandidateOptions& options = {});
+
+}  // namespace conforma

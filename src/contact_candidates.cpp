@@ -1,0 +1,204 @@
+// Elastic contact candidates: interpenetration regions of one wheel as PatchGeometry (contact_candidates.hpp).
+#include "conforma/contact_candidates.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+const char* to_string(CandidateStatus status) {
+  switch (status) {
+    case CandidateStatus::Ok: return "ok";
+    case CandidateStatus::NoContact: return "no contact";
+    default: return "no overlap";
+  }
+}
+
+namespace {
+
+// Intersection of the silhouette with the rail between y_in (gap < 0) and y_out (gap >= 0 or outside).
+double bisect_crossing(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f, double y_in,
+                       double y_out) {
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (y_in + y_out);
+    if (g.VerticalGapAt(side, f, mid) < 0.0) y_in = mid; else y_out = mid;
+  }
+  return 0.5 * (y_in + y_out);
+}
+
+ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f,
+                             const WheelsetPose& pose, double eta_a, double eta_b, double y_w_seed,
+                             const CandidateOptions& o) {
+  ContactCandidate c;
+  const double s_a = g.RailArcLength(side, eta_a), s_b = g.RailArcLength(side, eta_b);
+  c.region_start_s_m = s_a;
+  c.region_end_s_m = s_b;
+  const double s_ref = 0.5 * (s_a + s_b);
+  const double eta_ref = g.RailEtaAtArcLength(side, s_ref);
+  double z_ref, m_ref;
+  g.RailHeight(side, eta_ref, &z_ref, &m_ref);
+  const double n_len = std::sqrt(1 + m_ref * m_ref);
+  const Eigen::Vector2d n_ref(-m_ref / n_len, 1.0 / n_len), t_ref(1.0 / n_len, m_ref / n_len);
+  double y_w = y_w_seed, gap_ref = 0.0;
+  g.NormalGap(side, f, eta_ref, &y_w, &gap_ref);
+  c.reference = g.MakeContactPoint(side, f, pose, y_w, eta_ref, gap_ref, gap_ref);
+
+  PatchGeometry& p = c.patch;
+  const double ds = o.strip_width_m;
+  const double width = s_b - s_a;
+  const double margin = std::max(o.min_margin_strips * ds, o.margin_fraction * width);
+  const double s_lo = std::max(g.RailArcLength(side, g.RailTableBegin(side)), s_a - margin);
+  const double s_hi = std::min(g.RailArcLength(side, g.RailTableEnd(side)), s_b + margin);
+  const int n = std::max(1, static_cast<int>(std::ceil((s_hi - s_lo) / ds)));
+  const double s_start = 0.5 * (s_lo + s_hi) - 0.5 * n * ds;
+  p.ds_m = ds;
+  p.reference_point_m = c.reference.rail_profile_m;
+  p.reference_normal = n_ref;
+  p.reference_s_on_rail_m = s_ref;
+  p.contact_angle_rad = c.reference.contact_angle_rad;
+  double gap_min = std::numeric_limits<double>::infinity();
+  y_w = y_w_seed;
+  for (int j = 0; j < n; ++j) {
+    const double s = s_start + (j + 0.5) * ds;
+    const double eta = g.RailEtaAtArcLength(side, s);
+    double gap;
+    Eigen::Vector3d wp;
+    if (!g.NormalGap(side, f, eta, &y_w, &gap, &wp)) continue;  // silhouette not reachable: strip left out
+    double z_r, m_r;
+    g.RailHeight(side, eta, &z_r, &m_r);
+    const double nl = std::sqrt(1 + m_r * m_r);
+    const Eigen::Vector2d n_loc(-m_r / nl, 1.0 / nl);
+    double z_w, slope, kappa;
+    g.WheelProfileAt(side, y_w, &z_w, &slope, &kappa);
+    const double radius = g.setup().nominal_radius_m[side_index(side)] + z_w;
+    p.s_m.push_back(s - s_ref);
+    p.gap_m.push_back(gap);
+    // physics-reference §1.1: rolling curvature of the wheel in the tilted plane, cos(alpha_w) / r
+    p.longitudinal_curvature_per_m.push_back(std::cos(std::atan(slope)) / (2.0 * radius));
+    p.wheel_radius_m.push_back(radius);
+    p.alpha_rad.push_back(std::atan2(n_loc.dot(t_ref), n_loc.dot(n_ref)));
+    p.x_offset_m.push_back(wp(0) - f.centre(0));
+    gap_min = std::min(gap_min, gap);
+  }
+  if (std::isfinite(gap_min)) {
+    for (double& gj : p.gap_m) gj -= gap_min;
+    p.rigid_approach_m = std::max(0.0, -gap_min);
+  }
+  return c;
+}
+
+}  // namespace
+
+CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side, const WheelsetPose& pose,
+                                      const CandidateOptions& o) {
+  require_positive(o.strip_width_m, "CandidateOptions.strip_width_m");
+  require_non_negative(o.margin_fraction, "CandidateOptions.margin_fraction");
+  CandidateResult out;
+  out.pose = pose;
+  const WheelsetTrackGeometry::Frame f = g.SideFrame(side, pose);
+  const auto minima = g.VerticalGapMinima(side, f);
+  if (minima.empty()) return out;
+  out.status = CandidateStatus::NoContact;
+  const double step = g.options().scan_spacing_m * 0.5;
+  const double y_lo = g.WheelTableBegin(side), y_hi = g.WheelTableEnd(side);
+  std::vector<std::pair<double, double>> regions;  // (y_w start, y_w end)
+  std::vector<double> seeds;
+  for (const auto& m : minima) {
+    if (!(m.gap_m < 0.0)) continue;
+    double a = m.y_w, b = m.y_w;
+    while (a - step > y_lo && g.VerticalGapAt(side, f, a - step) < 0.0) a -= step;
+    const double ya = (a - step > y_lo) ? bisect_crossing(g, side, f, a, a - step) : a;
+    while (b + step < y_hi && g.VerticalGapAt(side, f, b + step) < 0.0) b += step;
+    const double yb = (b + step < y_hi) ? bisect_crossing(g, side, f, b, b + step) : b;
+    bool duplicate = false;
+    for (const auto& r : regions) duplicate |= std::abs(r.first - ya) < 1e-9;
+    if (duplicate) continue;
+    regions.emplace_back(ya, yb);
+    seeds.push_back(m.y_w);
+  }
+  struct Region { double eta_a, eta_b, s_a, s_b, seed, seed_gap; };
+  std::vector<Region> rs;
+  for (size_t k = 0; k < regions.size(); ++k) {
+    double eta_a = 0, eta_b = 0, eta_seed = 0;
+    g.VerticalGapAt(side, f, regions[k].first, &eta_a);
+    g.VerticalGapAt(side, f, regions[k].second, &eta_b);
+    const double seed_gap = g.VerticalGapAt(side, f, seeds[k], &eta_seed);
+    if (!(eta_b > eta_a)) continue;
+    rs.push_back({eta_a, eta_b, g.RailArcLength(side, eta_a), g.RailArcLength(side, eta_b), seeds[k], seed_gap});
+  }
+  std::sort(rs.begin(), rs.end(), [](const auto& p, const auto& q) { return p.s_a < q.s_a; });
+  std::vector<Region> merged;
+  for (const Region& r : rs) {
+    if (!merged.empty() && r.s_a - merged.back().s_b < o.combine_distance_m) {
+      Region& m = merged.back();
+      if (r.s_b > m.s_b) { m.s_b = r.s_b; m.eta_b = r.eta_b; }
+      if (r.seed_gap < m.seed_gap) { m.seed = r.seed; m.seed_gap = r.seed_gap; }
+    } else {
+      merged.push_back(r);
+    }
+  }
+  for (const Region& r : merged) out.candidates.push_back(build_patch(g, side, f, pose, r.eta_a, r.eta_b, r.seed, o));
+  std::sort(out.candidates.begin(), out.candidates.end(),
+            [](const auto& p, const auto& q) { return p.region_start_s_m < q.region_start_s_m; });
+  if (!out.candidates.empty()) out.status = CandidateStatus::Ok;
+  return out;
+}
+
+CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Side side, const WheelsetPose& pose_in,
+                                             double vertical_load_N, const Material& material,
+                                             const CandidateOptions& o) {
+  require_non_negative(vertical_load_N, "vertical_load_N");
+  material.validate();
+  WheelsetPose pose = pose_in;
+  double gap, y_contact;
+  if (!g.MinimumVerticalGap(side, pose, &gap, &y_contact)) {
+    CandidateResult none;
+    none.pose = pose;
+    return none;
+  }
+  pose.vertical_m -= gap;  // touching
+  const WheelContactResult rigid = g.RigidContact(side, pose);
+  struct Point { double vertical_gap, cos_delta, A, B; };
+  std::vector<Point> pts;
+  for (const auto& c : rigid.points) {
+    // B <= 0 (conformal): the Hertz estimate of the approach uses a small positive B instead
+    const double B = std::max(c.hertz_B_per_m, 1e-3 * c.hertz_A_per_m);
+    pts.push_back({std::max(0.0, c.vertical_gap_m), std::cos(c.contact_angle_rad), c.hertz_A_per_m, B});
+  }
+  auto vertical_force = [&](double dz, std::vector<double>* forces) {
+    double total = 0.0;
+    if (forces) forces->assign(pts.size(), 0.0);
+    for (size_t i = 0; i < pts.size(); ++i) {
+      const double approach = (dz - pts[i].vertical_gap) * pts[i].cos_delta;
+      if (approach <= 0.0) continue;
+      const HertzResult h = SolveHertzForApproach(pts[i].A, pts[i].B, approach, material);
+      if (h.status != HertzStatus::Ok) continue;
+      total += h.normal_force_N * pts[i].cos_delta;
+      if (forces) (*forces)[i] = h.normal_force_N;
+    }
+    return total;
+  };
+  double lo = 0.0, hi = 1e-4;
+  while (vertical_force(hi, nullptr) < vertical_load_N && hi < 0.05) hi *= 2.0;
+  for (int it = 0; it < 100 && (hi - lo) > o.load_tolerance * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (vertical_force(mid, nullptr) < vertical_load_N) lo = mid; else hi = mid;
+  }
+  const double dz = vertical_load_N > 0.0 ? 0.5 * (lo + hi) : 0.0;
+  std::vector<double> forces;
+  vertical_force(dz, &forces);
+  require_positive(o.penetration_factor, "CandidateOptions.penetration_factor");
+  pose.vertical_m -= o.penetration_factor * dz;
+  CandidateResult out = FindContactCandidates(g, side, pose, o);
+  // attach the Hertz estimate of each rigid point to the region containing it
+  for (size_t i = 0; i < rigid.points.size(); ++i)
+    for (auto& c : out.candidates)
+      if (rigid.points[i].rail_s_m >= c.region_start_s_m - 1e-6 && rigid.points[i].rail_s_m <= c.region_end_s_m + 1e-6)
+        c.normal_force_estimate_N += forces[i];
+  return out;
+}
+
+}  // namespace conforma
