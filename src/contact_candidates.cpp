@@ -80,7 +80,10 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
     p.longitudinal_curvature_per_m.push_back(std::cos(std::atan(slope)) / (2.0 * radius));
     p.wheel_radius_m.push_back(radius);
     p.alpha_rad.push_back(std::atan2(n_loc.dot(t_ref), n_loc.dot(n_ref)));
-    p.x_offset_m.push_back(wp(0) - f.centre(0));
+    // lead of the silhouette point relative to the wheel's vertical diametral plane (yaw lead)
+    const Eigen::Vector3d circle_centre =
+        f.centre + f.rotation * Eigen::Vector3d(0.0, g.wheel_origin_eta_m() + y_w, 0.0);
+    p.x_offset_m.push_back(wp(0) - circle_centre(0));
     gap_min = std::min(gap_min, gap);
   }
   if (std::isfinite(gap_min)) {

@@ -331,7 +331,8 @@ RigidContactPoint WheelsetTrackGeometry::MakeContactPoint(Side side, const Frame
   c.wheel_profile_m = Eigen::Vector2d(y_w, z_w);
   c.contact_angle_rad = std::atan(mr);  // rail normal (-z', 1): leans to -eta (gauge side) when z' > 0
   c.rolling_radius_m = radius;
-  c.lead_m = pw(0) - f.centre(0);
+  // lead relative to the wheel's own vertical diametral plane: x of R (r sin(theta), 0, -r cos(theta))
+  c.lead_m = radius * (f.rotation(0, 0) * std::sin(theta) - f.rotation(0, 2) * std::cos(theta));
   c.wheel_theta_rad = theta;
   c.wheel_lateral_curvature_per_m = wkappa;
   const GraphTable& rt = d.rail;

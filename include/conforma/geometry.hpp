@@ -23,7 +23,8 @@
 //   Contact angle delta: angle of the outward RAIL normal from the track vertical, POSITIVE when the normal
 //     leans towards the track centre (gauge side): flange contact about +1.1 rad. CONTACT's delta_cp for the
 //     left rail (its left-handed frame) has the opposite sign: delta_cp = -delta.
-//   Lead: x coordinate of a contact point in the track frame relative to the axle centre (+ ahead).
+//   Lead: longitudinal position (track x, + ahead) of a contact point relative to the vertical diametral
+//     plane of its wheel, r (R00 sin(theta) - R02 cos(theta)); for yaw alone r cos(psi) sin(theta).
 //
 // RIGID CONTACT SEARCH (paper 001 eqs. 4-6): the wheel surface point whose outward normal has no component
 // along the track x axis lies on the wheel's silhouette seen along x. For a wheel-profile point (y_w, r, r')
@@ -89,7 +90,7 @@ struct RigidContactPoint {
   Eigen::Vector2d wheel_profile_m = Eigen::Vector2d::Zero();// wheel-profile (y_w, z_w)
   double contact_angle_rad = 0.0;   // rail normal from vertical, + towards the gauge side
   double rolling_radius_m = 0.0;    // r0 + z_w(y_w)
-  double lead_m = 0.0;              // longitudinal position of the wheel contact point
+  double lead_m = 0.0;              // longitudinal position relative to the wheel's diametral plane
   double wheel_theta_rad = 0.0;     // angle about the axle of the silhouette point (+ ahead)
   double wheel_lateral_curvature_per_m = 0.0;  // convex > 0
   double rail_lateral_curvature_per_m = 0.0;   // convex > 0
