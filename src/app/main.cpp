@@ -2,11 +2,27 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "commands.hpp"
+#include "conforma/error.hpp"
+
 int main(int argc, char** argv) {
   CLI::App app{"Conforma: conformal wheel-rail contact and wear"};
-  app.require_subcommand(0, 1);
+  app.option_defaults()->always_capture_default();
+  app.require_subcommand(1);
   app.set_version_flag("--version", "conforma 0.1.0");
-  CLI11_PARSE(app, argc, argv);
-  if (app.get_subcommands().empty()) std::cout << app.help();
+  conforma::cli::RegisterContactCommand(app);
+  conforma::cli::RegisterSweepCommand(app);
+  conforma::cli::RegisterProfileCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const conforma::InputError& e) {
+    std::cerr << "conforma: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "conforma: internal error: " << e.what() << "\n";
+    return 3;
+  }
   return 0;
 }

@@ -1,0 +1,89 @@
+#pragma once
+// One wheel's contact, from the wheelset pose to per-patch forces, with any contact model: the pipeline that the
+// command line, the validation runners and (later) the wear loop and the C/Python interfaces call.
+//
+//   geometry  FindContactCandidates[ForLoad]  -> every interpenetration region as a PatchGeometry
+//   normal    hertz | kp | kpec | conformal | reference (BEM)      (load control over the wheel's vertical push)
+//   creepage  rigid slip from the wheelset velocities at the patch (per strip for the conformal model)
+//   tangent   FASTSIM (hertz) | FASTSIM on the SDEC over the KP patch (kp, kpec) | curved-patch FASTSIM (conformal)
+//
+// Frames: each wheel is reported in its side frame (geometry.hpp), i.e. the right wheel as the mirror image of a
+// left wheel; forces are those ON THE WHEEL (Kalker's convention) in the patch's contact frame: fx along the track,
+// fy along the rail profile towards the field side (+s), fn along the outward rail normal (pushing the wheel up).
+#include <string>
+#include <vector>
+
+#include "conforma/contact_candidates.hpp"
+#include "conforma/creepage.hpp"
+#include "conforma/fastsim.hpp"
+#include "conforma/geometry.hpp"
+#include "conforma/material.hpp"
+
+namespace conforma {
+
+enum class ContactModel { Hertz, Kp, Kpec, Conformal, Reference };
+const char* to_string(ContactModel model);
+// "hertz", "kp", "kpec", "conformal", "reference"; InputError naming the value otherwise.
+ContactModel ParseContactModel(const std::string& name);
+
+struct WheelContactOptions {
+  ContactModel model = ContactModel::Hertz;
+  Material material;
+  double friction_coefficient = 0.3;
+  // Load control (default): the wheel is pushed down until the vertical components of its patch forces carry
+  // this load. Set vertical_load_N < 0 to use the pose as given (approach mode, for multibody coupling).
+  double vertical_load_N = 10e3;
+  double load_tolerance = 1e-6;        // relative
+  int fastsim_elements = 30;           // FASTSIM elements per strip (and strips for the Hertz ellipse)
+  int kp_strips = 31;                  // strips across the contact of the KP solvers
+  int bem_x_elements = 64;             // reference BEM elements along x (strips: the candidate's ds)
+  double candidate_strip_width_m = 0.1e-3;
+  double conformity_threshold_deg = 18.0;
+  bool solve_tangential = true;        // false: normal problem only
+  FastsimOptions fastsim;              // bound and marching (hertz model)
+  // When set, these creepages are used at every patch instead of the wheelset kinematics.
+  bool creepages_given = false;
+  Creepages creepages;
+  void validate() const;  // InputError naming the option
+};
+
+// Per patch: the keys of `conforma contact --json` (units in the names).
+struct PatchReport {
+  std::string normal_status, tangential_status;
+  double fn_N = 0.0, fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;
+  double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0;
+  double a_m = 0.0, b_m = 0.0;               // Hertz semi-axes, or the SDEC / equivalent ellipse
+  double width_m = 0.0, length_m = 0.0;      // extent along s^r and along x^r
+  double approach_m = 0.0;                   // approach of this patch along its reference normal
+  double contact_angle_rad = 0.0;            // + towards the gauge side (geometry.hpp)
+  double y_contact_rail_m = 0.0, z_contact_rail_m = 0.0;  // reference point, mounted rail profile
+  double y_contact_wheel_m = 0.0;            // wheel-profile y at the reference point
+  double rolling_radius_m = 0.0;
+  double lead_m = 0.0;                       // longitudinal position of the reference point (yaw lead)
+  double xi = 0.0, eta = 0.0, phi_per_m = 0.0;  // creepages at the reference point
+  double alpha_c_deg = 0.0;                  // conformity index (paper 003 eq. 13)
+  bool is_conformal = false;
+  double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
+  double vertical_force_N = 0.0, lateral_force_N = 0.0;  // normal + tangential force on the wheel, side frame
+};
+
+enum class WheelContactStatus { Ok, NoContact, NotConverged };
+const char* to_string(WheelContactStatus status);
+
+struct WheelContactReport {
+  WheelContactStatus status = WheelContactStatus::NoContact;
+  Side side = Side::Left;
+  ContactModel model = ContactModel::Hertz;
+  WheelsetPose pose;                 // the pose the patches were solved at (vertical pushed down in load control)
+  std::vector<PatchReport> patches;  // ordered along the rail, gauge side first
+  double vertical_force_N = 0.0;     // sum over patches (side frame z)
+  double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side)
+  int load_iterations = 0;
+};
+
+// pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
+// mode. Throws InputError for bad options or velocities; no contact is a status.
+WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                     const WheelsetVelocity& velocity, const WheelContactOptions& options);
+
+}  // namespace conforma

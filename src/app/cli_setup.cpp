@@ -1,0 +1,104 @@
+#include "cli_setup.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_io.hpp"
+#include "conforma/standard_profiles.hpp"
+
+namespace conforma::cli {
+
+namespace {
+bool IsBuiltInRail(const std::string& name, RailSection* section) {
+  for (RailSection s : {RailSection::R60E1, RailSection::R54E1, RailSection::R50E6, RailSection::R50E4})
+    if (name == to_string(s)) { *section = s; return true; }
+  return false;
+}
+}  // namespace
+
+double ParseInclination(const std::string& text) {
+  if (text == "0" || text == "none") return 0.0;
+  const auto colon = text.find_first_of(":/");
+  try {
+    if (colon != std::string::npos) {
+      const double a = std::stod(text.substr(0, colon)), b = std::stod(text.substr(colon + 1));
+      if (a >= 0 && b > 0) return std::atan(a / b);
+    } else {
+      size_t used = 0;
+      const double v = std::stod(text, &used);
+      if (used == text.size() && std::isfinite(v) && std::fabs(v) < 0.2) return v;
+    }
+  } catch (const std::exception&) {
+  }
+  throw InputError("option --inclination: cannot read '" + text + "' (expected 1:40, 1:20, 0 or radians)");
+}
+
+void TrackArgs::add_to(CLI::App* app) {
+  app->add_option("--wheel", wheel, "wheel profile: S1002 or a file (.prw .whl .csv .txt)");
+  app->add_option("--rail", rail, "rail profile: 60E1, 54E1, 50E6, 50E4 or a file (.prr .ban .csv .txt)");
+  app->add_option("--inclination", inclination, "rail inclination applied by the track (1:40, 1:20, 0); "
+                                                "default 1:40 for built-in rails, 0 for files (already canted)");
+  app->add_option("--gauge-mm", gauge_mm, "track gauge");
+  app->add_option("--gauge-height-mm", gauge_height_mm, "gauge measuring height below the rail top");
+  app->add_option("--flange-back-mm", flange_back_mm, "flange-back distance");
+  app->add_option("--flange-back-position-mm", flange_back_position_mm, "wheel-profile y of the flange back");
+  app->add_option("--r0-mm", nominal_radius_mm, "nominal (taping-line) wheel radius");
+}
+
+std::unique_ptr<WheelsetTrackGeometry> TrackArgs::make_geometry() const {
+  Profile wheel_profile;
+  if (wheel == "S1002") {
+    wheel_profile = MakeS1002();
+  } else {
+    ProfileReadOptions o;
+    o.kind = ProfileKind::Wheel;
+    wheel_profile = LoadProfile(wheel, o);
+  }
+  Profile rail_profile;
+  RailSection section;
+  double incl = 0.0;
+  if (IsBuiltInRail(rail, &section)) {
+    rail_profile = MakeRail(section, 0.0);
+    incl = inclination.empty() ? rail_inclination_1in40() : ParseInclination(inclination);
+  } else {
+    if (!std::filesystem::exists(rail))
+      throw InputError("option --rail: '" + rail + "' is neither a built-in rail (60E1, 54E1, 50E6, 50E4) nor a file");
+    ProfileReadOptions o;
+    o.kind = ProfileKind::Rail;
+    rail_profile = LoadProfile(rail, o);
+    incl = inclination.empty() ? 0.0 : ParseInclination(inclination);
+  }
+  TrackSetup setup = MakeSymmetricTrack(wheel_profile, rail_profile, incl);
+  setup.gauge_m = gauge_mm * 1e-3;
+  setup.gauge_height_m = gauge_height_mm * 1e-3;
+  setup.flange_back_distance_m = flange_back_mm * 1e-3;
+  setup.flange_back_position_m = flange_back_position_mm * 1e-3;
+  setup.nominal_radius_m = {nominal_radius_mm * 1e-3, nominal_radius_mm * 1e-3};
+  setup.validate();
+  return std::make_unique<WheelsetTrackGeometry>(std::move(setup));
+}
+
+void ContactArgs::add_to(CLI::App* app) {
+  app->add_option("--model", model, "contact model: hertz, kp, kpec, conformal, reference");
+  app->add_option("--load-N", load_N, "vertical load per wheel (load control); negative: use the pose as given");
+  app->add_option("--speed", speed_m_s, "forward speed [m/s]");
+  app->add_option("--mu", friction, "friction coefficient");
+  app->add_option("--G-GPa", shear_modulus_GPa, "shear modulus of wheel and rail");
+  app->add_option("--nu", poisson, "Poisson ratio");
+  app->add_option("--grid", grid, "FASTSIM elements per strip");
+}
+
+WheelContactOptions ContactArgs::options() const {
+  WheelContactOptions o;
+  o.model = ParseContactModel(model);
+  o.vertical_load_N = load_N;
+  o.friction_coefficient = friction;
+  o.material.shear_modulus_Pa = shear_modulus_GPa * 1e9;
+  o.material.poisson_ratio = poisson;
+  o.fastsim_elements = grid;
+  o.validate();
+  return o;
+}
+
+}  // namespace conforma::cli

@@ -1,0 +1,37 @@
+#pragma once
+// Command-line options shared by the subcommands: profiles (built-in names or files), track, material, model.
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+
+#include "conforma/geometry.hpp"
+#include "conforma/wheel_contact.hpp"
+
+namespace conforma::cli {
+
+struct TrackArgs {
+  std::string wheel = "S1002";     // built-in name or a profile file
+  std::string rail = "60E1";       // 60E1 | 54E1 | 50E6 | 50E4 or a profile file
+  std::string inclination = "";    // "1:40", "1:20", "0"; default 1:40 for built-in rails, 0 for files
+  double gauge_mm = 1435.0, gauge_height_mm = 14.0, flange_back_mm = 1360.0, flange_back_position_mm = -70.0;
+  double nominal_radius_mm = 460.0;
+  void add_to(CLI::App* app);
+  // Throws InputError for an unknown name, unreadable profile or bad inclination.
+  std::unique_ptr<WheelsetTrackGeometry> make_geometry() const;
+};
+
+struct ContactArgs {
+  std::string model = "hertz";
+  double load_N = 10e3;           // vertical load per wheel; < 0 = pose given (approach mode)
+  double speed_m_s = 2.0;
+  double friction = 0.3;
+  double shear_modulus_GPa = 82.0, poisson = 0.28;
+  int grid = 30;
+  void add_to(CLI::App* app);
+  WheelContactOptions options() const;
+};
+
+// Parses "1:40", "1/40", "0", "none" or a decimal angle in radians.
+double ParseInclination(const std::string& text);
+
+}  // namespace conforma::cli

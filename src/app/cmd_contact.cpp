@@ -1,0 +1,78 @@
+// conforma contact: the contact of one wheelset pose (both wheels or one), any model, table or JSON.
+#include <iostream>
+#include <optional>
+
+#include "cli_setup.hpp"
+#include "commands.hpp"
+#include "conforma/error.hpp"
+#include "report_json.hpp"
+
+namespace conforma::cli {
+
+namespace {
+struct ContactCommand {
+  TrackArgs track;
+  ContactArgs contact;
+  double y_mm = 0.0, yaw_mrad = 0.0, approach_mm = 0.05;
+  std::optional<double> roll_mrad;
+  std::string side = "both";
+  std::optional<double> xi, eta, phi_per_m;
+  bool json = false;
+
+  void run() const {
+    const auto geometry = track.make_geometry();
+    WheelContactOptions options = contact.options();
+    require_finite(y_mm, "--y-mm");
+    require_finite(yaw_mrad, "--yaw-mrad");
+    if (xi || eta || phi_per_m) {
+      options.creepages_given = true;
+      options.creepages = {xi.value_or(0.0), eta.value_or(0.0), phi_per_m.value_or(0.0)};
+    }
+    // vertical position and roll: rigid contact of both wheels unless the roll is given
+    const EquilibriumResult eq = geometry->SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3);
+    if (eq.status == EquilibriumStatus::NoContact) throw InputError("no rigid contact at --y-mm " + std::to_string(y_mm));
+    WheelsetPose pose = eq.pose;
+    if (roll_mrad) pose.roll_rad = *roll_mrad * 1e-3;
+    if (options.vertical_load_N < 0.0) pose.vertical_m -= approach_mm * 1e-3;  // approach mode
+    const double r0 = geometry->setup().nominal_radius_m[0];
+    WheelsetVelocity velocity{contact.speed_m_s, 0.0, 0.0, contact.speed_m_s / r0};
+    nlohmann::json out = {{"model", contact.model}, {"wheels", nlohmann::json::array()}};
+    if (!json) {
+      std::cout << "conforma contact: wheel " << track.wheel << " on rail " << track.rail << ", model " << contact.model
+                << ", y = " << y_mm << " mm, yaw = " << yaw_mrad << " mrad, roll = " << pose.roll_rad * 1e3
+                << " mrad\n";
+      PrintPatchTableHeader(std::cout);
+    }
+    for (Side s : {Side::Left, Side::Right}) {
+      if (side != "both" && side != to_string(s)) continue;
+      const WheelContactReport r = SolveWheelContact(*geometry, s, pose, velocity, options);
+      if (json) {
+        out["wheels"].push_back(ToJson(r));
+      } else {
+        if (r.patches.empty()) std::cout << "   " << to_string(s) << ": " << to_string(r.status) << "\n";
+        for (const PatchReport& p : r.patches) PrintPatchRow(std::cout, to_string(s), p);
+      }
+    }
+    if (json) std::cout << out.dump(2) << "\n";
+  }
+};
+}  // namespace
+
+void RegisterContactCommand(CLI::App& app) {
+  auto cmd = std::make_shared<ContactCommand>();
+  CLI::App* sub = app.add_subcommand("contact", "contact patches of one wheelset pose");
+  cmd->track.add_to(sub);
+  cmd->contact.add_to(sub);
+  sub->add_option("--y-mm", cmd->y_mm, "lateral shift of the wheelset (+ towards the left rail)");
+  sub->add_option("--yaw-mrad", cmd->yaw_mrad, "yaw angle");
+  sub->add_option("--roll-mrad", cmd->roll_mrad, "roll angle (default: rigid contact on both rails)");
+  sub->add_option("--approach-mm", cmd->approach_mm, "push-down below rigid contact when --load-N < 0");
+  sub->add_option("--side", cmd->side, "left, right or both")->check(CLI::IsMember({"left", "right", "both"}));
+  sub->add_option("--xi", cmd->xi, "given longitudinal creepage (instead of the kinematics)");
+  sub->add_option("--eta", cmd->eta, "given lateral creepage");
+  sub->add_option("--phi-per-m", cmd->phi_per_m, "given spin creepage [1/m]");
+  sub->add_flag("--json", cmd->json, "machine-readable output");
+  sub->callback([cmd]() { cmd->run(); });
+}
+
+}  // namespace conforma::cli

@@ -1,0 +1,100 @@
+// conforma sweep: the wheelset over a lateral sweep (the default main job: S1002 on 60E1 at 1:40), one row per
+// contact patch of the chosen wheel, for one or more models; --csv for a machine-readable table.
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "cli_setup.hpp"
+#include "commands.hpp"
+#include "conforma/error.hpp"
+#include "report_json.hpp"
+
+namespace conforma::cli {
+
+namespace {
+struct SweepCommand {
+  TrackArgs track;
+  ContactArgs contact;
+  double from_mm = -8.0, to_mm = 10.0, step_mm = 1.0, yaw_per_y_mrad_per_mm = 0.0;
+  std::string models = "hertz,kp,conformal";
+  std::string side = "left";
+  bool csv = false;
+
+  void run() {
+    require_positive(step_mm, "--step-mm");
+    if (to_mm < from_mm) throw InputError("option --to-mm must be >= --from-mm");
+    const auto geometry = track.make_geometry();
+    std::vector<std::string> names;
+    std::stringstream ss(models);
+    for (std::string m; std::getline(ss, m, ',');) {
+      ParseContactModel(m);  // validates
+      names.push_back(m);
+    }
+    const Side s = side == "right" ? Side::Right : Side::Left;
+    const double r0 = geometry->setup().nominal_radius_m[0];
+    if (csv) {
+      std::cout << "model,y_mm,yaw_mrad,delta_r_mm,patch,y_cp_rail_mm,contact_angle_rad,rolling_radius_mm,fn_N,pmax_MPa,"
+                   "area_mm2,width_mm,alpha_c_deg,is_conformal,fx_N,fy_N,mz_Nm\n";
+    } else {
+      std::cout << "conforma sweep: wheel " << track.wheel << " on rail " << track.rail << " ("
+                << (track.inclination.empty() ? "default inclination" : track.inclination) << "), " << side
+                << " wheel, " << contact.load_N * 1e-3 << " kN, V = " << contact.speed_m_s << " m/s, mu = "
+                << contact.friction << "\n";
+    }
+    WheelsetPose guess;
+    for (int k = 0; from_mm + k * step_mm <= to_mm + 1e-9; ++k) {
+      const double y_mm = from_mm + k * step_mm, yaw_mrad = yaw_per_y_mrad_per_mm * y_mm;
+      const EquilibriumResult eq = geometry->SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3, guess);
+      if (eq.status == EquilibriumStatus::NoContact) {
+        if (!csv) std::cout << "y = " << y_mm << " mm: no rigid contact\n";
+        continue;
+      }
+      guess = eq.pose;
+      if (!csv) {
+        char head[160];
+        std::snprintf(head, sizeof head, "\ny = %+.2f mm, yaw = %.2f mrad, roll = %.4f mrad, delta_r = %.4f mm\n", y_mm,
+                      yaw_mrad, eq.pose.roll_rad * 1e3, eq.rolling_radius_difference_m * 1e3);
+        std::cout << head;
+        PrintPatchTableHeader(std::cout);
+      }
+      for (const std::string& name : names) {
+        ContactArgs c = contact;
+        c.model = name;
+        const WheelsetVelocity velocity{contact.speed_m_s, 0.0, 0.0, contact.speed_m_s / r0};
+        const WheelContactReport r = SolveWheelContact(*geometry, s, eq.pose, velocity, c.options());
+        if (r.patches.empty() && !csv) std::cout << std::string(8 - std::min<size_t>(8, name.size()), ' ') << name
+                                                 << ": " << to_string(r.status) << "\n";
+        int j = 0;
+        for (const PatchReport& p : r.patches) {
+          if (csv) {
+            std::cout << name << ',' << y_mm << ',' << yaw_mrad << ',' << eq.rolling_radius_difference_m * 1e3 << ','
+                      << j++ << ',' << p.y_contact_rail_m * 1e3 << ',' << p.contact_angle_rad << ','
+                      << p.rolling_radius_m * 1e3 << ',' << p.fn_N << ',' << p.pmax_Pa * 1e-6 << ','
+                      << p.area_m2 * 1e6 << ',' << p.width_m * 1e3 << ',' << p.alpha_c_deg << ',' << p.is_conformal
+                      << ',' << p.fx_N << ',' << p.fy_N << ',' << p.mz_Nm << '\n';
+          } else {
+            PrintPatchRow(std::cout, name, p);
+          }
+        }
+      }
+    }
+  }
+};
+}  // namespace
+
+void RegisterSweepCommand(CLI::App& app) {
+  auto cmd = std::make_shared<SweepCommand>();
+  CLI::App* sub = app.add_subcommand("sweep", "lateral sweep of a wheelset: contact patches per model");
+  cmd->track.add_to(sub);
+  cmd->contact.add_to(sub);
+  sub->add_option("--from-mm", cmd->from_mm, "first lateral shift");
+  sub->add_option("--to-mm", cmd->to_mm, "last lateral shift");
+  sub->add_option("--step-mm", cmd->step_mm, "step of the lateral shift");
+  sub->add_option("--yaw-per-y", cmd->yaw_per_y_mrad_per_mm, "yaw angle per lateral shift [mrad/mm]");
+  sub->add_option("--models", cmd->models, "comma-separated models (hertz,kp,kpec,conformal,reference)");
+  sub->add_option("--side", cmd->side, "left or right wheel")->check(CLI::IsMember({"left", "right"}));
+  sub->add_flag("--csv", cmd->csv, "CSV table instead of the report");
+  sub->callback([cmd]() { cmd->run(); });
+}
+
+}  // namespace conforma::cli

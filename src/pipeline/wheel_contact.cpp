@@ -1,0 +1,371 @@
+// One wheel's contact from pose to per-patch forces (wheel_contact.hpp).
+#include "conforma/wheel_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "conforma/bem_reference.hpp"
+#include "conforma/curved_fastsim.hpp"
+#include "conforma/error.hpp"
+#include "conforma/hertz.hpp"
+#include "conforma/kik_piotrowski.hpp"
+#include "conforma/local_creepage.hpp"
+#include "pipeline/wheel_motion.hpp"
+
+namespace conforma {
+
+const char* to_string(ContactModel model) {
+  switch (model) {
+    case ContactModel::Hertz: return "hertz";
+    case ContactModel::Kp: return "kp";
+    case ContactModel::Kpec: return "kpec";
+    case ContactModel::Conformal: return "conformal";
+    case ContactModel::Reference: return "reference";
+  }
+  return "?";
+}
+
+ContactModel ParseContactModel(const std::string& name) {
+  for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal,
+                         ContactModel::Reference})
+    if (name == to_string(m)) return m;
+  throw InputError("unknown contact model '" + name + "' (expected hertz, kp, kpec, conformal or reference)");
+}
+
+const char* to_string(WheelContactStatus status) {
+  switch (status) {
+    case WheelContactStatus::Ok: return "ok";
+    case WheelContactStatus::NoContact: return "no_contact";
+    case WheelContactStatus::NotConverged: return "not_converged";
+  }
+  return "?";
+}
+
+void WheelContactOptions::validate() const {
+  material.validate();
+  require_non_negative(friction_coefficient, "friction_coefficient");
+  require_finite(vertical_load_N, "vertical_load_N");
+  require_positive(load_tolerance, "load_tolerance");
+  require_positive(candidate_strip_width_m, "candidate_strip_width_m");
+  require_finite(conformity_threshold_deg, "conformity_threshold_deg");
+  if (fastsim_elements < 2) throw InputError("option 'fastsim_elements' must be >= 2");
+  if (kp_strips < 3) throw InputError("option 'kp_strips' must be >= 3");
+  if (bem_x_elements < 8) throw InputError("option 'bem_x_elements' must be >= 8");
+  if (creepages_given) {
+    require_finite(creepages.longitudinal, "creepages.xi");
+    require_finite(creepages.lateral, "creepages.eta");
+    require_finite(creepages.spin_per_m, "creepages.phi_per_m");
+  }
+}
+
+namespace {
+
+// The normal solution of one patch at one approach, whatever the model.
+struct NormalSolution {
+  bool in_contact = false;
+  std::string status;
+  double fn_N = 0.0, fs_N = 0.0;  // on the wheel, along n0 and t0 (reference frame of the patch)
+  double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0, width_m = 0.0, length_m = 0.0;
+  double a_m = 0.0, b_m = 0.0;  // Hertz only
+  double alpha_c_deg = 0.0;
+  bool is_conformal = false;
+  KpResult kp;  // KP models
+};
+
+struct PatchFrame {  // patch reference frame in the side frame (x, eta, z)
+  Eigen::Vector3d normal, tangent;
+};
+
+PatchFrame FrameOf(const PatchGeometry& patch) {
+  const Eigen::Vector2d n = patch.reference_normal.normalized();
+  // t0 = n turned by -90 deg in the rail-profile plane: +eta (field side) for a vertical normal (curved_fastsim.hpp)
+  return {Eigen::Vector3d(0.0, n.x(), n.y()), Eigen::Vector3d(0.0, n.y(), -n.x())};
+}
+
+KpOptions KpOptionsFor(const WheelContactOptions& o) {
+  KpOptions k = o.model == ContactModel::Kpec        ? KpecOptions(o.material)
+                : o.model == ContactModel::Conformal ? ConformalKpOptions(o.material)
+                                                     : PlanarKpOptions(o.material);
+  k.strips_across_contact = o.kp_strips;
+  k.conformity_threshold_deg = o.conformity_threshold_deg;
+  return k;
+}
+
+// Hertz at the smallest rigid gap inside the candidate's region.
+NormalSolution SolveHertzPatch(const RigidContactPoint& point, double approach_m, const Material& material) {
+  NormalSolution out;
+  if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
+  const HertzResult h = SolveHertzForApproach(point.hertz_A_per_m, point.hertz_B_per_m, approach_m, material);
+  out.status = to_string(h.status);
+  if (h.status != HertzStatus::Ok) return out;
+  out.in_contact = true;
+  out.fn_N = h.normal_force_N;
+  out.pmax_Pa = out.p0_Pa = h.p0_Pa;
+  out.a_m = h.a_m;
+  out.b_m = h.b_m;
+  out.area_m2 = M_PI * h.a_m * h.b_m;
+  out.width_m = 2.0 * h.b_m;
+  out.length_m = 2.0 * h.a_m;
+  return out;
+}
+
+NormalSolution SolveKpPatch(const PatchGeometry& patch, double approach_m, const KpOptions& kp_options) {
+  NormalSolution out;
+  if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
+  out.kp = SolveKikPiotrowskiForApproach(patch, approach_m, kp_options);
+  const KpResult& r = out.kp;
+  out.status = to_string(r.status);
+  if (r.status != KpStatus::Ok && r.status != KpStatus::ContactAtPatchBoundary) return out;
+  out.in_contact = r.fn_N > 0.0;
+  out.fn_N = r.force_on_wheel_N.y();
+  out.fs_N = r.force_on_wheel_N.x();
+  out.pmax_Pa = r.pmax_Pa;
+  out.p0_Pa = r.p0_Pa;
+  out.area_m2 = r.area_m2;
+  out.width_m = r.width_m;
+  out.length_m = r.length_m;
+  out.alpha_c_deg = r.alpha_c_deg;
+  out.is_conformal = r.is_conformal;
+  return out;
+}
+
+NormalSolution SolveReferencePatch(const PatchGeometry& patch, double approach_m, const WheelContactOptions& o) {
+  NormalSolution out;
+  if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
+  BemOptions b;
+  b.influence = BemInfluence::Blanco;
+  b.control = BemLoadControl::Approach;
+  b.approach_m = approach_m;
+  b.x_elements = o.bem_x_elements;
+  b.tolerance = 1e-9;
+  const BemResult r = SolveBemNormal(patch, o.material, b);
+  out.status = r.status == BemStatus::Converged ? "ok" : r.status == BemStatus::NoContact ? "no_contact" : "not_converged";
+  if (r.status == BemStatus::NoContact) return out;
+  out.in_contact = r.normal_force_reference_N > 0.0;
+  out.fn_N = r.normal_force_reference_N;
+  out.pmax_Pa = out.p0_Pa = r.max_pressure_Pa;
+  out.area_m2 = r.contact_area_m2;
+  out.width_m = r.contact_width_s_m;
+  out.length_m = r.contact_length_x_m;
+  return out;
+}
+
+// Root of f on [lo, hi] with f(lo) < 0 < f(hi) (Illinois false position, then bisection safeguard).
+double SolveMonotone(const std::function<double(double)>& f, double lo, double hi, double flo, double fhi,
+                     double tolerance_abs, int* iterations) {
+  double x = lo;
+  int side = 0;
+  for (int it = 0; it < 100; ++it) {
+    *iterations = it + 1;
+    x = (lo * fhi - hi * flo) / (fhi - flo);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const double fx = f(x);
+    if (std::fabs(fx) <= tolerance_abs || hi - lo < 1e-15) return x;
+    if (fx < 0.0) {
+      lo = x, flo = fx;
+      if (side == -1) fhi *= 0.5;
+      side = -1;
+    } else {
+      hi = x, fhi = fx;
+      if (side == 1) flo *= 0.5;
+      side = 1;
+    }
+  }
+  return x;
+}
+
+}  // namespace
+
+WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                     const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+  options.validate();
+  WheelContactReport report;
+  report.side = side;
+  report.model = options.model;
+  report.pose = pose;
+
+  // 1. Candidates: at the Hertz push-down for the load (load control) or at the given pose.
+  CandidateOptions candidate_options;
+  candidate_options.strip_width_m = options.candidate_strip_width_m;
+  const bool load_control = options.vertical_load_N >= 0.0;
+  if (load_control && options.vertical_load_N == 0.0) return report;  // unloaded wheel: no contact
+  const CandidateResult candidates =
+      load_control ? FindContactCandidatesForLoad(geometry, side, pose, options.vertical_load_N, options.material,
+                                                  candidate_options)
+                   : FindContactCandidates(geometry, side, pose, candidate_options);
+  if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return report;
+  report.pose = candidates.pose;
+  const size_t n = candidates.candidates.size();
+
+  // Hertz: the rigid contact point (smallest gap) inside each region.
+  std::vector<RigidContactPoint> hertz_points(n);
+  if (options.model == ContactModel::Hertz) {
+    const WheelContactResult rigid = geometry.RigidContact(side, candidates.pose);
+    for (size_t j = 0; j < n; ++j) {
+      const ContactCandidate& c = candidates.candidates[j];
+      hertz_points[j] = c.reference;
+      double best = 1e300;
+      for (const RigidContactPoint& p : rigid.points)
+        if (p.rail_s_m >= c.region_start_s_m && p.rail_s_m <= c.region_end_s_m && p.gap_m < best)
+          best = p.gap_m, hertz_points[j] = p;
+    }
+  }
+  std::vector<PatchFrame> frames(n);
+  for (size_t j = 0; j < n; ++j) frames[j] = FrameOf(candidates.candidates[j].patch);
+  const KpOptions kp_options = KpOptionsFor(options);
+
+  // 2. Normal problem for a vertical push `dz` beyond the candidates' pose: patch j's approach along its own
+  // reference normal grows by dz n0_z.
+  auto solve_all = [&](double dz, std::vector<NormalSolution>* out) {
+    double vertical = 0.0;
+    for (size_t j = 0; j < n; ++j) {
+      const ContactCandidate& c = candidates.candidates[j];
+      NormalSolution& s = (*out)[j];
+      if (options.model == ContactModel::Hertz) {
+        const double approach = -hertz_points[j].gap_m + dz * std::cos(hertz_points[j].contact_angle_rad);
+        s = SolveHertzPatch(hertz_points[j], approach, options.material);
+        vertical += s.fn_N * std::cos(hertz_points[j].contact_angle_rad);
+        continue;
+      }
+      const double approach = c.patch.rigid_approach_m + dz * frames[j].normal.z();
+      s = options.model == ContactModel::Reference ? SolveReferencePatch(c.patch, approach, options)
+                                                   : SolveKpPatch(c.patch, approach, kp_options);
+      vertical += s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
+    }
+    return vertical;
+  };
+  std::vector<NormalSolution> normal(n);
+  if (load_control) {
+    const double load = options.vertical_load_N;
+    auto residual = [&](double dz) { return solve_all(dz, &normal) - load; };
+    // bracket the push-down: the Hertz push-down is close, so start with a small step and expand
+    double scale = 0.0;
+    for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
+    scale = std::max(scale, 1e-6);
+    double lo = -scale, hi = 0.25 * scale;
+    double flo = residual(lo), fhi = residual(hi);
+    for (int k = 0; k < 40 && fhi < 0.0; ++k) { lo = hi, flo = fhi; hi += scale * std::pow(2.0, k); fhi = residual(hi); }
+    for (int k = 0; k < 40 && flo > 0.0; ++k) { hi = lo, fhi = flo; lo -= scale * std::pow(2.0, k); flo = residual(lo); }
+    if (flo > 0.0 || fhi < 0.0) {
+      report.status = WheelContactStatus::NotConverged;
+      return report;
+    }
+    const double dz = SolveMonotone(residual, lo, hi, flo, fhi, options.load_tolerance * load, &report.load_iterations);
+    const double final_residual = residual(dz);  // leaves `normal` at the solution
+    report.pose.vertical_m -= dz;
+    if (std::fabs(final_residual) > 10.0 * options.load_tolerance * load) report.status = WheelContactStatus::NotConverged;
+  } else {
+    solve_all(0.0, &normal);
+  }
+
+  // 3. Creepages and the tangential problem, patch by patch.
+  const RigidBodyMotion motion = WheelMotionInSideFrame(geometry, side, report.pose, velocity);
+  const bool kinematics = !options.creepages_given;
+  for (size_t j = 0; j < n; ++j) {
+    const NormalSolution& s = normal[j];
+    if (!s.in_contact) continue;
+    const ContactCandidate& c = candidates.candidates[j];
+    const RigidContactPoint& point = options.model == ContactModel::Hertz ? hertz_points[j] : c.reference;
+    PatchReport p;
+    p.normal_status = s.status;
+    p.fn_N = s.fn_N;
+    p.pmax_Pa = s.pmax_Pa;
+    p.p0_Pa = s.p0_Pa;
+    p.area_m2 = s.area_m2;
+    p.width_m = s.width_m;
+    p.length_m = s.length_m;
+    p.a_m = s.a_m;
+    p.b_m = s.b_m;
+    p.alpha_c_deg = s.alpha_c_deg;
+    p.is_conformal = s.is_conformal;
+    p.contact_angle_rad = options.model == ContactModel::Hertz ? point.contact_angle_rad : c.patch.contact_angle_rad;
+    p.y_contact_rail_m = c.patch.reference_point_m.x();
+    p.z_contact_rail_m = c.patch.reference_point_m.y();
+    p.y_contact_wheel_m = point.wheel_profile_m.x();
+    p.rolling_radius_m = point.rolling_radius_m;
+    p.lead_m = point.lead_m;
+    p.approach_m = options.model == ContactModel::Hertz ? -point.gap_m : c.patch.rigid_approach_m;
+    if (options.model != ContactModel::Hertz && s.kp.status != KpStatus::NoContact) p.approach_m = s.kp.approach_m;
+    Creepages cr = options.creepages;
+    if (kinematics) {
+      if (velocity.forward_speed_m_s <= 0.0) throw InputError("forward speed must be > 0 to compute creepages");
+      cr = ComputeCreepages(geometry, side, report.pose, velocity, point.wheel_point_m, p.contact_angle_rad);
+    }
+    p.xi = cr.longitudinal;
+    p.eta = cr.lateral;
+    p.phi_per_m = cr.spin_per_m;
+    const FastsimCreepages creep{cr.longitudinal, cr.lateral, cr.spin_per_m};
+    const bool has_creepage = creep.xi != 0.0 || creep.eta != 0.0 || creep.phi_per_m != 0.0;
+    p.tangential_status = "not_solved";
+    if (options.solve_tangential && !has_creepage) p.tangential_status = "no_creepage";  // nothing to solve
+    if (options.solve_tangential && has_creepage) {
+      if (options.model == ContactModel::Hertz) {
+        FastsimHertzInput in;
+        in.a_m = s.a_m;
+        in.b_m = s.b_m;
+        in.normal_force_N = s.fn_N;
+        in.creepages = creep;
+        in.friction_coefficient = options.friction_coefficient;
+        in.material = options.material;
+        in.nx = in.ny = options.fastsim_elements;
+        in.rolling_speed_m_per_s = velocity.forward_speed_m_s;
+        const FastsimResult t = SolveFastsimHertz(in, options.fastsim);
+        p.tangential_status = to_string(t.status);
+        p.fx_N = t.fx_N;
+        p.fy_N = t.fy_N;
+        p.mz_Nm = t.mz_Nm;
+        p.adhesion_area_m2 = t.adhesion_area_m2;
+        p.slip_area_m2 = t.slip_area_m2;
+        p.frictional_power_W = t.frictional_power_W;
+      } else if (options.model != ContactModel::Reference) {
+        CurvedFastsimOptions co;
+        co.elements_per_strip = options.fastsim_elements;
+        co.marching = options.fastsim.marching;
+        co.load_N = s.kp.fn_surface_N;
+        CurvedFastsimResult t;
+        if (options.model == ContactModel::Conformal) {
+          CurvedFastsimInput in;
+          in.friction = FrictionLaw::Constant(options.friction_coefficient);
+          in.material = options.material;
+          in.rolling_speed_m_per_s = velocity.forward_speed_m_s;
+          if (kinematics) {
+            PatchReferenceFrame ref;
+            ref.point_m = Eigen::Vector3d(0.0, geometry.rail_origin_eta_m(side) + c.patch.reference_point_m.x(),
+                                          c.patch.reference_point_m.y());
+            ref.tangent = frames[j].tangent;
+            ref.normal = frames[j].normal;
+            in.strip_creepages = StripCreepagesFromKinematics(motion, ref, s.kp);
+          } else {
+            in.strip_creepages = {creep};
+          }
+          t = SolveCurvedFastsim(s.kp, in, co);
+        } else {
+          t = SolveFastsimOnKpPatch(s.kp, creep, FrictionLaw::Constant(options.friction_coefficient),
+                                    options.material, co);
+        }
+        p.tangential_status = to_string(t.status);
+        p.fx_N = t.force_reference_N.x();
+        p.fy_N = t.force_reference_N.y();
+        p.mz_Nm = t.moment_reference_Nm.z();
+        p.a_m = t.sdec.a_m;
+        p.b_m = t.sdec.b_m;
+        p.adhesion_area_m2 = t.adhesion_area_m2;
+        p.slip_area_m2 = t.slip_area_m2;
+        p.frictional_power_W = t.frictional_power_W;
+      }
+    }
+    // resultant on the wheel in the side frame: normal along n0 (+ the KP lateral part along t0), creep force along t0
+    const Eigen::Vector3d force = (p.fn_N) * frames[j].normal + (s.fs_N + p.fy_N) * frames[j].tangent;
+    p.vertical_force_N = force.z();
+    p.lateral_force_N = force.y();
+    report.vertical_force_N += p.vertical_force_N;
+    report.lateral_force_N += p.lateral_force_N;
+    report.patches.push_back(p);
+  }
+  if (report.status != WheelContactStatus::NotConverged)
+    report.status = report.patches.empty() ? WheelContactStatus::NoContact : WheelContactStatus::Ok;
+  return report;
+}
+
+}  // namespace conforma
