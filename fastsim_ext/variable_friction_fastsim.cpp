@@ -14,19 +14,57 @@ namespace conforma {
 
 namespace {
 
-// Smallest-from-adhesion root of g(gamma) = gamma - K (|p_trial| - mu(gamma) p_n) on [0, K |p_trial|], where
-// g(0) < 0 (the element is in slip) and g(K |p_trial|) = K mu p_n >= 0. Safeguarded Newton from gamma = 0.
-double SolveElementSlip(const FrictionLaw& law, double K, double trial, double p_n) {
-  double lo = 0.0, hi = K * trial;
-  double gamma = 0.0;
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    const double g = gamma - K * (trial - law(gamma) * p_n);
-    if (g < 0.0) lo = gamma; else hi = gamma;
-    if (std::abs(g) <= 1e-15 * (K * trial) || hi - lo <= 1e-15 * (K * trial)) break;
-    const double slope = 1.0 + K * p_n * law.derivative(gamma);
-    double next = slope > 0.0 ? gamma - g / slope : 0.5 * (lo + hi);
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // keep inside the bracket
-    gamma = next;
+// Slip modulus of a slip element (paper 002 eq. 5, Gimenez et al.: the traction of the previous element is taken at
+// the friction level of this one, i.e. the elastic slip is mu(gamma) L dp_n/dx, not the derivative of mu along x):
+//   p_trial(gamma) = r(gamma) p_prev - L^-1 w h,   r = mu(gamma) / mu_prev (1 when the previous element adhered)
+//   p(gamma) = mu(gamma) p_n p_trial / |p_trial|,  s(gamma) = L (p - p_trial) / h,   gamma = |s(gamma)|.
+// F(gamma) = gamma - |s(gamma)| has F(0) <= 0 and F -> +inf: a bracket by doubling, then regula falsi (Illinois).
+struct ElementSlip {
+  double px_prev, py_prev, mu_prev;  // mu_prev <= 0: the previous traction is not at a friction bound
+  double wx, wy;                     // L^-1 w h (traction increment of the rigid slip)
+  double L1, L2, h, p_n;
+  const FrictionLaw* law;
+  double Residual(double gamma, double* px, double* py) const {
+    const double mu = (*law)(gamma);
+    const double ratio = mu_prev > 0.0 ? mu / mu_prev : 1.0;
+    const double tx = ratio * px_prev - wx, ty = ratio * py_prev - wy;
+    const double magnitude = std::hypot(tx, ty);
+    const double scale = magnitude > 0.0 ? mu * p_n / magnitude : 0.0;
+    *px = tx * scale;
+    *py = ty * scale;
+    return gamma - std::hypot(L1 * (*px - tx), L2 * (*py - ty)) / h;
+  }
+};
+
+double SolveElementSlip(const ElementSlip& e, double guess) {
+  double px, py;
+  double lo = 0.0, f_lo = e.Residual(0.0, &px, &py);
+  if (f_lo >= 0.0) return 0.0;
+  double hi = std::max(guess, 1e-12), f_hi = e.Residual(hi, &px, &py);
+  for (int i = 0; i < 200 && f_hi < 0.0; ++i) {
+    lo = hi;
+    f_lo = f_hi;
+    hi *= 2.0;
+    f_hi = e.Residual(hi, &px, &py);
+  }
+  int side = 0;
+  double gamma = hi;
+  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
+    gamma = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(gamma > lo && gamma < hi)) gamma = 0.5 * (lo + hi);
+    const double f = e.Residual(gamma, &px, &py);
+    if (f == 0.0) break;
+    if (f < 0.0) {
+      lo = gamma;
+      f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = gamma;
+      f_hi = f;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
   }
   return gamma;
 }
@@ -57,7 +95,7 @@ void SolveFastsimStripsVariableFriction(const FastsimPatch& patch, const Fastsim
     const double dx = (strip.x_lead_m - strip.x_trail_m) / strip.n_elements;
     const double area = dx * strip.width_m;
     const double increment_x = xi_L1 - phi_L3 * y;
-    double px = 0.0, py = 0.0, x_prev = strip.x_lead_m;
+    double px = 0.0, py = 0.0, x_prev = strip.x_lead_m, gamma_prev = 0.0;
     for (int i = 0; i < strip.n_elements; ++i) {
       const int e = strip.first_element + i;
       const double x_centre = strip.x_lead_m - (i + 0.5) * dx;
@@ -67,18 +105,26 @@ void SolveFastsimStripsVariableFriction(const FastsimPatch& patch, const Fastsim
       const double py_trial = py - (eta_L2 + phi_L3 * x_mid) * h;
       const double p_n = patch.bound_pressure_Pa[e];
       const double magnitude2 = px_trial * px_trial + py_trial * py_trial;
-      const double static_limit = mu_static * p_n;
+      // Without recuperation of static friction (paper 002 §2.1, Piotrowski): the adhesion test uses mu at the slip
+      // of the previous element of the strip (mu(0), the static value, at the leading edge and after adhesion).
+      const double mu_prev = gamma_prev > 0.0 ? law(gamma_prev) : mu_static;
+      const double limit = mu_prev * p_n;
       double sx = 0.0, sy = 0.0;
       unsigned char slipping = 0;
-      if (magnitude2 > static_limit * static_limit && h > 0.0) {  // paper 002 §2.1: slip element
-        const double trial = std::sqrt(magnitude2);
-        const double K = std::hypot(L1 * px_trial, L2 * py_trial) / (h * trial);
-        const double gamma = SolveElementSlip(law, K, trial, p_n);
-        const double scale = law(gamma) * p_n / trial;
-        px = px_trial * scale;
-        py = py_trial * scale;
-        sx = L1 * (px - px_trial) / h;
-        sy = L2 * (py - py_trial) / h;
+      if (magnitude2 > limit * limit && h > 0.0) {  // slip element
+        const ElementSlip element{px, py, gamma_prev > 0.0 ? mu_prev : -1.0, px - px_trial, py - py_trial,
+                                  L1, L2, h, p_n, &law};
+        const double gamma = SolveElementSlip(element, std::hypot(L1 * (px - px_trial), L2 * (py - py_trial)) / h);
+        double ptx, pty;
+        const double mu = law(gamma);
+        const double ratio = gamma_prev > 0.0 ? mu / mu_prev : 1.0;
+        element.Residual(gamma, &ptx, &pty);  // traction at the solved slip
+        const double tx = ratio * px - (px - px_trial), ty = ratio * py - (py - py_trial);
+        px = ptx;
+        py = pty;
+        sx = L1 * (px - tx) / h;
+        sy = L2 * (py - ty) / h;
+        gamma_prev = gamma > 0.0 ? gamma : 1e-300;
         slipping = 1;
         slip_area += area;
         power += std::abs(px * sx + py * sy) * area;
@@ -86,6 +132,7 @@ void SolveFastsimStripsVariableFriction(const FastsimPatch& patch, const Fastsim
         px = px_trial;
         py = py_trial;
         adhesion += area;
+        gamma_prev = 0.0;
       }
       r.px_Pa[e] = px;
       r.py_Pa[e] = py;

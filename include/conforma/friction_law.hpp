@@ -49,13 +49,15 @@ struct FrictionLaw {
 FastsimFlexibilities ReducedFlexibilities(const FastsimFlexibilities& flexibilities, double slope_reduction);
 
 // Variable-friction FASTSIM on a strip patch (paper 002 §2.1, physics-reference §7.2). Same marching, patch,
-// creepage and sign conventions as SolveFastsimStrips; the only difference is the traction bound: an element is
-// in adhesion when the trial traction satisfies |p_trial| <= mu(0) p_n; otherwise its slip modulus gamma solves
-// the element equation (slip s = L (p - p_trial) / h componentwise, p = mu(gamma) p_n p_trial / |p_trial|)
-//     gamma = K (|p_trial| - mu(gamma) p_n),   K = |(L1 p_trial_x, L2 p_trial_y)| / (h |p_trial|)
-// by safeguarded Newton from gamma = 0 on the bracket [0, K |p_trial|] (the root reached from the adhesion side,
-// i.e. without recuperation of static friction inside one element). A constant law gives exactly the core's answer.
-// patch.friction_coefficient must be empty (the law replaces it).
+// creepage and sign conventions as SolveFastsimStrips; only the traction bound differs:
+//  * adhesion test without recuperation of static friction (Piotrowski): |p_trial| <= mu(gamma_prev) p_n with
+//    gamma_prev the slip of the previous element of the strip (0, i.e. the static mu(0), at the leading edge and
+//    after an adhesion element);
+//  * slip elements: the slip modulus gamma solves gamma = |s(gamma)| with the slip of paper 002 eq. 5 (Gimenez et
+//    al.): the previous traction is taken at the friction level of this element (p_prev mu(gamma)/mu_prev), so the
+//    elastic part of the slip is mu(gamma) L dp_n/dx and falling laws do not run into the stick-slip branch;
+//    p = mu(gamma) p_n p_trial / |p_trial|, s = L (p - p_trial) / h; regula falsi on a doubling bracket.
+// A constant law gives the core's answer (to rounding). patch.friction_coefficient must be empty.
 void SolveFastsimStripsVariableFriction(const FastsimPatch& patch, const FastsimFlexibilities& flexibilities,
                                         const FastsimCreepages& creepages, const FrictionLaw& law,
                                         double rolling_speed_m_per_s, const FastsimOptions& options,
