@@ -28,12 +28,13 @@ double WheelsetTrackGeometry::VerticalGapAt(Side side, const Frame& f, double y_
 
 // Local minima of the vertical gap z_wheel(eta) - z_rail(eta) along the wheel silhouette.
 static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f,
-                            std::vector<VerticalMinimum>* out) {
+                            double window, std::vector<VerticalMinimum>* out) {
   out->clear();
   const double y_begin = g.WheelTableBegin(side), y_end = g.WheelTableEnd(side);
   const double eta_lo = g.RailTableBegin(side), eta_hi = g.RailTableEnd(side);
-  const double step = g.options().scan_spacing_m;
-  const int n = static_cast<int>(std::floor((y_end - y_begin) / step)) + 1;
+  const double table_h = g.WheelTable(side).h;
+  const double step = table_h * std::max(1L, std::lround(g.options().scan_spacing_m / table_h));
+  const int n = static_cast<int>(std::floor((y_end - y_begin) / step + 1e-9)) + 1;
   constexpr double inf = std::numeric_limits<double>::infinity();
   auto vgap = [&](double y_w, double* eta) {
     Eigen::Vector3d p;
@@ -49,29 +50,69 @@ static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const Whe
   const int i_lo = std::max(0, static_cast<int>(std::floor((eta_lo - shift - margin - y_begin) / step)));
   const int i_hi = std::min(n - 1, static_cast<int>(std::ceil((eta_hi - shift + margin - y_begin) / step)));
   if (i_hi - i_lo < 2) return;
+  // coarse scan: local minima of the sampled vertical gap
+  struct Coarse { int i; double gap; };
+  std::vector<Coarse> coarse;
+  double coarse_min = inf;
+  // fast evaluation at the scan nodes: table node values directly, only eta and z of the silhouette
+  const WheelsetTrackGeometry::GraphTable& wt = g.WheelTable(side);
+  const WheelsetTrackGeometry::GraphTable& rt = g.RailTable(side);
+  const int stride = std::max(1, static_cast<int>(std::lround(step / wt.h)));
+  const double r0 = g.NominalRadius(side), b_origin = g.wheel_origin_eta_m();
+  const double inv_rh = 1.0 / rt.h, rail_last = static_cast<double>(rt.size() - 1);
+  const Eigen::Matrix3d& R = f.rotation;
+  const double k_gamma = R(0, 1) / f.rho;
+  auto node_gap = [&](int i) {
+    const size_t k = static_cast<size_t>(i) * stride;
+    if (k >= wt.size()) return inf;
+    const double r = r0 + wt.z[k], sin_gamma = k_gamma * wt.dz[k];
+    if (!(std::abs(sin_gamma) < 1.0)) return inf;
+    const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
+    const double st = f.sin_beta * cos_gamma + f.cos_beta * sin_gamma;
+    const double ct = f.cos_beta * cos_gamma - f.sin_beta * sin_gamma;
+    const double q0 = r * st, q1 = b_origin + wt.y0 + static_cast<double>(k) * wt.h, q2 = -r * ct;
+    const double eta = f.centre(1) + R(1, 0) * q0 + R(1, 1) * q1 + R(1, 2) * q2;
+    const double z = f.centre(2) + R(2, 0) * q0 + R(2, 1) * q1 + R(2, 2) * q2;
+    const double u = (eta - rt.y0) * inv_rh;
+    if (!(u >= 0.0) || u > rail_last) return inf;
+    const size_t j = std::min(static_cast<size_t>(u), rt.size() - 2);
+    const double t = u - static_cast<double>(j), t2 = t * t, t3 = t2 * t;
+    const double zr = (2 * t3 - 3 * t2 + 1) * rt.z[j] + (t3 - 2 * t2 + t) * rt.h * rt.dz[j] +
+                      (-2 * t3 + 3 * t2) * rt.z[j + 1] + (t3 - t2) * rt.h * rt.dz[j + 1];
+    return z - zr;
+  };
   double prev2 = inf, prev1 = inf;
   for (int i = i_lo; i <= i_hi + 1; ++i) {
-    const double cur = (i <= i_hi) ? vgap(y_begin + i * step, nullptr) : inf;
+    const double cur = (i <= i_hi) ? node_gap(i) : inf;
     // i-1 is a local minimum when it is finite and not above its neighbours (strictly below the left one)
     if (i - 1 >= i_lo && std::isfinite(prev1) && prev1 < prev2 && prev1 <= cur) {
-      const double yc = y_begin + (i - 1) * step;
-      const double a = std::max(y_begin, yc - step), b = std::min(y_end, yc + step);
-      auto fb = [&](double y) { return vgap(y, nullptr); };
-      auto [ym, gm] = geometry_detail::brent_minimize(fb, a, b, 1e-10);
-      VerticalMinimum m;
-      m.y_w = ym;
-      m.gap = vgap(ym, &m.eta);
-      if (std::isfinite(m.gap)) out->push_back(m);
+      coarse.push_back({i - 1, prev1});
+      coarse_min = std::min(coarse_min, prev1);
     }
     prev2 = prev1;
     prev1 = cur;
+  }
+  // Brent refinement of the minima that can be within `window` of the smallest one (the coarse samples
+  // overestimate a minimum by at most ~ curvature * step^2 / 8: 20 um covers 10 mm relative radii)
+  const double limit = coarse_min + window + 20e-6;
+  for (const Coarse& c : coarse) {
+    if (c.gap > limit) continue;
+    const double yc = y_begin + c.i * step;
+    const double a = std::max(y_begin, yc - step), b = std::min(y_end, yc + step);
+    auto fb = [&](double y) { return vgap(y, nullptr); };
+    auto [ym, gm] = geometry_detail::brent_minimize(fb, a, b, 1e-10);
+    (void)gm;
+    VerticalMinimum m;
+    m.y_w = ym;
+    m.gap = vgap(ym, &m.eta);
+    if (std::isfinite(m.gap)) out->push_back(m);
   }
 }
 
 std::vector<WheelsetTrackGeometry::VerticalGapMinimum> WheelsetTrackGeometry::VerticalGapMinima(
     Side side, const Frame& frame) const {
   std::vector<VerticalMinimum> minima;
-  vertical_minima(*this, side, frame, &minima);
+  vertical_minima(*this, side, frame, std::numeric_limits<double>::infinity(), &minima);
   std::vector<VerticalGapMinimum> out(minima.size());
   for (size_t i = 0; i < minima.size(); ++i) out[i] = {minima[i].y_w, minima[i].gap, minima[i].eta};
   return out;
@@ -81,7 +122,7 @@ bool WheelsetTrackGeometry::MinimumVerticalGap(Side side, const WheelsetPose& po
                                                double* track_y_m) const {
   const Frame f = SideFrame(side, pose);
   std::vector<VerticalMinimum> minima;
-  vertical_minima(*this, side, f, &minima);
+  vertical_minima(*this, side, f, 0.0, &minima);
   if (minima.empty()) return false;
   const auto best = std::min_element(minima.begin(), minima.end(),
                                      [](const auto& a, const auto& b) { return a.gap < b.gap; });
@@ -94,7 +135,7 @@ WheelContactResult WheelsetTrackGeometry::RigidContact(Side side, const Wheelset
   WheelContactResult result;
   const Frame f = SideFrame(side, pose);
   std::vector<VerticalMinimum> minima;
-  vertical_minima(*this, side, f, &minima);
+  vertical_minima(*this, side, f, options_.candidate_window_m, &minima);
   if (minima.empty()) return result;
   double g_min = std::numeric_limits<double>::infinity();
   for (const auto& m : minima) g_min = std::min(g_min, m.gap);
@@ -108,20 +149,45 @@ WheelContactResult WheelsetTrackGeometry::RigidContact(Side side, const Wheelset
     const double half = 0.3e-3 + 2.0 * std::abs(m.gap) * sd;
     const double a = std::max(RailTableBegin(side), m.eta - half), b = std::min(RailTableEnd(side), m.eta + half);
     double y_guess = m.y_w;
-    auto normal_gap = [&](double eta) {
+    auto normal_gap = [&](double eta, double* y_w_out) {
       double gap, yg = y_guess;
-      if (!NormalGap(side, f, eta, &yg, &gap)) return std::numeric_limits<double>::infinity();
+      if (eta < a || eta > b || !NormalGap(side, f, eta, &yg, &gap)) return std::numeric_limits<double>::infinity();
       y_guess = yg;
+      if (y_w_out) *y_w_out = yg;
       return gap;
     };
-    double eta_best = m.eta, gap_best = m.gap * std::sqrt(1 - sd * sd), y_best = m.y_w;
-    if (b > a) {
-      auto [eta_n, gap_n] = geometry_detail::brent_minimize(normal_gap, a, b, 1e-10);
+    // minimum of the normal gap: parabolic (Newton) steps on three points with a shrinking spacing,
+    // started at the vertical-gap minimum (Brent's method as a fallback when a step does not go down)
+    double eta_best = m.eta, y_best = m.y_w;
+    double gap_best = normal_gap(eta_best, &y_best);
+    bool ok = std::isfinite(gap_best);
+    double h = 0.05e-3;
+    for (int it = 0; ok && it < 8 && h > 1e-9; ++it) {
+      const double gm = normal_gap(eta_best - h, nullptr), gp = normal_gap(eta_best + h, nullptr);
+      const double curv = gm + gp - 2 * gap_best;
+      if (!std::isfinite(gm) || !std::isfinite(gp) || !(curv > 0)) { ok = false; break; }
+      const double step = std::clamp(0.5 * h * (gm - gp) / curv, -4 * h, 4 * h);
+      double y_new = y_best;
+      const double g_new = normal_gap(eta_best + step, &y_new);
+      if (!(g_new <= gap_best + 1e-15)) { ok = false; break; }
+      eta_best += step;
+      gap_best = g_new;
+      y_best = y_new;
+      h = std::max(std::min(h, 2 * std::abs(step)), 1e-9) * 0.3;
+      if (std::abs(step) < 1e-9) break;
+    }
+    if (!ok && b > a) {
+      auto fb = [&](double eta) { return normal_gap(eta, nullptr); };
+      auto [eta_n, gap_n] = geometry_detail::brent_minimize(fb, a, b, 1e-10);
       double yg = m.y_w, gap_check;
       if (std::isfinite(gap_n) && NormalGap(side, f, eta_n, &yg, &gap_check)) {
         eta_best = eta_n;
         gap_best = gap_check;
         y_best = yg;
+      } else {
+        eta_best = m.eta;
+        gap_best = m.gap * std::sqrt(1 - sd * sd);
+        y_best = m.y_w;
       }
     }
     result.points.push_back(MakeContactPoint(side, f, pose, y_best, eta_best, gap_best, m.gap));

@@ -280,26 +280,26 @@ bool WheelsetTrackGeometry::NormalGap(Side side, const Frame& f, double eta, dou
   if (!RailHeight(side, eta, &zr, &mr)) return false;
   const double nn = std::sqrt(1 + mr * mr);
   const double n_eta = -mr / nn, n_z = 1.0 / nn;
-  // intersection of the rail normal line with the silhouette: f(y_w) = (p - P) x n = 0 (secant iterations)
-  auto cross = [&](double y_w, Eigen::Vector3d* p) {
-    if (!SilhouettePoint(side, f, y_w, p)) return std::nan("");
+  // intersection of the rail normal line with the silhouette: f(y_w) = (p - P) x n = 0. Newton with the
+  // derivative of the untilted wheel, dp/dy_w ~ (1, -r') in (eta, z): exact up to the (small) roll and yaw,
+  // so the iteration converges linearly with a tiny factor; secant fallback when it stalls.
+  auto cross = [&](double y_w, Eigen::Vector3d* p, double* r_slope) {
+    if (!SilhouettePoint(side, f, y_w, p, nullptr, nullptr, r_slope)) return std::nan("");
     return ((*p)(1) - eta) * n_z - ((*p)(2) - zr) * n_eta;
   };
-  Eigen::Vector3d p0, p1;
-  double y0 = *y_w_guess, y1 = y0 + 1e-5;
-  double f0 = cross(y0, &p0), f1 = cross(y1, &p1);
-  if (!std::isfinite(f0) || !std::isfinite(f1)) return false;
-  for (int it = 0; it < 30 && std::abs(f1) > 1e-13; ++it) {
-    const double den = f1 - f0;
-    if (den == 0.0) break;
-    double y2 = y1 - f1 * (y1 - y0) / den;
-    const double step_max = 5e-3;
-    y2 = std::clamp(y2, y1 - step_max, y1 + step_max);
+  Eigen::Vector3d p1;
+  double y1 = *y_w_guess, r_slope = 0.0;
+  double f1 = cross(y1, &p1, &r_slope);
+  if (!std::isfinite(f1)) return false;
+  for (int it = 0; it < 40 && std::abs(f1) > 1e-13; ++it) {
+    double d = n_z + r_slope * n_eta;
+    if (std::abs(d) < 0.05) d = d < 0 ? -0.05 : 0.05;
+    const double y2 = y1 - std::clamp(f1 / d, -5e-3, 5e-3);
     Eigen::Vector3d p2;
-    const double f2 = cross(y2, &p2);
+    double s2;
+    const double f2 = cross(y2, &p2, &s2);
     if (!std::isfinite(f2)) return false;
-    y0 = y1; f0 = f1; p0 = p1;
-    y1 = y2; f1 = f2; p1 = p2;
+    y1 = y2; f1 = f2; p1 = p2; r_slope = s2;
   }
   if (std::abs(f1) > 1e-9) return false;
   *y_w_guess = y1;

@@ -190,6 +190,10 @@ class WheelsetTrackGeometry {
                                      double eta_rail, double gap_m, double vertical_gap_m) const;
 
   // Uniform table z(y) of a function-like profile part, cubic Hermite between nodes.
+  struct GraphTable;
+  const GraphTable& WheelTable(Side side) const { return sides_[side_index(side)].wheel; }
+  const GraphTable& RailTable(Side side) const { return sides_[side_index(side)].rail; }
+  double NominalRadius(Side side) const { return sides_[side_index(side)].nominal_radius; }
   struct GraphTable {
     double y0 = 0.0, h = 1e-4;
     std::vector<double> z, dz, kappa, s;  // value, slope, signed curvature (convex > 0), arc length
