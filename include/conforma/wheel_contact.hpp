@@ -40,11 +40,25 @@ struct WheelContactOptions {
   double candidate_strip_width_m = 0.1e-3;
   double conformity_threshold_deg = 18.0;
   bool solve_tangential = true;        // false: normal problem only
+  bool keep_fields = false;            // fill PatchReport::cells (pressure, traction, slip per element)
   FastsimOptions fastsim;              // bound and marching (hertz model)
   // When set, these creepages are used at every patch instead of the wheelset kinematics.
   bool creepages_given = false;
   Creepages creepages;
   void validate() const;  // InputError naming the option
+};
+
+// One element of a solved patch (the fields the wear computation needs).
+struct ContactCell {
+  double x_m = 0.0;            // along the track, from the wheel's diametral plane
+  double s_m = 0.0;            // along the rail profile from the patch reference point (+ towards the field side)
+  double rail_s_m = 0.0;       // arc length on the mounted rail profile
+  double wheel_y_m = 0.0;      // wheel-profile lateral coordinate facing the cell
+  double area_m2 = 0.0, length_x_m = 0.0;
+  double pressure_Pa = 0.0;
+  double traction_x_Pa = 0.0, traction_s_Pa = 0.0;  // on the wheel, local (x, s) frame
+  double slip_x = 0.0, slip_s = 0.0;                // dimensionless slip (slip velocity / V)
+  bool in_slip = false;
 };
 
 // Per patch: the keys of `conforma contact --json` (units in the names).
@@ -65,6 +79,8 @@ struct PatchReport {
   bool is_conformal = false;
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   double vertical_force_N = 0.0, lateral_force_N = 0.0;  // normal + tangential force on the wheel, side frame
+  double reference_s_on_rail_m = 0.0;        // arc length of the reference point on the mounted rail
+  std::vector<ContactCell> cells;            // only with WheelContactOptions::keep_fields
 };
 
 enum class WheelContactStatus { Ok, NoContact, NotConverged };
@@ -76,7 +92,9 @@ struct WheelContactReport {
   ContactModel model = ContactModel::Hertz;
   WheelsetPose pose;                 // the pose the patches were solved at (vertical pushed down in load control)
   std::vector<PatchReport> patches;  // ordered along the rail, gauge side first
-  double vertical_force_N = 0.0;     // sum over patches (side frame z)
+  double vertical_force_N = 0.0;     // sum over patches (side frame z), pressure and creep forces
+  // Vertical component of the pressure (normal) forces alone: what load control balances against the load.
+  double pressure_vertical_force_N = 0.0;
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side)
   int load_iterations = 0;
 };

@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterContactCommand(app);
   conforma::cli::RegisterSweepCommand(app);
   conforma::cli::RegisterProfileCommand(app);
+  conforma::cli::RegisterMbenchCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

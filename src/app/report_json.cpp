@@ -33,6 +33,7 @@ nlohmann::json ToJson(const WheelContactReport& r) {
           {"pose", {{"y_m", r.pose.lateral_m}, {"z_m", r.pose.vertical_m}, {"roll_rad", r.pose.roll_rad},
                     {"yaw_rad", r.pose.yaw_rad}}},
           {"vertical_force_N", r.vertical_force_N},
+          {"pressure_vertical_force_N", r.pressure_vertical_force_N},
           {"lateral_force_N", r.lateral_force_N},
           {"load_iterations", r.load_iterations},
           {"patches", patches}};

@@ -71,7 +71,42 @@ struct NormalSolution {
   double alpha_c_deg = 0.0;
   bool is_conformal = false;
   KpResult kp;  // KP models
+  HertzResult hertz;  // Hertz model
 };
+
+// Where a patch sits on the two profiles: patch-lateral s -> rail arc length and the wheel-profile y facing it
+// (the wheel point moves laterally with the rail point; exact for a wheelset without roll, O(roll) otherwise).
+struct ProfileMapping {
+  const Profile* rail = nullptr;
+  double rail_s_ref = 0.0, rail_y_ref = 0.0, wheel_y_ref = 0.0;
+  ProfileMapping(const Profile& mounted_rail, double rail_s, double wheel_y)
+      : rail(&mounted_rail), rail_s_ref(rail_s), rail_y_ref(mounted_rail.position(rail_s).x()), wheel_y_ref(wheel_y) {}
+  double rail_s(double s) const { return rail_s_ref + s; }
+  double wheel_y(double s) const { return wheel_y_ref + rail->position(rail_s_ref + s).x() - rail_y_ref; }
+};
+
+// Cells of a FASTSIM field; dx of element e = area / strip width (strip_width(e)), pressure from the normal solver.
+template <class StripWidth, class Pressure>
+std::vector<ContactCell> CellsOf(const FastsimResult& f, const ProfileMapping& map, double x_shift, StripWidth strip_width,
+                                 Pressure pressure) {
+  std::vector<ContactCell> cells(f.x_m.size());
+  for (size_t e = 0; e < cells.size(); ++e) {
+    ContactCell& c = cells[e];
+    c.x_m = f.x_m[e] + x_shift;
+    c.s_m = f.y_m[e];
+    c.rail_s_m = map.rail_s(c.s_m);
+    c.wheel_y_m = map.wheel_y(c.s_m);
+    c.area_m2 = f.area_m2[e];
+    c.length_x_m = f.area_m2[e] / strip_width(e);
+    c.pressure_Pa = pressure(f.x_m[e], f.y_m[e]);
+    c.traction_x_Pa = f.px_Pa[e];
+    c.traction_s_Pa = f.py_Pa[e];
+    c.slip_x = f.sx[e];
+    c.slip_s = f.sy[e];
+    c.in_slip = f.in_slip[e] != 0;
+  }
+  return cells;
+}
 
 struct PatchFrame {  // patch reference frame in the side frame (x, eta, z)
   Eigen::Vector3d normal, tangent;
@@ -100,6 +135,7 @@ NormalSolution SolveHertzPatch(const RigidContactPoint& point, double approach_m
   out.status = to_string(h.status);
   if (h.status != HertzStatus::Ok) return out;
   out.in_contact = true;
+  out.hertz = h;
   out.fn_N = h.normal_force_N;
   out.pmax_Pa = out.p0_Pa = h.p0_Pa;
   out.a_m = h.a_m;
@@ -283,6 +319,7 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     p.y_contact_rail_m = c.patch.reference_point_m.x();
     p.z_contact_rail_m = c.patch.reference_point_m.y();
     p.y_contact_wheel_m = point.wheel_profile_m.x();
+    p.reference_s_on_rail_m = options.model == ContactModel::Hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m;
     p.rolling_radius_m = point.rolling_radius_m;
     p.lead_m = point.lead_m;
     p.approach_m = options.model == ContactModel::Hertz ? -point.gap_m : c.patch.rigid_approach_m;
@@ -318,6 +355,12 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
         p.adhesion_area_m2 = t.adhesion_area_m2;
         p.slip_area_m2 = t.slip_area_m2;
         p.frictional_power_W = t.frictional_power_W;
+        if (options.keep_fields) {
+          const ProfileMapping map(geometry.mounted_rail(side), point.rail_s_m, point.wheel_profile_m.x());
+          const double dy = 2.0 * s.b_m / in.ny;
+          p.cells = CellsOf(t, map, point.lead_m, [dy](size_t) { return dy; },
+                            [&s](double x, double y) { return HertzPressure(s.hertz, x, y); });
+        }
       } else if (options.model != ContactModel::Reference) {
         CurvedFastsimOptions co;
         co.elements_per_strip = options.fastsim_elements;
@@ -353,6 +396,16 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
         p.adhesion_area_m2 = t.adhesion_area_m2;
         p.slip_area_m2 = t.slip_area_m2;
         p.frictional_power_W = t.frictional_power_W;
+        if (options.keep_fields) {
+          const ProfileMapping map(geometry.mounted_rail(side), c.patch.reference_s_on_rail_m, point.wheel_profile_m.x());
+          std::vector<double> width(t.field.x_m.size());
+          for (size_t k = 0; k < s.kp.strips.size() && k < t.strip_first_element.size(); ++k) {
+            const size_t end = k + 1 < t.strip_first_element.size() ? t.strip_first_element[k + 1] : width.size();
+            for (size_t e = t.strip_first_element[k]; e < end; ++e) width[e] = s.kp.strips[k].ds_m;
+          }
+          p.cells = CellsOf(t.field, map, 0.0, [&width](size_t e) { return width[e]; },
+                            [&s](double x, double y) { return KpPressureAt(s.kp, x, y); });
+        }
       }
     }
     // resultant on the wheel in the side frame: normal along n0 (+ the KP lateral part along t0), creep force along t0
@@ -360,6 +413,9 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     p.vertical_force_N = force.z();
     p.lateral_force_N = force.y();
     report.vertical_force_N += p.vertical_force_N;
+    report.pressure_vertical_force_N +=
+        options.model == ContactModel::Hertz ? s.fn_N * std::cos(point.contact_angle_rad)
+                                             : s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
     report.lateral_force_N += p.lateral_force_N;
     report.patches.push_back(p);
   }

@@ -1,0 +1,49 @@
+#pragma once
+// Manchester contact benchmark, left wheel (CONTACT reference results, shared data
+// reference/contact_mbench_a22_left.csv): new S1002 on UIC60 canted 1:40, gauge 1435 mm at 14 mm, flange-back
+// distance 1360 mm, r0 = 460 mm, G = 82 GPa, nu = 0.28, mu = 0.3, 10 kN vertical load, 2 m/s, y = 0:0.5:10 mm,
+// yaw = 2.4 y mrad, roll per case from the file.
+//
+// Mapping to CONTACT's frames (tests/test_manchester_geometry.cpp): wheelset y_ours = -y_ws, yaw_ours = -yaw,
+// roll identical; y_cp_rail = -y_ours (rail profile),
+// delta_cp = delta_ours, creepages identical; CONTACT's fx/fs have the signs of our forces on the wheel.
+#include <string>
+#include <vector>
+
+#include "conforma/wheel_contact.hpp"
+
+namespace conforma {
+
+struct ManchesterReferenceCase {
+  int id = 0;
+  double y_ws_mm = 0.0, yaw_mrad = 0.0, roll_rad = 0.0;
+  double y_cp_rail_mm = 0.0, delta_cp_rad = 0.0;
+  double fn_N = 0.0, fx_N = 0.0, fs_N = 0.0, mn_Nmm = 0.0;
+  double xi = 0.0, eta = 0.0, phi_per_mm = 0.0;
+  double p_max_MPa = 0.0, area_mm2 = 0.0;
+};
+
+// Reads the CSV (InputError naming the file and line on malformed content).
+std::vector<ManchesterReferenceCase> ReadManchesterReference(const std::string& path);
+
+struct ManchesterComparison {
+  ManchesterReferenceCase reference;
+  WheelContactReport report;  // left wheel
+  // main patch (largest normal force) against the reference, relative errors unless stated
+  double fn_N = 0.0, pmax_MPa = 0.0, area_mm2 = 0.0, fx_N = 0.0, fs_N = 0.0, y_cp_mm = 0.0, delta_rad = 0.0;
+  double err_fn = 0.0, err_pmax = 0.0, err_area = 0.0;
+  double err_fx_N = 0.0, err_fs_N = 0.0;  // absolute [N]
+  int patches = 0;
+};
+
+struct ManchesterOptions {
+  ContactModel model = ContactModel::Conformal;
+  bool creepages_from_file = true;  // use each case's xi, eta, phi (as the issue asks); else the kinematics
+  int fastsim_elements = 30;
+};
+
+// Runs every case (profiles from the shared data folder `shared_data_dir`); cases are independent and run in
+// parallel with OpenMP (results identical for any thread count).
+std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_data_dir, const ManchesterOptions& options);
+
+}  // namespace conforma

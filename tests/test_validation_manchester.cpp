@@ -1,0 +1,70 @@
+// Manchester benchmark A-2.2 (left wheel, 21 cases) through the whole pipeline against CONTACT's results:
+// load control, maximum pressure per model, creep forces with the file's creepages (issue 3 item 5, issue 4 item 6).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "conforma/validation_manchester.hpp"
+
+using namespace conforma;
+
+namespace {
+std::vector<ManchesterComparison> RunCases(ContactModel model) {
+  ManchesterOptions o;
+  o.model = model;
+  return RunManchesterA22(CONFORMA_SHARED_DATA, o);
+}
+}  // namespace
+
+TEST(ManchesterPipeline, LoadControlCarriesTheTenKilonewtonsForEveryModel) {
+  for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal}) {
+    const auto rows = RunCases(m);
+    ASSERT_EQ(rows.size(), 21u);
+    for (const auto& r : rows) {
+      ASSERT_EQ(r.report.status, WheelContactStatus::Ok) << to_string(m) << " case " << r.reference.id;
+      EXPECT_NEAR(r.report.pressure_vertical_force_N, 10e3, 10e3 * 1e-5) << to_string(m) << " case " << r.reference.id;
+      // the creep forces add their own vertical component (contact angle up to 0.03 rad here)
+      EXPECT_NEAR(r.report.vertical_force_N, 10e3, 0.01 * 10e3) << to_string(m) << " case " << r.reference.id;
+      EXPECT_LT(std::fabs(r.err_fn), 0.01) << to_string(m) << " case " << r.reference.id;  // normal force vs CONTACT's
+    }
+  }
+}
+
+TEST(ManchesterPipeline, ConformalMaximumPressureWithinFifteenPercentOfContact) {
+  const auto rows = RunCases(ContactModel::Conformal);
+  for (const auto& r : rows) {
+    std::printf("case %2d y_ws %4.1f: pmax %6.1f (CONTACT %6.1f, %+5.1f%%) area %5.2f (%5.2f, %+5.1f%%)\n", r.reference.id,
+                r.reference.y_ws_mm, r.pmax_MPa, r.reference.p_max_MPa, 100 * r.err_pmax, r.area_mm2, r.reference.area_mm2,
+                100 * r.err_area);
+    if (r.reference.id >= 2) EXPECT_LT(std::fabs(r.err_pmax), 0.15) << "case " << r.reference.id;
+  }
+  // y = 0: a wide double-lobed patch where CONTACT's own KPEC is 31 % high
+  EXPECT_LT(std::fabs(rows[0].err_pmax), 0.31);
+}
+
+TEST(ManchesterPipeline, ConformalCreepForcesWithinTwentyPercentOrOneHundredFiftyNewtons) {
+  const auto rows = RunCases(ContactModel::Conformal);
+  int ok = 0;
+  for (const auto& r : rows) {
+    const bool x = std::fabs(r.err_fx_N) <= std::max(150.0, 0.2 * std::fabs(r.reference.fx_N));
+    const bool s = std::fabs(r.err_fs_N) <= std::max(150.0, 0.2 * std::fabs(r.reference.fs_N));
+    ok += x && s;
+  }
+  EXPECT_GE(ok, 18);
+}
+
+TEST(ManchesterPipeline, IdenticalResultsForOneAndTwoThreads) {
+  omp_set_num_threads(1);
+  const auto one = RunCases(ContactModel::Conformal);
+  omp_set_num_threads(2);
+  const auto two = RunCases(ContactModel::Conformal);
+  ASSERT_EQ(one.size(), two.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].fn_N, two[i].fn_N);
+    EXPECT_EQ(one[i].pmax_MPa, two[i].pmax_MPa);
+    EXPECT_EQ(one[i].fx_N, two[i].fx_N);
+    EXPECT_EQ(one[i].fs_N, two[i].fs_N);
+  }
+}
