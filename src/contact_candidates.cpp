@@ -171,16 +171,21 @@ CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Sid
     const double B = std::max(c.hertz_B_per_m, 1e-3 * c.hertz_A_per_m);
     pts.push_back({std::max(0.0, c.vertical_gap_m), std::cos(c.contact_angle_rad), c.hertz_A_per_m, B});
   }
+  // Hertz: N = C_H delta^(3/2) with C_H fixed by A, B and the material (hertz.hpp); one solve per point
+  std::vector<double> stiffness(pts.size(), 0.0);
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const HertzResult h = SolveHertzForApproach(pts[i].A, pts[i].B, 1e-5, material);
+    if (h.status == HertzStatus::Ok) stiffness[i] = h.stiffness_N_per_m15;
+  }
   auto vertical_force = [&](double dz, std::vector<double>* forces) {
     double total = 0.0;
     if (forces) forces->assign(pts.size(), 0.0);
     for (size_t i = 0; i < pts.size(); ++i) {
       const double approach = (dz - pts[i].vertical_gap) * pts[i].cos_delta;
       if (approach <= 0.0) continue;
-      const HertzResult h = SolveHertzForApproach(pts[i].A, pts[i].B, approach, material);
-      if (h.status != HertzStatus::Ok) continue;
-      total += h.normal_force_N * pts[i].cos_delta;
-      if (forces) (*forces)[i] = h.normal_force_N;
+      const double normal_force = stiffness[i] * approach * std::sqrt(approach);
+      total += normal_force * pts[i].cos_delta;
+      if (forces) (*forces)[i] = normal_force;
     }
     return total;
   };

@@ -262,16 +262,24 @@ double WheelsetTrackGeometry::RailArcLength(Side side, double eta) const {
 
 double WheelsetTrackGeometry::RailEtaAtArcLength(Side side, double s) const {
   const GraphTable& t = sides_[side_index(side)].rail;
+  if (s <= t.s.front()) return t.y0;
+  if (s >= t.s.back()) return t.y_end();
   const size_t k = std::upper_bound(t.s.begin(), t.s.end(), s) - t.s.begin();
   const size_t i = std::clamp<size_t>(k, 1, t.size() - 1) - 1;
   double lo = t.y0 + i * t.h, hi = lo + t.h;
-  if (s <= t.s.front()) return t.y0;
-  if (s >= t.s.back()) return t.y_end();
-  for (int it = 0; it < 50; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    if (RailArcLength(side, mid) < s) lo = mid; else hi = mid;
+  // Newton on s(eta) = s with ds/deta = sqrt(1 + z'^2), kept inside the bracketing node interval
+  double eta = lo + (s - t.s[i]) / (t.s[i + 1] - t.s[i]) * t.h;
+  for (int it = 0; it < 20; ++it) {
+    const double f = RailArcLength(side, eta) - s;
+    if (std::abs(f) < 1e-13) break;
+    if (f > 0) hi = eta; else lo = eta;
+    double slope = 0.0;
+    t.eval(eta, nullptr, &slope);
+    double next = eta - f / std::sqrt(1 + slope * slope);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    eta = next;
   }
-  return 0.5 * (lo + hi);
+  return eta;
 }
 
 bool WheelsetTrackGeometry::NormalGap(Side side, const Frame& f, double eta, double* y_w_guess, double* gap_m,
