@@ -1,0 +1,135 @@
+#pragma once
+// Quasi-static curving of a bogie vehicle (paper 001 §§2-5 simplified to the steady state): for a track class
+// (radius, cant, speed, friction) and a contact model, the steady lateral shift y and yaw psi of every wheelset
+// and the lateral shift and yaw of every bogie frame, with the contact model in the loop.
+//
+// MODEL (one bogie at a time; the carbodies follow the track: each is the chord between two consecutive bogie
+// centres, so the bogies only interact through the carbody yaw they see):
+//   Unknowns of a bogie: y_j, psi_j, Omega_j of its wheelsets j = 0 (leading, x_0 = +a) and 1 (x_1 = -a), and
+//   y_b, psi_b of the frame. Each wheelset is described in the local track frame at its own position (y from
+//   the track centre line, psi from the local tangent), the frame in the local track frame at the bogie centre.
+//   Curvature c = 1/R (signed as TrackClass: c > 0 turns left). Relative axlebox displacements (small angles):
+//       Delta y_j   = y_j - (y_b + psi_b x_j - c x_j^2 / 2)      (track centre line offset c x^2/2 at x)
+//       Delta psi_j = psi_j - (psi_b - c x_j)                    (local tangent turned by c x)
+//   Unbalanced lateral acceleration a_nc = V^2 c - g h sign(c) / cant_base (h = cant), acting on every mass.
+//   Wheelset j:  sum_wheels Y + (-2 k_y Delta y_j) - m_w a_nc = 0
+//                sum_patches (x_p F_y - (y_p - y_j) F_x + M_spin) - 2 k_x b_x^2 Delta psi_j = 0
+//                sum_patches F_x r_p = 0        (free axle rotation: no torque on an unpowered axle)
+//   Bogie frame: sum_j 2 k_y Delta y_j - (m_b + m_c) a_nc = 0        (carbody share's force through the
+//                                                                      secondary stage, carbody in equilibrium)
+//                sum_j (2 k_x b_x^2 Delta psi_j + x_j 2 k_y Delta y_j) - k_s,psi (psi_b - psi_c) = 0
+//   where psi_c is the mean yaw, relative to the tangent at the bogie centre, of the carbody chords joined to
+//   the bogie: -c L/2 for the chord behind (leading bogie), +c L/2 for the chord ahead, 0 for a Jacobs bogie
+//   between two chords. The contact forces Y, F_x, M_spin come from SolveWheelContact for each wheel (normal +
+//   creep forces, load control with the wheel's vertical load, so the lateral components of the normal forces
+//   -- the gravitational stiffness -- are included) at the wheelset velocity: forward V, lateral 0, yaw rate
+//   V c (this reproduces the curve's longitudinal creepage -y_p c), axle angular velocity Omega_j. Vertical
+//   position and roll of each wheelset come from the rigid two-rail equilibrium at (y_j, psi_j). Wheel loads:
+//   Q = Q0 -/+ m a_nc h / (2 b0) on the inner/outer wheel (vehicle.hpp).
+//   Solved with Ceres Levenberg-Marquardt on the 8 scaled residuals of a bogie (forces / Q0, moments / (Q0 b0),
+//   axle torque / (Q0 r0)); unknowns in mm, mrad and (Omega r0 / V - 1) * 1e3. Jacobian: forward differences of
+//   the contact forces (each wheelset's contact depends only on its own three unknowns), suspension terms exact.
+//   Initial guess: radial-steering estimate (wheelsets parallel to the frame, frame on the chord, y where the
+//   rolling radius difference Delta r(y) of the rigid equilibrium gives pure rolling, 2 b0 r0 / R, clipped at
+//   flange contact). If the residual is not reached, a continuation in c = 1/R from the tangent solution.
+//
+// TANGENT TRACK (c = 0): the equilibrium is solved as above (centred by symmetry for symmetric profiles). The
+// samples are then the centred wheelset moving on a kinematic (Klingel) oscillation of amplitude
+// tangent_amplitude_m: y = A sin(theta), psi = A k cos(theta), dy/dt = V psi, dpsi/dt = -V A k^2 sin(theta),
+// k = 2 pi / L_K, L_K = 2 pi sqrt(r0 b0 / lambda) with the equivalent conicity lambda = -Delta r(-A) / (2 A) of
+// the rigid equilibrium, at tangent_phases equally spaced phases theta (theta = 0 is the centred wheelset) with
+// equal weights 1 / tangent_phases (the time average over one period). A = 0 gives the single centred sample.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "conforma/geometry.hpp"
+#include "conforma/kinematics.hpp"
+#include "conforma/vehicle.hpp"
+#include "conforma/wheel_contact.hpp"
+
+namespace conforma {
+
+struct QuasiStaticOptions {
+  // Model, material, FASTSIM settings. vertical_load_N and friction_coefficient are set per wheel and class.
+  WheelContactOptions contact;
+  double gravity_m_s2 = 9.81;
+  double cant_base_m = 1.5;              // a_nc = V^2 / R - g h / cant_base (distance of the rail centres)
+  bool free_axle_rotation = true;        // false: Omega = V / r0 and no axle torque equation
+  // Tangent track samples (see the header comment).
+  double tangent_amplitude_m = 3e-3;
+  int tangent_phases = 8;
+  // Solver.
+  int max_iterations = 60;                 // LM iterations per attempt
+  double residual_tolerance = 1e-5;        // max |scaled residual| accepted as converged
+  int continuation_steps = 4;              // steps in c when the direct solve fails (0: none)
+  double flange_contact_angle_rad = 0.5;   // a patch steeper than this is a flange contact
+  // Forward-difference steps of the scaled unknowns (mm, mrad, 1e-3 relative axle speed).
+  double difference_step = 1e-3;
+  void validate() const;  // throws InputError naming the option
+};
+
+enum class QuasiStaticStatus { Converged, NotConverged, NoContact };
+const char* to_string(QuasiStaticStatus status);
+
+struct WheelQuasiStaticReport {
+  WheelContactStatus status = WheelContactStatus::NoContact;
+  int patch_count = 0;
+  bool flange_contact = false;        // any patch with contact angle > flange_contact_angle_rad
+  double vertical_load_N = 0.0;       // Q
+  double lateral_force_N = 0.0;       // Y in the track frame (+ towards the left rail), on the wheel
+  double longitudinal_force_N = 0.0;  // sum of F_x on the wheel
+  // Y/Q with Y positive when the rail pushes the wheel towards the track centre (flange climbing quotient).
+  double y_over_q = 0.0;
+  double max_contact_angle_rad = 0.0;
+};
+
+struct WheelsetQuasiStaticReport {
+  int wheelset = 0, bogie = 0;
+  WheelsetPose pose;                  // y, psi solved; vertical, roll of the rigid equilibrium
+  WheelsetVelocity velocity;
+  WheelQuasiStaticReport wheel[2];    // [Left, Right]
+  double primary_lateral_force_N = 0.0;  // on the wheelset
+  double primary_yaw_moment_Nm = 0.0;    // on the wheelset
+};
+
+struct BogieQuasiStaticReport {
+  int bogie = 0;
+  QuasiStaticStatus status = QuasiStaticStatus::NotConverged;
+  double lateral_m = 0.0, yaw_rad = 0.0;  // frame, local track frame at the bogie centre
+  double carbody_yaw_rad = 0.0;           // psi_c used for the secondary yaw moment
+  int iterations = 0;                     // LM iterations (all attempts)
+  int contact_evaluations = 0;            // SolveWheelContact calls
+  double max_residual = 0.0;              // max |scaled residual| at the solution
+  bool continuation_used = false;
+};
+
+struct QuasiStaticResult {
+  QuasiStaticStatus status = QuasiStaticStatus::NotConverged;  // worst over the bogies
+  double unbalanced_acceleration_m_s2 = 0.0;                   // a_nc
+  KinematicsSeries series;                                     // one sample per wheelset (curve) or the tangent set
+  std::vector<WheelsetQuasiStaticReport> wheelsets;            // equilibrium, one per wheelset
+  std::vector<BogieQuasiStaticReport> bogies;
+  double total_lateral_force_N = 0.0;                          // sum of Y over all wheels (= m_total a_nc)
+};
+
+// The contact evaluation used in the loop (SolveWheelContact or a substitute with the same contract).
+using WheelContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
+                                                              const WheelsetVelocity&, const WheelContactOptions&)>;
+
+// Throws InputError for bad vehicle, class or options; convergence and contact failures are statuses.
+QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, const WheelsetTrackGeometry& geometry,
+                                          const TrackClass& track_class, const QuasiStaticOptions& options,
+                                          const WheelContactFunction& contact);
+
+// With the standard pipeline (SolveWheelContact). Inline so that the core library does not depend on the
+// pipeline library (which depends on the core).
+inline QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, const WheelsetTrackGeometry& geometry,
+                                                 const TrackClass& track_class, const QuasiStaticOptions& options) {
+  return SolveQuasiStaticCurving(vehicle, geometry, track_class, options, &SolveWheelContact);
+}
+
+// Curvature 1/R of a class (0 for tangent track: radius 0 or infinite).
+double TrackClassCurvature(const TrackClass& track_class);
+
+}  // namespace conforma
