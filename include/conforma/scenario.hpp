@@ -1,0 +1,91 @@
+#pragma once
+// Wear scenario: everything one run of the wear loop (wear_simulation.hpp) needs, read from a YAML file.
+//
+// File layout (units in the key names; every key optional unless marked; unknown keys are an InputError naming
+// the key and the file):
+//   name: default_metro
+//   vehicle: { base: metro | minuetto, bogie_count: 5, wheelbase_m: 2.0, ... any VehicleParameters field }
+//   kinematics: { provider: quasistatic | centred, tangent_amplitude_mm: 3, tangent_phases: 8,
+//                 cant_base_m: 1.5, free_axle_rotation: true }
+//       quasistatic: kinematics_quasistatic.hpp (Ceres, contact model in the loop) -- the default;
+//       centred:     every wheelset centred and unyawed, yaw rate V/R, pure rolling (fast, for tests).
+//   track: { gauge_mm: 1435, rail_inclination: "1:20" | 0.05 (rad) }
+//   profiles: { wheel: S1002 | <file>, rail: 50E4 | 60E1 | 54E1 | 50E6 | <file>, wheel_radius_mm: 355.5 }
+//       a built-in rail is generated UNINCLINED and mounted with track.rail_inclination; a rail file is mounted
+//       with the inclination too (give rail_inclination: 0 for files that are already canted).
+//   material: { shear_modulus_Pa, poisson_ratio, density_kg_m3 }
+//   friction: 0.3                       (default friction of the classes)
+//   wear_law: usfd | <wear-law file>    (wear_law.hpp; the same law for wheel and rail unless rail_wear_law given)
+//   rail_wear_law: usfd | <file>
+//   contact_model: conformal            (hertz | kp | kpec | conformal; the command line may override)
+//   update: { cap_mm: 0.4, smoothing_mm: 5.0, steps: 20, total_km: 0 (0: no limit; the last step is shortened
+//             to land on it), max_curvature_1_m: 1000 }
+//   rail: { fixed: true, steps: 0, cap_mm: 0.1 }  (fixed: paper 003 §7; steps m > 0: paper 003 Fig. 11)
+//   track_classes: [ { name, radius_m (0 = tangent), cant_mm, speed_kmh, share (fractions or percent; they are
+//                      normalised to sum 1), friction } ... ]
+//   track_classes_csv: <file> with columns radius_m,cant_mm,speed_kmh,share_percent ('#' comments); the
+//                      remainder to 100 % becomes a tangent class at tangent_speed_kmh (key of the same map).
+// Relative file paths are resolved against the scenario file's folder. Lengths in the file in mm where named.
+#include <string>
+#include <vector>
+
+#include "conforma/kinematics.hpp"
+#include "conforma/material.hpp"
+#include "conforma/profile.hpp"
+#include "conforma/vehicle.hpp"
+#include "conforma/wear_distribution.hpp"
+#include "conforma/wheel_contact.hpp"
+
+namespace conforma {
+
+enum class KinematicsProvider { QuasiStatic, Centred };
+const char* to_string(KinematicsProvider provider);
+
+struct ScenarioKinematics {
+  KinematicsProvider provider = KinematicsProvider::QuasiStatic;
+  double tangent_amplitude_m = 3e-3;
+  int tangent_phases = 8;
+  double cant_base_m = 1.5;
+  bool free_axle_rotation = true;
+};
+
+struct ScenarioUpdate {
+  double cap_m = 0.4e-3;               // largest wheel depth of a step (paper 003 §6)
+  double smoothing_cutoff_m = 5e-3;    // DepthSmoothingOptions::cutoff_wavelength_m
+  int steps = 20;                      // wheel steps (per rail step)
+  double total_km = 0.0;               // 0: unlimited; otherwise stop (and shorten the last step) at this distance
+  double max_curvature_1_m = 1.0e3;    // validity check (ProfileValidityOptions)
+};
+
+struct ScenarioRail {
+  bool fixed = true;
+  int steps = 0;            // m rail steps (paper 003 Fig. 11) when not fixed
+  double cap_m = 0.1e-3;    // RailStepOptions::max_depth_per_step_m
+};
+
+struct Scenario {
+  std::string name;
+  std::string source;  // file the scenario came from
+  VehicleParameters vehicle;
+  ScenarioKinematics kinematics;
+  double gauge_m = 1.435;
+  double rail_inclination_rad = 0.0;
+  std::string wheel_name, rail_name;  // built-in name or file path, as given
+  Profile wheel, rail;                // rail uninclined (mounted with rail_inclination_rad)
+  Material material;
+  double friction_coefficient = 0.3;
+  WearModel wear;
+  ContactModel model = ContactModel::Conformal;
+  ScenarioUpdate update;
+  ScenarioRail rail_steps;
+  std::vector<TrackClass> classes;  // shares sum to 1
+  void validate() const;            // InputError naming the field and the file
+  // Track set-up of the scenario with the given wheel and (mounted or not) rails.
+  TrackSetup MakeTrackSetup() const;
+};
+
+// Throws InputError "<file>: <what>" for unreadable/malformed files, unknown keys and bad values.
+Scenario LoadScenario(const std::string& path);
+Scenario ParseScenario(const std::string& yaml_text, const std::string& source, const std::string& base_dir = ".");
+
+}  // namespace conforma

@@ -1,0 +1,130 @@
+#pragma once
+// The wear loop (paper 003 §§5-6 and Fig. 11, paper 001 §§6-7; physics-reference §8.3):
+//
+//   for each rail step k (one, with the rail fixed -- paper 003 §7 -- the default):
+//     wheel w = w_0
+//     for each wheel step j:
+//       geometry of (w, r_k)                                          (rebuilt: it precomputes from the profiles)
+//       for each track class c (weight p_c):   kinematics samples of every wheelset (quasi-static or imported)
+//         for each sample and each wheel:      SolveWheelContact(keep_fields) -> cells (p, p_t, slip, area, dx)
+//                                              -> WearPatch (cells with zero slip are skipped: no wear)
+//         IntegrateTrackClass per side (left wheels / right wheels, their rails)
+//       CombineTrackClasses with the shares p_c; the wheel depth per metre is the mean of the two sides
+//       (every wheel of the vehicle is one sample of "the" wheel profile, like a fleet average)
+//       UpdateProfile(w, depth per metre, 1 m, cap)  -> w_{j+1}, the km of the step, Sd/Sh/qR
+//     rails r_{k+1} = UpdateRail(r_k, rail depth per passage of each w_j, weights = km of step j)
+//
+// Determinism: samples are evaluated in parallel (OpenMP) into per-sample slots and summed sequentially in a
+// fixed order, so the result does not depend on the number of threads.
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "conforma/geometry.hpp"
+#include "conforma/kinematics.hpp"
+#include "conforma/profile_update.hpp"
+#include "conforma/rail_update.hpp"
+#include "conforma/scenario.hpp"
+#include "conforma/wear_distribution.hpp"
+#include "conforma/wheel_contact.hpp"
+#include "conforma/wheel_dimensions.hpp"
+
+namespace conforma {
+
+using WearContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
+                                                             const WheelsetVelocity&, const WheelContactOptions&)>;
+// Kinematics of one track class on the current geometry (class index into Scenario::classes).
+using KinematicsFunction =
+    std::function<KinematicsSeries(const WheelsetTrackGeometry&, const TrackClass&, int class_index)>;
+
+// ---------------------------------------------------------------- one step's wear
+struct StepWearOptions {
+  WheelContactOptions contact;  // model, material, discretisation; keep_fields, load and friction are set per call
+  WearModel wear;
+  double grid_spacing_m = 0.1e-3;  // wear grids on the wheel and rail arc lengths
+};
+
+struct StepWear {
+  TrackClassWear wheel;                    // combined over the classes; wheel depth per metre = mean of the sides
+  std::array<TrackClassWear, 2> side;      // [Left, Right] combined over the classes (rail: per passage)
+  std::vector<std::array<TrackClassWear, 2>> per_class;
+  int samples = 0;                         // wheel contacts evaluated
+  int failed_contacts = 0;                 // NoContact / NotConverged wheels (no wear taken from them)
+  int patches = 0, slipping_cells = 0;
+  double wheel_area_off_grid_m2 = 0.0;     // cells that could not be mapped to the wheel arc length
+};
+
+// series[c] are the samples of class c (weights of a wheelset within a class sum to 1). Throws InputError for
+// inconsistent input; contact failures are counted.
+StepWear ComputeStepWear(const WheelsetTrackGeometry& geometry, const std::vector<TrackClass>& classes,
+                         const std::vector<KinematicsSeries>& series, const StepWearOptions& options,
+                         const WearContactFunction& contact);
+
+// ---------------------------------------------------------------- kinematics providers of a scenario
+// Centred wheelsets: y = 0, psi = 0 at the rigid equilibrium, yaw rate V/R, axle speed V/r0, static wheel loads.
+KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrackGeometry& geometry,
+                                   const TrackClass& track_class);
+// The scenario's provider (quasi-static curving with `model` in the loop, or centred).
+KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact);
+
+// ---------------------------------------------------------------- the whole run
+struct WearSimulationOptions {
+  ContactModel model = ContactModel::Conformal;
+  int steps = -1;                    // wheel steps per rail step; < 0: the scenario's
+  double total_km = -1.0;            // < 0: the scenario's (0 = unlimited)
+  int fastsim_elements = 30;
+  int kp_strips = 31;
+  double candidate_strip_width_m = 0.1e-3;
+  double grid_spacing_m = 0.1e-3;
+  // Called after every wheel step (progress display, streaming output); may be empty.
+  std::function<void(const struct WearStepRecord&)> on_step;
+};
+
+struct WearStepRecord {
+  int rail_step = 0;                 // k
+  int step = 0;                      // j, 1-based within the rail step
+  double km = 0.0;                   // cumulative within the rail step
+  double step_km = 0.0;
+  double max_depth_m = 0.0;          // of the removed depth (= cap unless the last step was shortened)
+  WheelDimensions dimensions;        // of the new profile
+  double tread_wear_m = 0.0, flange_wear_m = 0.0;  // see WheelWearDepths
+  double wall_s = 0.0;
+  Profile wheel;                     // the new wheel profile
+  WearDistribution wheel_depth_per_metre;   // raw (unsmoothed) wheel wear rate of the step [m/m]
+  WearDistribution removed_depth;           // smoothed, scaled depth removed [m]
+  std::array<WearDistribution, 2> rail_depth_per_passage;  // [Left, Right]
+  ProfileValidity validity;
+  int samples = 0, failed_contacts = 0;
+};
+
+enum class WearSimulationStatus { Completed, InvalidProfile, NoWear };
+const char* to_string(WearSimulationStatus status);
+
+struct WearSimulationResult {
+  WearSimulationStatus status = WearSimulationStatus::Completed;
+  std::string message;
+  Profile initial_wheel;
+  WheelDimensions initial_dimensions;
+  std::array<Profile, 2> initial_rail;               // mounted [Left, Right]
+  std::vector<WearStepRecord> steps;
+  std::vector<std::array<Profile, 2>> rails;          // r_1 .. r_m (empty with a fixed rail)
+  std::vector<RailStepResult> rail_results;
+};
+
+// Largest wear depth of `worn` relative to `initial`, measured along the initial profile's normals, over the
+// tread (wheel-profile y > flange_root_y) and over the flange (y <= flange_root_y). flange_root_y = -25 mm
+// (S1002: the flange root lies between y = -26 and -20 mm).
+struct WheelWearDepths {
+  double tread_m = 0.0, flange_m = 0.0;
+};
+WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m = -0.025);
+
+WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options,
+                                       const WearContactFunction& contact, const KinematicsFunction& kinematics = {});
+// With the standard pipeline. Inline so that the core library does not depend on the pipeline library.
+inline WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options) {
+  return RunWearSimulation(scenario, options, &SolveWheelContact);
+}
+
+}  // namespace conforma

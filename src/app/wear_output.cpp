@@ -1,0 +1,97 @@
+// Output files of a wear run (wear_output.hpp).
+#include "wear_output.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_io.hpp"
+
+namespace conforma::cli {
+
+namespace {
+
+std::string Num3(int i) {
+  char b[16];
+  std::snprintf(b, sizeof b, "%03d", i);
+  return b;
+}
+
+std::string StepTag(const WearStepRecord& s) {
+  return (s.rail_step > 0 ? "r" + Num3(s.rail_step) + "_" : std::string()) + "step_" + Num3(s.step);
+}
+
+void SaveBoth(const Profile& p, const std::string& base) {
+  SaveProfileSimpack(p, base + (p.kind() == ProfileKind::Wheel ? ".prw" : ".prr"));
+  SaveProfileCsv(p, base + ".csv");
+}
+
+}  // namespace
+
+void BeginWearOutput(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir + ": cannot create output folder: " + ec.message());
+}
+
+void WriteWearStep(const std::string& dir, const WearStepRecord& s) {
+  const std::string tag = StepTag(s);
+  SaveBoth(s.wheel, dir + "/wheel_" + tag);
+  std::ofstream out(dir + "/wear_" + tag + ".csv");
+  if (!out) throw InputError(dir + "/wear_" + tag + ".csv: cannot write");
+  out << "# wear distribution of " << tag << ": wheel arc length s (grid of the profile BEFORE the step), wheel wear "
+         "rate (mean of all wheels, m per m travelled, raw), depth removed in the step (smoothed, scaled to the cap);"
+         " rail depth per wheel passage (left/right rail, arc length on the mounted rail)\n";
+  out << "s_mm,wheel_rate_mm_per_km,removed_mm\n";
+  out << std::setprecision(10);
+  for (size_t i = 0; i < s.wheel_depth_per_metre.size(); ++i)
+    out << s.wheel_depth_per_metre.s(i) * 1e3 << "," << s.wheel_depth_per_metre.depth_m[i] * 1e6 << ","
+        << (i < s.removed_depth.size() ? s.removed_depth.depth_m[i] * 1e3 : 0.0) << "\n";
+  std::ofstream rail(dir + "/rail_wear_" + tag + ".csv");
+  rail << "side,s_mm,depth_per_passage_nm\n" << std::setprecision(10);
+  for (int k = 0; k < 2; ++k)
+    for (size_t i = 0; i < s.rail_depth_per_passage[k].size(); ++i)
+      rail << (k == 0 ? "left," : "right,") << s.rail_depth_per_passage[k].s(i) * 1e3 << ","
+           << s.rail_depth_per_passage[k].depth_m[i] * 1e9 << "\n";
+}
+
+void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
+  SaveBoth(r.initial_wheel, dir + "/wheel_step_000");
+  SaveBoth(r.initial_rail[0], dir + "/rail_left_000");
+  SaveBoth(r.initial_rail[1], dir + "/rail_right_000");
+  std::ofstream out(dir + "/steps.csv");
+  if (!out) throw InputError(dir + "/steps.csv: cannot write");
+  out << "rail_step,step,km,step_km,max_depth_mm,sd_mm,sh_mm,qr_mm,tread_wear_mm,flange_wear_mm,wall_s,"
+         "max_curvature_1_m,samples,failed_contacts\n";
+  out << std::setprecision(8);
+  const WheelDimensions& d0 = r.initial_dimensions;
+  out << "0,0,0,0,0," << d0.sd_m * 1e3 << "," << d0.sh_m * 1e3 << "," << d0.qr_m * 1e3 << ",0,0,0,0,0,0\n";
+  for (const WearStepRecord& s : r.steps)
+    out << s.rail_step << "," << s.step << "," << s.km << "," << s.step_km << "," << s.max_depth_m * 1e3 << ","
+        << s.dimensions.sd_m * 1e3 << "," << s.dimensions.sh_m * 1e3 << "," << s.dimensions.qr_m * 1e3 << ","
+        << s.tread_wear_m * 1e3 << "," << s.flange_wear_m * 1e3 << "," << s.wall_s << ","
+        << s.validity.max_abs_curvature_1_m << "," << s.samples << "," << s.failed_contacts << "\n";
+  for (size_t k = 0; k < r.rails.size(); ++k) {
+    SaveBoth(r.rails[k][0], dir + "/rail_left_" + Num3(static_cast<int>(k + 1)));
+    SaveBoth(r.rails[k][1], dir + "/rail_right_" + Num3(static_cast<int>(k + 1)));
+  }
+  std::ofstream st(dir + "/status.txt");
+  st << to_string(r.status) << "\n" << r.message << "\n";
+}
+
+void PrintProgress(const std::string& label, const WearStepRecord& s, int steps_total) {
+  if (!isatty(fileno(stderr))) return;
+  const int width = 30;
+  const int done = steps_total > 0 ? std::min(width, width * s.step / steps_total) : width;
+  std::fprintf(stderr, "\r[%s] [%s%s] step %d/%d  %.0f km  Sd %.2f qR %.2f mm  %.1f s/step   ", label.c_str(),
+               std::string(done, '#').c_str(), std::string(width - done, '.').c_str(), s.step, steps_total, s.km,
+               s.dimensions.sd_m * 1e3, s.dimensions.qr_m * 1e3, s.wall_s);
+  if (s.step >= steps_total) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
+}  // namespace conforma::cli

@@ -1,0 +1,19 @@
+#pragma once
+// Output of a wear run (conforma wear / conforma compare): steps.csv, profiles of every step (.prw/.prr + CSV),
+// wear distributions, and a one-line progress display on a terminal.
+#include <string>
+
+#include "conforma/wear_simulation.hpp"
+
+namespace conforma::cli {
+
+// Creates dir.
+void BeginWearOutput(const std::string& dir);
+// Appends the files of one step (profiles, wear distribution CSV).
+void WriteWearStep(const std::string& dir, const WearStepRecord& step);
+// steps.csv (all steps), the initial profiles (wheel_step_000, rail_{left,right}_000) and the rails of the rail steps.
+void FinishWearOutput(const std::string& dir, const WearSimulationResult& result);
+// "\r[model] step j/n  km ..." on stderr when it is a terminal.
+void PrintProgress(const std::string& label, const WearStepRecord& step, int steps_total);
+
+}  // namespace conforma::cli

@@ -1,0 +1,379 @@
+// Scenario file reader (scenario.hpp): YAML -> Scenario, with unknown keys and bad values reported by name.
+#include "conforma/scenario.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_io.hpp"
+#include "conforma/standard_profiles.hpp"
+#include "conforma/wear_law.hpp"
+
+namespace conforma {
+
+const char* to_string(KinematicsProvider provider) {
+  return provider == KinematicsProvider::QuasiStatic ? "quasistatic" : "centred";
+}
+
+namespace {
+
+struct Reader {
+  std::string source;
+  std::string base_dir;
+
+  [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+    throw InputError(source + ": " + where + ": " + what);
+  }
+  void check_keys(const YAML::Node& map, const std::string& where, const std::set<std::string>& allowed) const {
+    if (!map.IsMap()) fail(where, "expected a map");
+    for (const auto& kv : map) {
+      const std::string key = kv.first.as<std::string>();
+      if (!allowed.count(key)) fail(where, "unknown key '" + key + "'");
+    }
+  }
+  double number(const YAML::Node& n, const std::string& where) const {
+    try {
+      const double v = n.as<double>();
+      if (!std::isfinite(v)) fail(where, "not a finite number");
+      return v;
+    } catch (const YAML::Exception&) {
+      fail(where, "expected a number");
+    }
+  }
+  int integer(const YAML::Node& n, const std::string& where) const {
+    try {
+      return n.as<int>();
+    } catch (const YAML::Exception&) {
+      fail(where, "expected an integer");
+    }
+  }
+  bool boolean(const YAML::Node& n, const std::string& where) const {
+    try {
+      return n.as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(where, "expected true or false");
+    }
+  }
+  std::string text(const YAML::Node& n, const std::string& where) const {
+    if (!n.IsScalar()) fail(where, "expected a text value");
+    return n.as<std::string>();
+  }
+  std::string path(const std::string& p) const {
+    if (p.empty() || p[0] == '/') return p;
+    return base_dir + "/" + p;
+  }
+};
+
+double ParseInclination(const Reader& r, const YAML::Node& n) {
+  const std::string t = r.text(n, "track.rail_inclination");
+  const auto colon = t.find(':');
+  if (colon != std::string::npos) {
+    double a = 0.0, b = 0.0;
+    try {
+      a = std::stod(t.substr(0, colon));
+      b = std::stod(t.substr(colon + 1));
+    } catch (const std::exception&) {
+      r.fail("track.rail_inclination", "expected '1:N' or radians, got '" + t + "'");
+    }
+    if (!(a > 0 && b > 0)) r.fail("track.rail_inclination", "expected '1:N' with N > 0");
+    return std::atan(a / b);
+  }
+  return r.number(n, "track.rail_inclination");
+}
+
+Profile BuiltInOrFileRail(const Reader& r, const std::string& name) {
+  static const std::map<std::string, RailSection> kRails = {{"60E1", RailSection::R60E1}, {"UIC60", RailSection::R60E1},
+                                                            {"54E1", RailSection::R54E1}, {"50E6", RailSection::R50E6},
+                                                            {"50E4", RailSection::R50E4}, {"UIC50", RailSection::R50E4}};
+  const auto it = kRails.find(name);
+  if (it != kRails.end()) return MakeRail(it->second, 0.0);
+  ProfileReadOptions o;
+  o.kind = ProfileKind::Rail;
+  return LoadProfile(r.path(name), o);
+}
+
+Profile BuiltInOrFileWheel(const Reader& r, const std::string& name) {
+  if (name == "S1002") return MakeS1002();
+  ProfileReadOptions o;
+  o.kind = ProfileKind::Wheel;
+  return LoadProfile(r.path(name), o);
+}
+
+WearLaw LawFromName(const Reader& r, const std::string& name) {
+  if (name == "usfd") return WearLaw{};
+  return LoadWearLaw(r.path(name));
+}
+
+void ParseVehicle(const Reader& r, const YAML::Node& n, VehicleParameters* v) {
+  if (!n.IsMap()) r.fail("vehicle", "expected a map");
+  std::string base = "metro";
+  if (n["base"]) base = r.text(n["base"], "vehicle.base");
+  if (base == "metro") {
+    *v = MetroVehicle();
+  } else if (base == "minuetto" || base == "aln501") {
+    *v = MinuettoVehicle();
+  } else {
+    r.fail("vehicle.base", "unknown vehicle '" + base + "' (metro, minuetto)");
+  }
+  const std::map<std::string, double*> fields = {
+      {"wheelset_mass_kg", &v->wheelset_mass_kg},
+      {"bogie_frame_mass_kg", &v->bogie_frame_mass_kg},
+      {"carbody_mass_per_bogie_kg", &v->carbody_mass_per_bogie_kg},
+      {"bogie_centre_distance_m", &v->bogie_centre_distance_m},
+      {"wheelbase_m", &v->wheelbase_m},
+      {"nominal_wheel_radius_m", &v->nominal_wheel_radius_m},
+      {"primary_longitudinal_stiffness_N_m", &v->primary_longitudinal_stiffness_N_m},
+      {"primary_lateral_stiffness_N_m", &v->primary_lateral_stiffness_N_m},
+      {"lateral_axlebox_spacing_m", &v->lateral_axlebox_spacing_m},
+      {"secondary_yaw_stiffness_Nm_rad", &v->secondary_yaw_stiffness_Nm_rad},
+      {"secondary_lateral_stiffness_N_m", &v->secondary_lateral_stiffness_N_m},
+      {"load_transfer_height_m", &v->load_transfer_height_m},
+      {"contact_half_distance_m", &v->contact_half_distance_m}};
+  for (const auto& kv : n) {
+    const std::string key = kv.first.as<std::string>();
+    if (key == "base") continue;
+    if (key == "name") {
+      v->name = r.text(kv.second, "vehicle.name");
+    } else if (key == "bogie_count") {
+      v->bogie_count = r.integer(kv.second, "vehicle.bogie_count");
+    } else if (fields.count(key)) {
+      *fields.at(key) = r.number(kv.second, "vehicle." + key);
+    } else {
+      r.fail("vehicle", "unknown key '" + key + "'");
+    }
+  }
+  try {
+    v->validate();
+  } catch (const InputError& e) {
+    r.fail("vehicle", e.what());
+  }
+}
+
+TrackClass ParseClass(const Reader& r, const YAML::Node& n, const std::string& where, double friction) {
+  r.check_keys(n, where, {"name", "radius_m", "cant_mm", "speed_kmh", "share", "friction"});
+  TrackClass c;
+  c.friction_coefficient = friction;
+  if (n["name"]) c.name = r.text(n["name"], where + ".name");
+  if (n["radius_m"]) c.curve_radius_m = r.number(n["radius_m"], where + ".radius_m");
+  if (n["cant_mm"]) c.cant_m = 1e-3 * r.number(n["cant_mm"], where + ".cant_mm");
+  if (!n["speed_kmh"]) r.fail(where, "missing speed_kmh");
+  c.speed_m_s = r.number(n["speed_kmh"], where + ".speed_kmh") / 3.6;
+  if (!n["share"]) r.fail(where, "missing share");
+  c.share = r.number(n["share"], where + ".share");
+  if (n["friction"]) c.friction_coefficient = r.number(n["friction"], where + ".friction");
+  if (c.name.empty()) c.name = c.curve_radius_m == 0.0 ? "tangent" : "R" + std::to_string(int(c.curve_radius_m));
+  return c;
+}
+
+std::vector<TrackClass> ClassesFromCsv(const Reader& r, const YAML::Node& n, double friction) {
+  r.check_keys(n, "track_classes_csv", {"file", "tangent_speed_kmh", "left_and_right"});
+  if (!n["file"]) r.fail("track_classes_csv", "missing file");
+  const std::string file = r.path(r.text(n["file"], "track_classes_csv.file"));
+  double tangent_speed = 0.0;
+  if (n["tangent_speed_kmh"]) tangent_speed = r.number(n["tangent_speed_kmh"], "track_classes_csv.tangent_speed_kmh") / 3.6;
+  std::ifstream in(file);
+  if (!in) throw InputError(file + ": cannot open track class file");
+  std::vector<TrackClass> out;
+  std::string line;
+  int lineno = 0;
+  bool header = false;
+  double curve_share = 0.0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) {
+      if (line.rfind("radius_m,cant_mm,speed_kmh,share_percent", 0) != 0)
+        throw InputError(file + ":" + std::to_string(lineno) + ": expected header radius_m,cant_mm,speed_kmh,share_percent");
+      header = true;
+      continue;
+    }
+    std::stringstream ss(line);
+    std::string f;
+    std::vector<double> v;
+    while (std::getline(ss, f, ',')) {
+      try {
+        v.push_back(std::stod(f));
+      } catch (const std::exception&) {
+        throw InputError(file + ":" + std::to_string(lineno) + ": non-numeric field '" + f + "'");
+      }
+    }
+    if (v.size() != 4) throw InputError(file + ":" + std::to_string(lineno) + ": expected 4 fields");
+    TrackClass c;
+    c.curve_radius_m = v[0];
+    c.cant_m = 1e-3 * v[1];
+    c.speed_m_s = v[2] / 3.6;
+    c.share = 0.01 * v[3];
+    c.friction_coefficient = friction;
+    c.name = "R" + std::to_string(int(v[0])) + "_h" + std::to_string(int(v[1])) + "_v" + std::to_string(int(v[2]));
+    curve_share += c.share;
+    out.push_back(c);
+  }
+  if (out.empty()) throw InputError(file + ": no track classes");
+  if (curve_share < 1.0 - 1e-9) {
+    if (!(tangent_speed > 0)) r.fail("track_classes_csv", "tangent_speed_kmh needed for the tangent remainder");
+    TrackClass t;
+    t.name = "tangent";
+    t.speed_m_s = tangent_speed;
+    t.share = 1.0 - curve_share;
+    t.friction_coefficient = friction;
+    out.insert(out.begin(), t);
+  }
+  return out;
+}
+
+}  // namespace
+
+void Scenario::validate() const {
+  const std::string where = source + ": ";
+  vehicle.validate();
+  material.validate();
+  wear.wheel_law.validate();
+  wear.rail_law.validate();
+  if (classes.empty()) throw InputError(where + "no track classes");
+  double sum = 0.0;
+  for (const TrackClass& c : classes) {
+    if (!(c.speed_m_s > 0)) throw InputError(where + "track class " + c.name + ": speed must be > 0");
+    if (!(c.share >= 0)) throw InputError(where + "track class " + c.name + ": share must be >= 0");
+    if (!(c.friction_coefficient > 0)) throw InputError(where + "track class " + c.name + ": friction must be > 0");
+    sum += c.share;
+  }
+  if (std::abs(sum - 1.0) > 1e-9) throw InputError(where + "track class shares do not sum to 1");
+  if (!(update.cap_m > 0)) throw InputError(where + "update.cap_mm must be > 0");
+  if (!(update.smoothing_cutoff_m >= 0)) throw InputError(where + "update.smoothing_mm must be >= 0");
+  if (update.steps < 1) throw InputError(where + "update.steps must be >= 1");
+  if (!(update.total_km >= 0)) throw InputError(where + "update.total_km must be >= 0");
+  if (!rail_steps.fixed && rail_steps.steps < 1) throw InputError(where + "rail.steps must be >= 1 when rail.fixed is false");
+  if (!(rail_steps.cap_m > 0)) throw InputError(where + "rail.cap_mm must be > 0");
+  if (kinematics.tangent_phases < 1) throw InputError(where + "kinematics.tangent_phases must be >= 1");
+  if (!(gauge_m > 1.0 && gauge_m < 2.0)) throw InputError(where + "track.gauge_mm out of range");
+  if (wheel.empty() || rail.empty()) throw InputError(where + "profiles missing");
+}
+
+TrackSetup Scenario::MakeTrackSetup() const {
+  TrackSetup s = MakeSymmetricTrack(wheel, rail, rail_inclination_rad);
+  s.gauge_m = gauge_m;
+  s.nominal_radius_m = {vehicle.nominal_wheel_radius_m, vehicle.nominal_wheel_radius_m};
+  return s;
+}
+
+Scenario ParseScenario(const std::string& yaml_text, const std::string& source, const std::string& base_dir) {
+  Reader r{source, base_dir};
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source + ": YAML: " + e.what());
+  }
+  r.check_keys(root, "top level",
+               {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "wear_law",
+                "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv"});
+  Scenario s;
+  s.source = source;
+  s.vehicle = MetroVehicle();
+  s.rail_inclination_rad = rail_inclination_1in20();
+  s.name = root["name"] ? r.text(root["name"], "name") : "scenario";
+  if (root["vehicle"]) ParseVehicle(r, root["vehicle"], &s.vehicle);
+  if (const YAML::Node k = root["kinematics"]) {
+    r.check_keys(k, "kinematics", {"provider", "tangent_amplitude_mm", "tangent_phases", "cant_base_m", "free_axle_rotation"});
+    if (k["provider"]) {
+      const std::string p = r.text(k["provider"], "kinematics.provider");
+      if (p == "quasistatic") s.kinematics.provider = KinematicsProvider::QuasiStatic;
+      else if (p == "centred") s.kinematics.provider = KinematicsProvider::Centred;
+      else r.fail("kinematics.provider", "unknown provider '" + p + "' (quasistatic, centred)");
+    }
+    if (k["tangent_amplitude_mm"]) s.kinematics.tangent_amplitude_m = 1e-3 * r.number(k["tangent_amplitude_mm"], "kinematics.tangent_amplitude_mm");
+    if (k["tangent_phases"]) s.kinematics.tangent_phases = r.integer(k["tangent_phases"], "kinematics.tangent_phases");
+    if (k["cant_base_m"]) s.kinematics.cant_base_m = r.number(k["cant_base_m"], "kinematics.cant_base_m");
+    if (k["free_axle_rotation"]) s.kinematics.free_axle_rotation = r.boolean(k["free_axle_rotation"], "kinematics.free_axle_rotation");
+  }
+  if (const YAML::Node t = root["track"]) {
+    r.check_keys(t, "track", {"gauge_mm", "rail_inclination"});
+    if (t["gauge_mm"]) s.gauge_m = 1e-3 * r.number(t["gauge_mm"], "track.gauge_mm");
+    if (t["rail_inclination"]) s.rail_inclination_rad = ParseInclination(r, t["rail_inclination"]);
+  }
+  s.wheel_name = "S1002";
+  s.rail_name = "60E1";
+  if (const YAML::Node p = root["profiles"]) {
+    r.check_keys(p, "profiles", {"wheel", "rail", "wheel_radius_mm"});
+    if (p["wheel"]) s.wheel_name = r.text(p["wheel"], "profiles.wheel");
+    if (p["rail"]) s.rail_name = r.text(p["rail"], "profiles.rail");
+    if (p["wheel_radius_mm"]) s.vehicle.nominal_wheel_radius_m = 1e-3 * r.number(p["wheel_radius_mm"], "profiles.wheel_radius_mm");
+  }
+  s.wheel = BuiltInOrFileWheel(r, s.wheel_name);
+  s.rail = BuiltInOrFileRail(r, s.rail_name);
+  if (const YAML::Node m = root["material"]) {
+    r.check_keys(m, "material", {"shear_modulus_Pa", "poisson_ratio", "density_kg_m3"});
+    if (m["shear_modulus_Pa"]) s.material.shear_modulus_Pa = r.number(m["shear_modulus_Pa"], "material.shear_modulus_Pa");
+    if (m["poisson_ratio"]) s.material.poisson_ratio = r.number(m["poisson_ratio"], "material.poisson_ratio");
+    if (m["density_kg_m3"]) s.material.density_kg_m3 = r.number(m["density_kg_m3"], "material.density_kg_m3");
+  }
+  s.wear.wheel_material = s.material;
+  s.wear.rail_material = s.material;
+  if (root["friction"]) s.friction_coefficient = r.number(root["friction"], "friction");
+  if (root["wear_law"]) {
+    s.wear.wheel_law = LawFromName(r, r.text(root["wear_law"], "wear_law"));
+    s.wear.rail_law = s.wear.wheel_law;
+  }
+  if (root["rail_wear_law"]) s.wear.rail_law = LawFromName(r, r.text(root["rail_wear_law"], "rail_wear_law"));
+  if (root["contact_model"]) s.model = ParseContactModel(r.text(root["contact_model"], "contact_model"));
+  if (const YAML::Node u = root["update"]) {
+    r.check_keys(u, "update", {"cap_mm", "smoothing_mm", "steps", "total_km", "max_curvature_1_m"});
+    if (u["cap_mm"]) s.update.cap_m = 1e-3 * r.number(u["cap_mm"], "update.cap_mm");
+    if (u["smoothing_mm"]) s.update.smoothing_cutoff_m = 1e-3 * r.number(u["smoothing_mm"], "update.smoothing_mm");
+    if (u["steps"]) s.update.steps = r.integer(u["steps"], "update.steps");
+    if (u["total_km"]) s.update.total_km = r.number(u["total_km"], "update.total_km");
+    if (u["max_curvature_1_m"]) s.update.max_curvature_1_m = r.number(u["max_curvature_1_m"], "update.max_curvature_1_m");
+  }
+  if (const YAML::Node rs = root["rail"]) {
+    r.check_keys(rs, "rail", {"fixed", "steps", "cap_mm"});
+    if (rs["fixed"]) s.rail_steps.fixed = r.boolean(rs["fixed"], "rail.fixed");
+    if (rs["steps"]) s.rail_steps.steps = r.integer(rs["steps"], "rail.steps");
+    if (rs["cap_mm"]) s.rail_steps.cap_m = 1e-3 * r.number(rs["cap_mm"], "rail.cap_mm");
+  }
+  if (root["track_classes"] && root["track_classes_csv"]) r.fail("top level", "give track_classes or track_classes_csv, not both");
+  if (const YAML::Node tc = root["track_classes"]) {
+    if (!tc.IsSequence()) r.fail("track_classes", "expected a list");
+    for (size_t i = 0; i < tc.size(); ++i)
+      s.classes.push_back(ParseClass(r, tc[i], "track_classes[" + std::to_string(i) + "]", s.friction_coefficient));
+  } else if (const YAML::Node csv = root["track_classes_csv"]) {
+    s.classes = ClassesFromCsv(r, csv, s.friction_coefficient);
+  }
+  // normalise the shares (fractions or percent)
+  double sum = 0.0;
+  for (const TrackClass& c : s.classes) {
+    if (!(c.share >= 0)) r.fail("track_classes", "share of " + c.name + " must be >= 0");
+    sum += c.share;
+  }
+  if (!s.classes.empty()) {
+    if (!(sum > 0)) r.fail("track_classes", "shares sum to 0");
+    for (TrackClass& c : s.classes) c.share /= sum;
+  }
+  try {
+    s.validate();
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    if (msg.rfind(source, 0) == 0) throw;
+    throw InputError(source + ": " + msg);
+  }
+  return s;
+}
+
+Scenario LoadScenario(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open scenario file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string dir = ".";
+  const auto slash = path.find_last_of('/');
+  if (slash != std::string::npos) dir = path.substr(0, slash);
+  if (dir.empty()) dir = "/";
+  return ParseScenario(ss.str(), path, dir);
+}
+
+}  // namespace conforma

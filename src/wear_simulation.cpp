@@ -1,0 +1,171 @@
+// The wear loop over wheel steps and rail steps (wear_simulation.hpp; paper 003 §6 and Fig. 11).
+#include "conforma/wear_simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+const char* to_string(WearSimulationStatus status) {
+  switch (status) {
+    case WearSimulationStatus::Completed: return "completed";
+    case WearSimulationStatus::InvalidProfile: return "invalid_profile";
+    case WearSimulationStatus::NoWear: return "no_wear";
+  }
+  return "?";
+}
+
+WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m) {
+  WheelWearDepths d;
+  const double h = 0.1e-3;
+  const int n = static_cast<int>(std::floor(initial.length() / h));
+  for (int i = 0; i <= n; ++i) {
+    const double s = i * h;
+    const Eigen::Vector2d q = initial.position(s);
+    const Eigen::Vector2d normal = initial.normal(s);
+    const Eigen::Vector2d p = worn.position(worn.closest_s(q));
+    // depth along the initial outward normal (material removed: the worn surface lies inside)
+    const double depth = (q - p).dot(normal);
+    if (q.y() > flange_root_y_m) d.tread_m = std::max(d.tread_m, depth);
+    else d.flange_m = std::max(d.flange_m, depth);
+  }
+  return d;
+}
+
+namespace {
+
+TrackSetup SetupWith(const Scenario& sc, const Profile& wheel, const std::array<Profile, 2>& mounted_rails) {
+  TrackSetup s = sc.MakeTrackSetup();
+  s.wheel = {wheel, wheel};
+  s.rail = mounted_rails;
+  s.rail_inclination_rad = 0.0;  // the rails are already mounted (inclined, origin at the top)
+  return s;
+}
+
+}  // namespace
+
+WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options,
+                                       const WearContactFunction& contact, const KinematicsFunction& kinematics_in) {
+  scenario.validate();
+  const int steps = options.steps >= 0 ? options.steps : scenario.update.steps;
+  const double total_km = options.total_km >= 0.0 ? options.total_km : scenario.update.total_km;
+  if (steps < 1) throw InputError("wear simulation: steps must be >= 1");
+  const KinematicsFunction kinematics =
+      kinematics_in ? kinematics_in : MakeScenarioKinematics(scenario, options.model, contact);
+
+  StepWearOptions step_options;
+  step_options.contact.model = options.model;
+  step_options.contact.material = scenario.material;
+  step_options.contact.fastsim_elements = options.fastsim_elements;
+  step_options.contact.kp_strips = options.kp_strips;
+  step_options.contact.candidate_strip_width_m = options.candidate_strip_width_m;
+  step_options.wear = scenario.wear;
+  step_options.grid_spacing_m = options.grid_spacing_m;
+
+  WearSimulationResult result;
+  result.initial_wheel = scenario.wheel;
+  result.initial_dimensions = MeasureWheelDimensions(scenario.wheel);
+  {
+    const WheelsetTrackGeometry g0(scenario.MakeTrackSetup());
+    result.initial_rail = {g0.mounted_rail(Side::Left), g0.mounted_rail(Side::Right)};
+  }
+  std::array<Profile, 2> rails = result.initial_rail;
+  const int rail_steps = scenario.rail_steps.fixed ? 1 : scenario.rail_steps.steps;
+
+  for (int k = 0; k < rail_steps; ++k) {
+    Profile wheel = scenario.wheel;
+    double km = 0.0;
+    std::array<std::vector<WearDistribution>, 2> rail_wear;
+    std::vector<double> rail_weights;
+    for (int j = 1; j <= steps; ++j) {
+      if (total_km > 0.0 && km >= total_km * (1.0 - 1e-12)) break;
+      const auto t0 = std::chrono::steady_clock::now();
+      const WheelsetTrackGeometry geometry(SetupWith(scenario, wheel, rails));
+      std::vector<KinematicsSeries> series(scenario.classes.size());
+      std::vector<std::string> errors(scenario.classes.size());
+      const int nc = static_cast<int>(scenario.classes.size());
+#pragma omp parallel for schedule(dynamic, 1)
+      for (int c = 0; c < nc; ++c) {
+        try {
+          series[c] = kinematics(geometry, scenario.classes[c], c);
+        } catch (const std::exception& e) {
+          errors[c] = e.what();
+        }
+      }
+      for (int c = 0; c < nc; ++c)
+        if (!errors[c].empty()) throw InputError("wear step " + std::to_string(j) + ": kinematics of class " +
+                                                 scenario.classes[c].name + ": " + errors[c]);
+      const StepWear wear = ComputeStepWear(geometry, scenario.classes, series, step_options, contact);
+
+      ProfileUpdateOptions uo;
+      uo.max_depth_per_step_m = scenario.update.cap_m;
+      uo.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
+      uo.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
+      uo.step_index = j;
+      if (total_km > 0.0) uo.max_distance_step_m = (total_km - km) * 1e3;
+      const ProfileUpdateResult up = UpdateProfile(wheel, wear.wheel.wheel_depth_per_metre, 1.0, uo);
+
+      WearStepRecord rec;
+      rec.rail_step = k;
+      rec.step = j;
+      rec.samples = wear.samples;
+      rec.failed_contacts = wear.failed_contacts;
+      rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
+      rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
+      rec.validity = up.validity;
+      if (up.status != ProfileUpdateStatus::Updated) {
+        result.status = up.status == ProfileUpdateStatus::NoWear ? WearSimulationStatus::NoWear
+                                                                   : WearSimulationStatus::InvalidProfile;
+        result.message = "rail step " + std::to_string(k) + ", wheel step " + std::to_string(j) + ": " + up.message;
+        return result;
+      }
+      rail_wear[0].push_back(rec.rail_depth_per_passage[0]);
+      rail_wear[1].push_back(rec.rail_depth_per_passage[1]);
+      rail_weights.push_back(up.distance_step_m);
+      wheel = up.profile;
+      km += up.distance_step_m * 1e-3;
+      rec.km = km;
+      rec.step_km = up.distance_step_m * 1e-3;
+      rec.max_depth_m = up.max_depth_m;
+      rec.removed_depth = up.removed_depth;
+      rec.wheel = wheel;
+      rec.dimensions = MeasureWheelDimensions(wheel);
+      const WheelWearDepths wd = MeasureWheelWear(scenario.wheel, wheel);
+      rec.tread_wear_m = wd.tread_m;
+      rec.flange_wear_m = wd.flange_m;
+      rec.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      result.steps.push_back(rec);
+      if (options.on_step) options.on_step(result.steps.back());
+    }
+    if (!scenario.rail_steps.fixed) {
+      double wsum = 0.0;
+      for (double w : rail_weights) wsum += w;
+      std::vector<double> weights;
+      for (double w : rail_weights) weights.push_back(w / wsum);
+      RailStepOptions ro;
+      ro.max_depth_per_step_m = scenario.rail_steps.cap_m;
+      ro.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
+      ro.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
+      ro.step_index = k;
+      std::array<Profile, 2> next = rails;
+      for (int side = 0; side < 2; ++side) {
+        const RailStepResult rr = UpdateRail(rails[side], rail_wear[side], weights, 1.0, ro);
+        if (rr.status == ProfileUpdateStatus::InvalidProfile) {
+          result.status = WearSimulationStatus::InvalidProfile;
+          result.message = "rail step " + std::to_string(k) + ": " + rr.message;
+          return result;
+        }
+        next[side] = rr.rail;
+        result.rail_results.push_back(rr);
+      }
+      rails = next;
+      result.rails.push_back(rails);
+    }
+  }
+  return result;
+}
+
+}  // namespace conforma

@@ -1,0 +1,203 @@
+// One step of the wear loop: kinematics samples -> wheel contacts with fields -> wear cells -> class integration
+// -> combination of the classes (wear_simulation.hpp; paper 001 eqs. 24-27, paper 003 §6 steps 1-3).
+#include <cmath>
+#include <exception>
+#include <string>
+
+#include "conforma/error.hpp"
+#include "conforma/kinematics_quasistatic.hpp"
+#include "conforma/wear_simulation.hpp"
+
+namespace conforma {
+
+namespace {
+
+// Wear samples of the two wheels of one kinematics sample.
+struct SampleSlot {
+  std::array<WearSample, 2> wheel;
+  std::array<bool, 2> used{false, false};
+  int failed = 0, patches = 0, slipping_cells = 0;
+  double off_grid_m2 = 0.0;
+  std::string error;
+};
+
+void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& track_class, const KinematicsSample& sample,
+                    const StepWearOptions& options, const WearContactFunction& contact, SampleSlot* slot) {
+  for (Side side : {Side::Left, Side::Right}) {
+    const int k = side_index(side);
+    const double load = sample.vertical_load_N[k];
+    if (!(load > 0.0)) continue;  // unloaded wheel: no contact, no wear
+    WheelContactOptions o = options.contact;
+    o.keep_fields = true;
+    o.solve_tangential = true;
+    o.vertical_load_N = load;
+    o.friction_coefficient = track_class.friction_coefficient;
+    const WheelContactReport report = contact(geometry, side, sample.pose, sample.velocity, o);
+    if (report.status != WheelContactStatus::Ok) {
+      ++slot->failed;
+      continue;
+    }
+    const Profile& wheel = geometry.setup().wheel[k];
+    WearSample ws;
+    ws.distance_m = sample.weight;
+    for (const PatchReport& p : report.patches) {
+      WearPatch patch;
+      patch.rolling_speed_m_s = sample.velocity.forward_speed_m_s;
+      patch.wheel_radius_m = p.rolling_radius_m;
+      for (const ContactCell& c : p.cells) {
+        // Only slipping cells wear: I_w = p_t . s is zero where nothing slips (paper 003 eq. 14).
+        if (c.slip_x == 0.0 && c.slip_s == 0.0) continue;
+        if (c.traction_x_Pa == 0.0 && c.traction_s_Pa == 0.0) continue;
+        const std::optional<double> s_w = wheel.s_at(c.wheel_y_m);
+        if (!s_w) {
+          slot->off_grid_m2 += c.area_m2;
+          continue;
+        }
+        WearCell w;
+        w.traction_Pa = Eigen::Vector2d(c.traction_x_Pa, c.traction_s_Pa);
+        w.slip = Eigen::Vector2d(c.slip_x, c.slip_s);
+        w.pressure_Pa = c.pressure_Pa;
+        w.area_m2 = c.area_m2;
+        w.length_x_m = c.length_x_m;
+        w.wheel_s_m = *s_w;
+        w.rail_s_m = c.rail_s_m;
+        patch.cells.push_back(w);
+      }
+      ++slot->patches;
+      slot->slipping_cells += static_cast<int>(patch.cells.size());
+      if (!patch.cells.empty()) ws.patches.push_back(std::move(patch));
+    }
+    slot->wheel[k] = std::move(ws);
+    slot->used[k] = true;
+  }
+}
+
+TrackClassWear ZeroWear(const WearDistribution& wheel_grid, const WearDistribution& rail_grid) {
+  TrackClassWear t;
+  t.wheel_depth_per_metre = wheel_grid;
+  t.rail_depth_per_passage = rail_grid;
+  std::fill(t.wheel_depth_per_metre.depth_m.begin(), t.wheel_depth_per_metre.depth_m.end(), 0.0);
+  std::fill(t.rail_depth_per_passage.depth_m.begin(), t.rail_depth_per_passage.depth_m.end(), 0.0);
+  return t;
+}
+
+}  // namespace
+
+StepWear ComputeStepWear(const WheelsetTrackGeometry& geometry, const std::vector<TrackClass>& classes,
+                         const std::vector<KinematicsSeries>& series, const StepWearOptions& options,
+                         const WearContactFunction& contact) {
+  if (series.size() != classes.size()) throw InputError("wear step: one kinematics series per track class needed");
+  const WearDistribution wheel_grid = WearDistribution::ForProfile(geometry.setup().wheel[0], options.grid_spacing_m);
+  if (!WearDistribution::ForProfile(geometry.setup().wheel[1], options.grid_spacing_m).same_grid(wheel_grid))
+    throw InputError("wear step: left and right wheel profiles must have the same arc length");
+  std::array<WearDistribution, 2> rail_grid;
+  for (Side side : {Side::Left, Side::Right})
+    rail_grid[side_index(side)] = WearDistribution::ForProfile(geometry.mounted_rail(side), options.grid_spacing_m);
+
+  // flat list of (class, sample), evaluated in parallel into fixed slots
+  std::vector<std::pair<int, int>> items;
+  for (size_t c = 0; c < classes.size(); ++c)
+    for (size_t i = 0; i < series[c].samples.size(); ++i) {
+      const KinematicsSample& s = series[c].samples[i];
+      if (!(s.weight >= 0.0) || !std::isfinite(s.weight))
+        throw InputError("wear step: class " + classes[c].name + " sample " + std::to_string(i) + ": bad weight");
+      items.emplace_back(static_cast<int>(c), static_cast<int>(i));
+    }
+  std::vector<SampleSlot> slots(items.size());
+  const int n = static_cast<int>(items.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int it = 0; it < n; ++it) {
+    try {
+      EvaluateSample(geometry, classes[items[it].first], series[items[it].first].samples[items[it].second], options,
+                     contact, &slots[it]);
+    } catch (const std::exception& e) {
+      slots[it].error = e.what();
+    }
+  }
+  for (size_t it = 0; it < slots.size(); ++it)
+    if (!slots[it].error.empty())
+      throw InputError("wear step: class " + classes[items[it].first].name + ": " + slots[it].error);
+
+  StepWear out;
+  out.per_class.resize(classes.size());
+  std::vector<TrackClassWear> left, right;
+  std::vector<double> shares;
+  size_t it = 0;
+  for (size_t c = 0; c < classes.size(); ++c) {
+    std::array<WearAccumulator, 2> acc = {WearAccumulator(wheel_grid, rail_grid[0], options.wear),
+                                          WearAccumulator(wheel_grid, rail_grid[1], options.wear)};
+    std::array<double, 2> distance{0.0, 0.0};
+    for (; it < items.size() && items[it].first == static_cast<int>(c); ++it) {
+      const SampleSlot& s = slots[it];
+      out.failed_contacts += s.failed;
+      out.patches += s.patches;
+      out.slipping_cells += s.slipping_cells;
+      out.wheel_area_off_grid_m2 += s.off_grid_m2;
+      for (int k = 0; k < 2; ++k) {
+        if (!s.used[k]) continue;
+        ++out.samples;
+        acc[k].add(s.wheel[k]);
+        distance[k] += s.wheel[k].distance_m;
+      }
+    }
+    for (int k = 0; k < 2; ++k)
+      out.per_class[c][k] = distance[k] > 0.0 ? acc[k].result() : ZeroWear(wheel_grid, rail_grid[k]);
+    left.push_back(out.per_class[c][0]);
+    right.push_back(out.per_class[c][1]);
+    shares.push_back(classes[c].share);
+  }
+  out.side[0] = CombineTrackClasses(left, shares);
+  out.side[1] = CombineTrackClasses(right, shares);
+  // "the" wheel: the mean of the left and right wheels (both carry the same profile)
+  out.wheel = ZeroWear(wheel_grid, rail_grid[0]);
+  out.wheel.wheel_depth_per_metre.add(out.side[0].wheel_depth_per_metre, 0.5);
+  out.wheel.wheel_depth_per_metre.add(out.side[1].wheel_depth_per_metre, 0.5);
+  out.wheel.rail_depth_per_passage = out.side[0].rail_depth_per_passage;
+  out.wheel.distance_m = out.side[0].distance_m + out.side[1].distance_m;
+  out.wheel.area_outside_m2 = out.side[0].area_outside_m2 + out.side[1].area_outside_m2;
+  return out;
+}
+
+KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrackGeometry& geometry,
+                                   const TrackClass& track_class) {
+  // One representative wheelset (all wheelsets of the vehicle are identical in this provider).
+  const double c = TrackClassCurvature(track_class);
+  const double V = track_class.speed_m_s;
+  const EquilibriumResult eq = geometry.SolveRigidEquilibrium(0.0, 0.0);
+  KinematicsSeries s;
+  s.source = "centred " + track_class.name;
+  KinematicsSample k;
+  k.wheelset = 0;
+  k.weight = 1.0;
+  if (eq.status != EquilibriumStatus::NoContact) k.pose = eq.pose;
+  k.velocity.forward_speed_m_s = V;
+  k.velocity.yaw_rate_rad_s = V * c;
+  k.velocity.axle_angular_velocity_rad_s = V / scenario.vehicle.nominal_wheel_radius_m;
+  k.vertical_load_N[0] = k.vertical_load_N[1] = scenario.vehicle.static_wheel_load_N();
+  k.track_curvature_per_m = c;
+  s.samples.push_back(k);
+  return s;
+}
+
+KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact) {
+  if (scenario.kinematics.provider == KinematicsProvider::Centred) {
+    return [scenario](const WheelsetTrackGeometry& g, const TrackClass& tc, int) { return CentredKinematics(scenario, g, tc); };
+  }
+  QuasiStaticOptions qo;
+  qo.contact.model = model;
+  qo.contact.material = scenario.material;
+  qo.tangent_amplitude_m = scenario.kinematics.tangent_amplitude_m;
+  qo.tangent_phases = scenario.kinematics.tangent_phases;
+  qo.cant_base_m = scenario.kinematics.cant_base_m;
+  qo.free_axle_rotation = scenario.kinematics.free_axle_rotation;
+  const VehicleParameters vehicle = scenario.vehicle;
+  return [qo, vehicle, contact](const WheelsetTrackGeometry& g, const TrackClass& tc, int) {
+    const WheelContactFunction f = [&contact](const WheelsetTrackGeometry& gg, Side sd, const WheelsetPose& p,
+                                              const WheelsetVelocity& v, const WheelContactOptions& o) {
+      return contact(gg, sd, p, v, o);
+    };
+    return SolveQuasiStaticCurving(vehicle, g, tc, qo, f).series;
+  };
+}
+
+}  // namespace conforma
