@@ -1,0 +1,155 @@
+// Wheelset kinematics CSV import/export (kinematics_import.hpp).
+#include "conforma/kinematics_import.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+namespace {
+
+enum Column {
+  kTime, kWheelset, kY, kZ, kRoll, kYaw, kDy, kDyaw, kSpeed, kOmega, kLoadLeft, kLoadRight, kWeight, kCurvature,
+  kColumnCount
+};
+constexpr int kRequiredCount = kWeight;  // columns before kWeight are required
+const std::array<const char*, kColumnCount> kNames = {
+    "time_s",     "wheelset",    "y_m",         "z_m",          "roll_rad", "yaw_rad",        "dy_m_s",
+    "dyaw_rad_s", "speed_m_s",   "omega_rad_s", "load_left_N", "load_right_N", "weight", "curvature_per_m"};
+
+std::string Trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return std::string();
+  const size_t e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> SplitCells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) cells.push_back(Trim(cell));
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+double ParseNumber(const std::string& cell, const std::string& column, const std::string& path, int line) {
+  if (cell.empty()) throw InputError(path, line, "empty cell in column '" + column + "'");
+  char* end = nullptr;  // ERANGE on underflow is fine (subnormals round-trip); overflow gives inf, caught below
+  const double v = std::strtod(cell.c_str(), &end);
+  if (end != cell.c_str() + cell.size())
+    throw InputError(path, line, "column '" + column + "': '" + cell + "' is not a number");
+  if (!std::isfinite(v)) throw InputError(path, line, "column '" + column + "': value must be finite");
+  return v;
+}
+
+}  // namespace
+
+KinematicsSeries ImportKinematicsCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open kinematics file");
+  KinematicsSeries series;
+  series.source = path;
+  std::array<int, kColumnCount> index;
+  index.fill(-1);
+  size_t header_cells = 0;
+  bool have_header = false, have_weight = false;
+  std::string line;
+  int line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    const std::string t = Trim(line);
+    if (t.empty() || t[0] == '#') continue;
+    const std::vector<std::string> cells = SplitCells(t);
+    if (!have_header) {
+      header_cells = cells.size();
+      for (size_t k = 0; k < cells.size(); ++k)
+        for (int c = 0; c < kColumnCount; ++c)
+          if (cells[k] == kNames[c]) {
+            if (index[c] >= 0) throw InputError(path, line_no, "column '" + cells[k] + "' appears twice");
+            index[c] = static_cast<int>(k);
+          }
+      for (int c = 0; c < kRequiredCount; ++c)
+        if (index[c] < 0)
+          throw InputError(path, line_no, std::string("missing required column '") + kNames[c] + "'");
+      have_weight = index[kWeight] >= 0;
+      have_header = true;
+      continue;
+    }
+    if (cells.size() != header_cells)
+      throw InputError(path, line_no, "expected " + std::to_string(header_cells) + " cells, found " +
+                                          std::to_string(cells.size()));
+    std::array<double, kColumnCount> v{};
+    for (int c = 0; c < kColumnCount; ++c)
+      if (index[c] >= 0) v[c] = ParseNumber(cells[index[c]], kNames[c], path, line_no);
+    if (v[kWheelset] < 0.0 || v[kWheelset] != std::floor(v[kWheelset]) || v[kWheelset] > 1e6)
+      throw InputError(path, line_no, "column 'wheelset' must be a non-negative integer");
+    if (v[kLoadLeft] < 0.0) throw InputError(path, line_no, "column 'load_left_N' must be >= 0");
+    if (v[kLoadRight] < 0.0) throw InputError(path, line_no, "column 'load_right_N' must be >= 0");
+    if (have_weight && v[kWeight] < 0.0) throw InputError(path, line_no, "column 'weight' must be >= 0");
+    KinematicsSample s;
+    s.wheelset = static_cast<int>(v[kWheelset]);
+    s.time_s = v[kTime];
+    s.weight = have_weight ? v[kWeight] : 1.0;
+    s.pose.lateral_m = v[kY];
+    s.pose.vertical_m = v[kZ];
+    s.pose.roll_rad = v[kRoll];
+    s.pose.yaw_rad = v[kYaw];
+    s.velocity.forward_speed_m_s = v[kSpeed];
+    s.velocity.lateral_velocity_m_s = v[kDy];
+    s.velocity.yaw_rate_rad_s = v[kDyaw];
+    s.velocity.axle_angular_velocity_rad_s = v[kOmega];
+    s.vertical_load_N[0] = v[kLoadLeft];
+    s.vertical_load_N[1] = v[kLoadRight];
+    s.track_curvature_per_m = index[kCurvature] >= 0 ? v[kCurvature] : 0.0;
+    series.samples.push_back(s);
+  }
+  if (!have_header) throw InputError(path, line_no, "no header line (column names) found");
+  if (!have_weight) {  // equal weights per wheelset
+    std::map<int, int> count;
+    for (const KinematicsSample& s : series.samples) ++count[s.wheelset];
+    for (KinematicsSample& s : series.samples) s.weight = 1.0 / count[s.wheelset];
+  }
+  return series;
+}
+
+void ExportKinematicsCsv(const KinematicsSeries& series, const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if (!f) throw InputError(path, 0, "cannot write kinematics file");
+  std::string source = series.source;
+  for (char& ch : source)
+    if (ch == '\n' || ch == '\r') ch = ' ';
+  std::fprintf(f, "# conforma wheelset kinematics; source: %s\n", source.c_str());
+  for (int c = 0; c < kColumnCount; ++c) std::fprintf(f, "%s%s", c ? "," : "", kNames[c]);
+  std::fprintf(f, "\n");
+  for (const KinematicsSample& s : series.samples) {
+    const double v[kColumnCount] = {s.time_s,
+                                    static_cast<double>(s.wheelset),
+                                    s.pose.lateral_m,
+                                    s.pose.vertical_m,
+                                    s.pose.roll_rad,
+                                    s.pose.yaw_rad,
+                                    s.velocity.lateral_velocity_m_s,
+                                    s.velocity.yaw_rate_rad_s,
+                                    s.velocity.forward_speed_m_s,
+                                    s.velocity.axle_angular_velocity_rad_s,
+                                    s.vertical_load_N[0],
+                                    s.vertical_load_N[1],
+                                    s.weight,
+                                    s.track_curvature_per_m};
+    for (int c = 0; c < kColumnCount; ++c) std::fprintf(f, "%s%.17g", c ? "," : "", v[c]);
+    std::fprintf(f, "\n");
+  }
+  const bool ok = std::ferror(f) == 0;
+  if (std::fclose(f) != 0 || !ok) throw InputError(path, 0, "error while writing kinematics file");
+}
+
+}  // namespace conforma
