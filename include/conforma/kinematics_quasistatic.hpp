@@ -31,7 +31,13 @@
 //   the contact forces (each wheelset's contact depends only on its own three unknowns), suspension terms exact.
 //   Initial guess: radial-steering estimate (wheelsets parallel to the frame, frame on the chord, y where the
 //   rolling radius difference Delta r(y) of the rigid equilibrium gives pure rolling, 2 b0 r0 / R, clipped at
-//   flange contact). If the residual is not reached, a continuation in c = 1/R from the tangent solution.
+//   flange contact). If the residual is not reached, a continuation in c = 1/R from the tangent solution; the
+//   better of the two attempts is kept.
+//   LIMITATION: the contact forces are discontinuous in (y, psi) where the contact-point set changes
+//   discretely: a Hertz contact point jumping between two rigid minima (S1002/60E1 at 1:40 near |y| = 0.22 mm),
+//   or two interpenetration regions merging into one patch (S1002/50E4 at 1:20 near y = -4.63 mm: the second
+//   region's ~7 kN disappear at once). An equilibrium lying on such a jump has no exact solution: the solver
+//   then returns the least-squares point with status NotConverged and its max_residual (typically 1e-2..3e-1).
 //
 // TANGENT TRACK (c = 0): the equilibrium is solved as above (centred by symmetry for symmetric profiles). The
 // samples are then the centred wheelset moving on a kinematic (Klingel) oscillation of amplitude
