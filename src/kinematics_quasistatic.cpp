@@ -26,6 +26,7 @@ void QuasiStaticOptions::validate() const {
   require_positive(gravity_m_s2, "gravity_m_s2");
   require_positive(cant_base_m, "cant_base_m");
   require_non_negative(tangent_amplitude_m, "tangent_amplitude_m");
+  require_finite(tangent_start_offset_m, "tangent_start_offset_m");
   if (tangent_phases < 1) throw InputError("option 'tangent_phases' must be >= 1");
   if (max_iterations < 1) throw InputError("option 'max_iterations' must be >= 1");
   require_positive(residual_tolerance, "residual_tolerance");
@@ -314,7 +315,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
       rep.carbody_yaw_rad = carbody_yaw;
       std::array<double, kUnknowns> p{};
       InitialGuess(ctx, p.data());
-      if (c == 0.0) p[0] = p[3] = p[6] = 1.0;  // off-centre start: the symmetric solution is found, not assumed
+      if (c == 0.0) p[0] = p[3] = p[6] = 1e3 * options.tangent_start_offset_m;
       AttemptResult a = SolveBogie(ctx, p.data());
       rep.iterations += a.iterations;
       if (!a.converged && options.continuation_steps > 0 && c != 0.0) {  // continuation in c = 1/R
