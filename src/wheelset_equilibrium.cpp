@@ -38,26 +38,30 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
   };
   bool ok;
   if (!options.include_roll) {
-    double gl;
-    ok = MinimumVerticalGap(Side::Left, pose, &gl, &y_contact);
-    if (ok) {
-      pose.vertical_m -= gl;
-      out.status = EquilibriumStatus::Converged;
+    // Each wheel is lowered onto its own rail independently (roll held at guess.roll_rad): a single
+    // vertical position would leave one wheel with a gap or an interpenetration, and the contact point of a
+    // wheel that does not touch is then shifted along the rail normal (by about gap sin(delta) cos(delta)),
+    // which made Delta r(-y) differ from -Delta r(y) for a symmetric wheelset by up to 3 mm at the flange.
+    double gap[2];
+    for (int s = 0; s < 2; ++s) {
+      ok = MinimumVerticalGap(s == 0 ? Side::Left : Side::Right, pose, &gap[s], &y_contact);
+      if (!ok) {
+        out.pose = pose;
+        return out;
+      }
     }
+    for (int s = 0; s < 2; ++s) {
+      const Side side = s == 0 ? Side::Left : Side::Right;
+      WheelsetPose lowered = pose;
+      lowered.vertical_m -= gap[s];
+      out.contact.wheel[s] = RigidContact(side, lowered);
+    }
+    pose.vertical_m -= gap[0];  // reported pose: the left wheel touching
     out.pose = pose;
-    if (!ok) return out;
-    out.contact = RigidContacts(pose);
-    if (out.contact.wheel[0].points.empty() || out.contact.wheel[1].points.empty()) {
-      out.status = EquilibriumStatus::NoContact;
-      return out;
-    }
-    auto smallest_vertical = [](const WheelContactResult& w) {
-      return *std::min_element(w.points.begin(), w.points.end(), [](const auto& a, const auto& b) {
-        return a.vertical_gap_m < b.vertical_gap_m;
-      });
-    };
-    out.rolling_radius_difference_m = smallest_vertical(out.contact.wheel[0]).rolling_radius_m -
-                                      smallest_vertical(out.contact.wheel[1]).rolling_radius_m;
+    if (out.contact.wheel[0].points.empty() || out.contact.wheel[1].points.empty()) return out;
+    out.status = EquilibriumStatus::Converged;
+    out.rolling_radius_difference_m =
+        out.contact.wheel[0].points.front().rolling_radius_m - out.contact.wheel[1].points.front().rolling_radius_m;
     return out;
   }
   double z0, z1;

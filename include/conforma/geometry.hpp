@@ -111,9 +111,10 @@ struct WheelsetContactResult {
 struct EquilibriumOptions {
   double tolerance_m = 1e-10;
   int max_iterations = 60;
-  // false: the roll stays at guess.roll_rad and each wheel takes its own smallest-gap contact (the wheelset
-  // is lowered onto the left rail; the right wheel's gap is then not zero). This is how the EN 15302
-  // benchmark Delta r tables are reproduced (see tests/test_conicity_en15302.cpp).
+  // false: the roll stays at guess.roll_rad and each wheel is lowered onto its own rail independently
+  // (both touch, each at its own vertical position; the reported pose has the left wheel touching). Used
+  // for the EN 15302 benchmark Delta r (tests/test_conicity_en15302.cpp). true: the rigid wheelset rolls
+  // about the axle centre, so the contact-level lateral shift differs from lateral_m by about r0 * roll.
   bool include_roll = true;
 };
 enum class EquilibriumStatus { Converged, NotConverged, NoContact };

@@ -2,9 +2,11 @@
 // EN 15302 equivalent-conicity benchmark (shared data profiles/en15302, data README): the nine wheel/rail
 // combinations E1..E9 (wheels RUIC519{A,B,H,I}.dat, rail SUIC519A.dat already inclined 1:40, gauge
 // 1435.16 mm at 14 mm, flange back 1360 mm, wheel diameters 920/920 or 920/918). Delta r(y) is computed
-// with the wheelset roll held at zero (each wheel on its own smallest-gap contact), which is how the
-// benchmark tables dr_ce_E<n>.dat are reproduced; the equivalent conicity by the EN 15302 kinematic
-// integral (conicity.hpp) is compared with the tolerance band of ben_E<n>.dat at every listed amplitude.
+// with the wheelset roll held at zero and each wheel lowered onto its own rail (EquilibriumOptions::
+// include_roll = false), which reproduces dr_ce_E<n>.dat best (the rigid roll about the axle centre shifts
+// the contact-level lateral position by r0 * roll: E1 then has 90 of 137 points > 0.05 mm, not 36); the
+// equivalent conicity by the EN 15302 kinematic integral (conicity.hpp) is compared with the tolerance band
+// of ben_E<n>.dat at every listed amplitude. Measured agreement: tests/test_conicity_en15302.cpp.
 //
 // File orientations (from the data): wheel z is the height in the track (larger radius = lower), so the
 // wheels are read with mirror_z; wheel y has the flange at negative y and the flange back at -70 mm; rail y
