@@ -35,6 +35,14 @@ double BuildPatch(const KpResult& normal, const CurvedFastsimOptions& options, C
   first_element->resize(ns);
   w->patch.bound_pressure_Pa.resize(ns * static_cast<size_t>(nx));
   w->patch.friction_coefficient.clear();
+  // Element means of the normalised semi-ellipse (eq. 10): the same for every strip (equal elements in t = x/c_j).
+  w->shape_means.resize(nx);
+  double upper = SemiEllipseIntegral(1.0);
+  for (int i = 0; i < nx; ++i) {
+    const double lower = SemiEllipseIntegral(1.0 - 2.0 * (i + 1) / nx);
+    w->shape_means[i] = (upper - lower) * (0.5 * nx);
+    upper = lower;
+  }
   double load = 0.0;
   int next = 0;
   for (size_t j = 0; j < ns; ++j) {
@@ -51,12 +59,10 @@ double BuildPatch(const KpResult& normal, const CurvedFastsimOptions& options, C
     (*first_element)[j] = next;
     double* bound = w->patch.bound_pressure_Pa.data() + next;
     if (in_contact) {
-      double upper = SemiEllipseIntegral(1.0), strip_sum = 0.0;
+      double strip_sum = 0.0;
       for (int i = 0; i < nx; ++i) {
-        const double lower = SemiEllipseIntegral(1.0 - 2.0 * (i + 1) / nx);
-        bound[i] = k.peak_pressure_Pa * (upper - lower) * (0.5 * nx);  // element mean of eq. 10
+        bound[i] = k.peak_pressure_Pa * w->shape_means[i];  // element mean of eq. 10
         strip_sum += bound[i];
-        upper = lower;
       }
       load += strip_sum * (2.0 * k.half_length_m / nx) * k.ds_m;
       next += nx;

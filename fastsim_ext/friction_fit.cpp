@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
+#include <utility>
 #include <sstream>
 #include <string>
 
@@ -50,6 +52,7 @@ struct CreepCurveCost {
   bool fit_k;
   double fixed_k;
   std::vector<double> creepages;
+  bool relative;
 
   bool operator()(double const* const* parameters, double* residuals) const {
     FrictionLaw law;
@@ -58,7 +61,10 @@ struct CreepCurveCost {
     const double k = fit_k ? parameters[0][law_parameters] : fixed_k;
     try {
       const std::vector<double> model = TwinDiscCreepCurve(*setup, law, k, creepages);
-      for (size_t i = 0; i < model.size(); ++i) residuals[i] = model[i] - (*curve)[i].traction_coefficient;
+      for (size_t i = 0; i < model.size(); ++i) {
+        const double measured = (*curve)[i].traction_coefficient;
+        residuals[i] = (model[i] - measured) / (relative ? std::max(std::abs(measured), 1e-12) : 1.0);
+      }
     } catch (const InputError&) {
       return false;  // parameters outside the physical range: Ceres shortens the step
     }
@@ -80,47 +86,101 @@ FrictionFitResult FitFrictionLaw(const std::vector<CreepCurvePoint>& curve, cons
 
   const int np = options.initial_law.parameter_count();
   const int total = np + (options.fit_slope_reduction ? 1 : 0);
-  std::vector<double> x(total);
-  for (int i = 0; i < np; ++i) x[i] = options.initial_law.parameters[i];
-  if (options.fit_slope_reduction) x[np] = options.initial_slope_reduction;
+  std::vector<double> creepages;
+  for (const CreepCurvePoint& p : curve) creepages.push_back(p.creepage);
+  const CreepCurveCost evaluator{&curve, &setup, options.initial_law.kind, np, options.fit_slope_reduction,
+                                 options.initial_slope_reduction, creepages, options.relative_residuals};
+  std::vector<double> residuals(curve.size());
+  auto cost_of = [&](const std::vector<double>& x) {
+    const double* block = x.data();
+    if (!evaluator(&block, residuals.data())) return std::numeric_limits<double>::infinity();
+    double sum = 0.0;
+    for (double r : residuals) sum += r * r;
+    return 0.5 * sum;
+  };
 
-  auto* functor = new CreepCurveCost{&curve, &setup, options.initial_law.kind, np, options.fit_slope_reduction,
-                                     options.initial_slope_reduction, {}};
-  for (const CreepCurvePoint& p : curve) functor->creepages.push_back(p.creepage);
-  ceres::NumericDiffOptions diff_options;
-  diff_options.relative_step_size = 1e-5;
-  auto* cost = new ceres::DynamicNumericDiffCostFunction<CreepCurveCost, ceres::CENTRAL>(
-      functor, ceres::TAKE_OWNERSHIP, diff_options);
-  cost->AddParameterBlock(total);
-  cost->SetNumResiduals(static_cast<int>(curve.size()));
-  ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, x.data());
-  for (int i = 0; i < total; ++i) problem.SetParameterLowerBound(x.data(), i, 0.0);
-  if (options.initial_law.kind == FrictionLawKind::F1aExponential) problem.SetParameterUpperBound(x.data(), 1, 1.0);
-  if (options.initial_law.kind == FrictionLawKind::F1bPiecewise) problem.SetParameterLowerBound(x.data(), 2, 1e-9);
-  if (options.fit_slope_reduction) {
-    problem.SetParameterLowerBound(x.data(), np, 1e-3);
-    problem.SetParameterUpperBound(x.data(), np, 2.0);
+  // Stage 1 (paper 002 §4, the "spectrum of creep curves"): the initial guess with its rate / threshold parameters
+  // (f1a beta, f1b gamma_c, f2 alpha and beta) scaled by 1/4 ... 4; the best starts go to stage 2.
+  std::vector<double> x0(total);
+  for (int i = 0; i < np; ++i) x0[i] = options.initial_law.parameters[i];
+  if (options.fit_slope_reduction) x0[np] = options.initial_slope_reduction;
+  std::vector<int> shape;
+  switch (options.initial_law.kind) {
+    case FrictionLawKind::F1aExponential: shape = {2}; break;
+    case FrictionLawKind::F1bPiecewise: shape = {2}; break;
+    case FrictionLawKind::F2: shape = {1, 3}; break;
+    case FrictionLawKind::Constant: break;
   }
-  ceres::Solver::Options solver_options;
-  solver_options.max_num_iterations = options.max_iterations;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
-  solver_options.num_threads = 1;
-  solver_options.function_tolerance = 1e-14;
-  solver_options.parameter_tolerance = 1e-12;
-  solver_options.gradient_tolerance = 1e-16;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver_options, &problem, &summary);
+  const double factors[] = {0.25, 0.5, 1.0, 2.0, 4.0};
+  std::vector<std::pair<double, std::vector<double>>> starts;
+  const int combinations = static_cast<int>(std::pow(5.0, static_cast<double>(shape.size())));
+  for (int c = 0; c < combinations; ++c) {
+    std::vector<double> x = x0;
+    int code = c;
+    for (int index : shape) {
+      x[index] *= factors[code % 5];
+      code /= 5;
+    }
+    starts.push_back({cost_of(x), x});
+  }
+  std::stable_sort(starts.begin(), starts.end(),
+                   [](const auto& l, const auto& r) { return l.first < r.first; });
+  const int refined = std::max(1, std::min(options.refined_starts, static_cast<int>(starts.size())));
+
+  // Stage 2: bounded Levenberg-Marquardt (numeric central differences) from each selected start; lowest cost wins.
+  std::vector<double> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  ceres::Solver::Summary summary, best_summary;
+  for (int s = 0; s < refined; ++s) {
+    std::vector<double> x = starts[s].second;
+    auto* functor = new CreepCurveCost(evaluator);
+    ceres::NumericDiffOptions diff_options;
+    diff_options.relative_step_size = 1e-5;
+    auto* cost = new ceres::DynamicNumericDiffCostFunction<CreepCurveCost, ceres::CENTRAL>(
+        functor, ceres::TAKE_OWNERSHIP, diff_options);
+    cost->AddParameterBlock(total);
+    cost->SetNumResiduals(static_cast<int>(curve.size()));
+    ceres::Problem problem;
+    problem.AddResidualBlock(cost, nullptr, x.data());
+    for (int i = 0; i < total; ++i) problem.SetParameterLowerBound(x.data(), i, 0.0);
+    if (options.initial_law.kind == FrictionLawKind::F1aExponential) problem.SetParameterUpperBound(x.data(), 1, 1.0);
+    if (options.initial_law.kind == FrictionLawKind::F1bPiecewise) problem.SetParameterLowerBound(x.data(), 2, 1e-9);
+    if (options.fit_slope_reduction) {
+      problem.SetParameterLowerBound(x.data(), np, 1e-3);
+      problem.SetParameterUpperBound(x.data(), np, 2.0);
+    }
+    ceres::Solver::Options solver_options;
+    solver_options.max_num_iterations = options.max_iterations;
+    solver_options.linear_solver_type = ceres::DENSE_QR;
+    solver_options.num_threads = 1;
+    solver_options.function_tolerance = 1e-12;
+    solver_options.parameter_tolerance = 1e-12;
+    solver_options.gradient_tolerance = 1e-16;
+    // Restarts reset the trust region, which the small kinks of the discrete creep curve (elements switching
+    // between adhesion and slip) can collapse before the minimum is reached.
+    double previous = std::numeric_limits<double>::infinity();
+    for (int restart = 0; restart < 6; ++restart) {
+      ceres::Solve(solver_options, &problem, &summary);
+      if (!summary.IsSolutionUsable() || !(summary.final_cost < previous * (1.0 - 1e-3))) break;
+      previous = summary.final_cost;
+    }
+    if (summary.IsSolutionUsable() && summary.final_cost < best_cost) {
+      best_cost = summary.final_cost;
+      best = x;
+      best_summary = summary;
+    }
+  }
+  if (best.empty()) best = starts[0].second;
+  const std::vector<double>& x = best;
+  summary = best_summary;
 
   FrictionFitResult result;
-  result.converged = summary.IsSolutionUsable();
+  result.converged = std::isfinite(best_cost);
   result.law.kind = options.initial_law.kind;
   for (int i = 0; i < np; ++i) result.law.parameters[i] = x[i];
   result.slope_reduction = options.fit_slope_reduction ? x[np] : options.initial_slope_reduction;
   result.iterations = static_cast<int>(summary.iterations.size());
   result.report = summary.BriefReport();
-  std::vector<double> creepages;
-  for (const CreepCurvePoint& p : curve) creepages.push_back(p.creepage);
   const std::vector<double> model = TwinDiscCreepCurve(setup, result.law, result.slope_reduction, creepages);
   double sum2 = 0.0, sum_abs = 0.0;
   size_t largest = 0;

@@ -87,6 +87,7 @@ struct CurvedFastsimResult {
 struct CurvedFastsimWorkspace {
   FastsimPatch patch;
   std::vector<FastsimStrip> strips;
+  std::vector<double> shape_means;
 };
 
 // Throws InputError for a bad KP result (NaN, negative sizes), creepage/flexibility vectors of the wrong size,

@@ -57,6 +57,10 @@ struct FrictionFitOptions {
   double initial_slope_reduction = 1.0;
   bool fit_slope_reduction = true;
   int max_iterations = 200;
+  int refined_starts = 5;  // stage-2 Levenberg-Marquardt runs from the best stage-1 starts
+  // Residuals (model - measured) / measured instead of model - measured: the maximum-likelihood choice for a
+  // multiplicative (relative) measurement error.
+  bool relative_residuals = false;
 };
 
 struct FrictionFitResult {
@@ -69,8 +73,10 @@ struct FrictionFitResult {
   std::string report;                // Ceres brief report
 };
 
-// Least-squares identification (Ceres, numeric-diff cost) of the law parameters and k from a creep curve measured
-// on the twin disc `setup`. Parameters are kept >= 0 (alpha of F1a <= 1, k <= 2). Throws InputError for an empty
+// Least-squares identification of the law parameters and k from a creep curve measured on the twin disc `setup`.
+// Stage 1 (paper 002 §4: pick the best of a spectrum of generated creep curves): the initial guess with its rate /
+// threshold parameters (f1a beta, f1b gamma_c, f2 alpha, beta) scaled by 1/4, 1/2, 1, 2, 4; stage 2: Ceres bounded
+// Levenberg-Marquardt (numeric central differences) from the refined_starts best, the lowest final cost wins. Parameters are kept >= 0 (alpha of F1a <= 1, k <= 2). Throws InputError for an empty
 // curve or NaN entries.
 FrictionFitResult FitFrictionLaw(const std::vector<CreepCurvePoint>& curve, const TwinDiscSetup& setup,
                                  const FrictionFitOptions& options);

@@ -50,9 +50,10 @@ FastsimFlexibilities ReducedFlexibilities(const FastsimFlexibilities& flexibilit
 
 // Variable-friction FASTSIM on a strip patch (paper 002 §2.1, physics-reference §7.2). Same marching, patch,
 // creepage and sign conventions as SolveFastsimStrips; only the traction bound differs:
-//  * adhesion test without recuperation of static friction (Piotrowski): |p_trial| <= mu(gamma_prev) p_n with
-//    gamma_prev the slip of the previous element of the strip (0, i.e. the static mu(0), at the leading edge and
-//    after an adhesion element);
+//  * without recuperation of static friction (Piotrowski): along a strip the friction level does not come back,
+//    mu_eff(gamma) = mu(max(gamma, gamma_memory)), gamma_memory = the largest slip reached so far on the strip
+//    (0 at the leading edge); adhesion test |p_trial| <= mu_eff(0) p_n. Every adhesion/slip switch is then
+//    continuous in the creepages and the law's parameters;
 //  * slip elements: the slip modulus gamma solves gamma = |s(gamma)| with the slip of paper 002 eq. 5 (Gimenez et
 //    al.): the previous traction is taken at the friction level of this element (p_prev mu(gamma)/mu_prev), so the
 //    elastic part of the slip is mu(gamma) L dp_n/dx and falling laws do not run into the stick-slip branch;
