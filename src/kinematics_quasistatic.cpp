@@ -344,6 +344,9 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
     }
     BogieQuasiStaticReport rep = it->second.first;
     rep.bogie = b;
+    if (vehicle.secondary_lateral_stiffness_N_m > 0.0)
+      rep.secondary_lateral_deflection_m =
+          vehicle.carbody_mass_per_bogie_kg * base.a_nc / vehicle.secondary_lateral_stiffness_N_m;
     const std::array<double, kUnknowns>& p = it->second.second;
     if (rep.status != QuasiStaticStatus::Converged && result.status == QuasiStaticStatus::Converged)
       result.status = rep.status;

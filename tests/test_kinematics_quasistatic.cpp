@@ -141,8 +141,12 @@ TEST(QuasiStatic, LargeRadiusAtBalancedSpeedRunsOnTheTread) {
   QuasiStaticOptions o;
   const double R = 5000.0, cant = 0.02;
   const double V = std::sqrt(o.gravity_m_s2 * cant * R / o.cant_base_m);  // a_nc = 0
+  // The equilibrium lies next to the y where two interpenetration regions of the outer wheel merge into one
+  // patch (a jump of the contact forces, see the header), so the solver may end NotConverged at the
+  // least-squares point; the tread-region statement below holds for that point either way.
   const QuasiStaticResult r = SolveQuasiStaticCurving(v, Geometry(), Curve(R, V, cant), o);
   EXPECT_NEAR(r.unbalanced_acceleration_m_s2, 0.0, 1e-12);
+  ASSERT_NE(r.status, QuasiStaticStatus::NoContact);
   // flange clearance: first lateral shift towards the outer rail where the rigid contact reaches the flange
   double flange_y = 0.0;
   for (int k = 1; k <= 120 && flange_y == 0.0; ++k) {

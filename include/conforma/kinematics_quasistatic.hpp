@@ -109,6 +109,9 @@ struct BogieQuasiStaticReport {
   QuasiStaticStatus status = QuasiStaticStatus::NotConverged;
   double lateral_m = 0.0, yaw_rad = 0.0;  // frame, local track frame at the bogie centre
   double carbody_yaw_rad = 0.0;           // psi_c used for the secondary yaw moment
+  // Lateral deflection of the secondary stage, m_c a_nc / k_s,y (the carbody share's lateral force goes
+  // through it whatever its stiffness; 0 when the stiffness is 0).
+  double secondary_lateral_deflection_m = 0.0;
   int iterations = 0;                     // LM iterations (all attempts)
   int contact_evaluations = 0;            // SolveWheelContact calls
   double max_residual = 0.0;              // max |scaled residual| at the solution
