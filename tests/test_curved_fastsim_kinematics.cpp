@@ -4,7 +4,10 @@
 
 #include <cmath>
 
+#include "conforma/curved_fastsim.hpp"
+#include "conforma/load_control.hpp"
 #include "conforma/local_creepage.hpp"
+#include "kp_test_patches.hpp"
 
 using namespace conforma;
 
@@ -78,4 +81,46 @@ TEST(LocalCreepage, FlatPatchUniformCreepages) {
     EXPECT_NEAR(c.eta, 0.02, 1e-12);
     EXPECT_NEAR(c.phi_per_m, 3.0 / V, 1e-12);
   }
+}
+
+// A conformal patch (wheel of profile radius 10 mm in a 10.5 mm groove, conformal KP, 10 kN) in pure rolling: the
+// per-strip rigid kinematics give spins of opposite sign on the two sides; by symmetry the lateral force in the
+// reference frame and the moment about the longitudinal axis vanish. In full sliding (large xi) the tangential
+// traction is mu p_n everywhere: |sum p_t dA| along x = mu times the bound load, also with a slip-dependent law
+// (F/N -> mu(xi) at large xi).
+
+TEST(CurvedFastsimConformal, GrooveSymmetryAndFullSlip) {
+  Material material;
+  const double r0 = 0.420, V = 20.0;
+  const PatchGeometry patch = kp_test::GroovePatch(10.0e-3, 10.5e-3, r0, 12.0e-3, 241);
+  LoadControlOptions load;
+  load.kp = ConformalKpOptions(material);
+  const KpResult kp = SolveKikPiotrowskiForLoad(patch, 1.0e4, load);
+  ASSERT_EQ(kp.status, KpStatus::Ok);
+  ASSERT_TRUE(kp.is_conformal);
+  RigidBodyMotion motion;  // x, t0 = y, n0 = z frame; wheel centre above the reference point, rolling about y
+  motion.velocity_m_per_s = Eigen::Vector3d(V, 0.0, 0.0);
+  motion.angular_velocity_rad_per_s = Eigen::Vector3d(0.0, V / r0, 0.0);
+  motion.origin_m = Eigen::Vector3d(0.0, 0.0, r0);
+  motion.rolling_speed_m_per_s = V;
+  CurvedFastsimInput in;
+  in.material = material;
+  in.strip_creepages = StripCreepagesFromKinematics(motion, PatchReferenceFrame{}, kp);
+  const CurvedFastsimResult rolling = SolveCurvedFastsim(kp, in, CurvedFastsimOptions{});
+  ASSERT_NE(rolling.status, FastsimStatus::NoContact);
+  EXPECT_LT(in.strip_creepages.front().phi_per_m * in.strip_creepages.back().phi_per_m, 0.0);
+  const double muN = 0.3 * rolling.bound_load_N;
+  EXPECT_NEAR(rolling.force_reference_N.y(), 0.0, 1e-6 * muN);
+  EXPECT_NEAR(rolling.moment_reference_Nm.x(), 0.0, 1e-6 * muN * 1e-3);
+  std::printf("groove, pure rolling: Fx = %.1f N, Fn-frame force (%.3g, %.3g, %.3g) N, slip area %.1f %%\n",
+              rolling.fx_N, rolling.force_reference_N.x(), rolling.force_reference_N.y(),
+              rolling.force_reference_N.z(), 100 * rolling.slip_area_m2 / (rolling.slip_area_m2 + rolling.adhesion_area_m2));
+  // Full sliding forwards (xi0 = 0.1 on top of the kinematics).
+  motion.velocity_m_per_s.x() = V * 1.1;
+  in.strip_creepages = StripCreepagesFromKinematics(motion, PatchReferenceFrame{}, kp);
+  const CurvedFastsimResult sliding = SolveCurvedFastsim(kp, in, CurvedFastsimOptions{});
+  EXPECT_NEAR(std::hypot(sliding.fx_N, sliding.fs_N), muN, 0.005 * muN);
+  in.friction = FrictionLaw::F1a(0.5, 0.6, 50.0);
+  const CurvedFastsimResult variable = SolveCurvedFastsim(kp, in, CurvedFastsimOptions{});
+  EXPECT_NEAR(-variable.fx_N / variable.bound_load_N, in.friction(0.1), 0.01 * in.friction(0.1));
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "conforma/curved_fastsim.hpp"
 #include "conforma/error.hpp"
@@ -58,6 +59,8 @@ TEST(Sdec, KpOnHertzianGapGivesHertzAxes) {
     const KpResult kpec = SolveKikPiotrowskiForApproach(patch, h.approach_m, KpecOptions(steel));
     ASSERT_EQ(kpec.status, KpStatus::Ok);
     const SdecResult r = ReduceToSdec(kpec, steel);
+    std::printf("a/b %.1f: KPEC SDEC a %+.3f %%, b %+.3f %% vs Hertz\n", ratio, 100 * (r.a_m / h.a_m - 1),
+                100 * (r.b_m / h.b_m - 1));
     EXPECT_NEAR(r.a_m, h.a_m, 0.01 * h.a_m) << ratio;
     EXPECT_NEAR(r.b_m, h.b_m, 0.01 * h.b_m) << ratio;
     // Planar KP (eps = 0.55) is not elliptic-exact in size, but its patch shape is an ellipse: the SDEC keeps the
