@@ -1,0 +1,259 @@
+// C API implementation (conforma_c.h): a thin shell over the C++ pipeline (wheel_contact.hpp). Every entry point
+// catches every exception; the handle is immutable after creation except for its mutex-guarded last-error text.
+#include "conforma_c.h"
+
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <string>
+
+#include <Eigen/Geometry>
+
+#include "conforma/error.hpp"
+#include "interop.hpp"
+
+struct conforma_model {
+  std::unique_ptr<conforma::WheelsetTrackGeometry> geometry;
+  conforma::WheelContactOptions contact;  // model, material, friction, discretisation (load set per call)
+  mutable std::mutex error_mutex;
+  mutable std::string last_error;
+};
+
+namespace {
+
+using conforma::Side;
+
+void CopyText(const std::string& text, char* buffer, size_t size) {
+  if (!buffer || size == 0) return;
+  const size_t n = text.size() < size - 1 ? text.size() : size - 1;
+  std::memcpy(buffer, text.data(), n);
+  buffer[n] = '\0';
+}
+
+void Store(double out[3], const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) out[i] = v[i];
+}
+
+void FillWheel(const conforma::WheelsetTrackGeometry& geometry, Side side, const conforma::WheelContactReport& r,
+               conforma_wheel_result* w) {
+  using conforma::WheelContactStatus;
+  w->status = r.status == WheelContactStatus::Ok          ? CONFORMA_WHEEL_OK
+              : r.status == WheelContactStatus::NoContact ? CONFORMA_WHEEL_NO_CONTACT
+                                                          : CONFORMA_WHEEL_NOT_CONVERGED;
+  w->patches_found = static_cast<int>(r.patches.size());
+  w->vertical_position_m = r.pose.vertical_m;
+  w->load_iterations = r.load_iterations;
+  const Eigen::Vector3d centre = conforma::interop::WheelCentre(geometry, side, r.pose);
+  Store(w->wheel_centre_track_m, centre);
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
+  for (size_t j = 0; j < r.patches.size(); ++j) {
+    const conforma::PatchReport& p = r.patches[j];
+    const conforma::interop::TrackFramePatch t = conforma::interop::ToTrackFrame(geometry, side, p);
+    force += t.force_N;
+    moment += (t.point_m - centre).cross(t.force_N) + t.spin_moment_Nm;
+    if (j >= static_cast<size_t>(CONFORMA_MAX_PATCHES)) continue;
+    conforma_patch_result& o = w->patch[w->patch_count++];
+    o.normal_force_N = p.fn_N;
+    o.longitudinal_force_N = p.fx_N;
+    o.lateral_force_N = p.fy_N;
+    o.spin_moment_Nm = p.mz_Nm;
+    Store(o.force_track_N, t.force_N);
+    Store(o.spin_moment_track_Nm, t.spin_moment_Nm);
+    Store(o.contact_point_track_m, t.point_m);
+    Store(o.normal_track, t.normal);
+    o.contact_angle_rad = p.contact_angle_rad;
+    o.rolling_radius_m = p.rolling_radius_m;
+    o.approach_m = p.approach_m;
+    o.area_m2 = p.area_m2;
+    o.pmax_Pa = p.pmax_Pa;
+    o.adhesion_area_m2 = p.adhesion_area_m2;
+    o.slip_area_m2 = p.slip_area_m2;
+    o.frictional_power_W = p.frictional_power_W;
+    o.creepage_longitudinal = p.xi;
+    o.creepage_lateral = p.eta;
+    o.creepage_spin_per_m = p.phi_per_m;
+    o.conformity_index_deg = p.alpha_c_deg;
+    o.is_conformal = p.is_conformal ? 1 : 0;
+  }
+  Store(w->force_track_N, force);
+  Store(w->moment_track_Nm, moment);
+}
+
+void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, const conforma_evaluation_options& e,
+              conforma_wheelset_result* result) {
+  using conforma::InputError;
+  conforma::require_finite(s.lateral_m, "state.lateral_m");
+  conforma::require_finite(s.vertical_m, "state.vertical_m");
+  conforma::require_finite(s.roll_rad, "state.roll_rad");
+  conforma::require_finite(s.yaw_rad, "state.yaw_rad");
+  conforma::require_positive(s.forward_speed_m_s, "state.forward_speed_m_s");
+  conforma::require_finite(s.lateral_velocity_m_s, "state.lateral_velocity_m_s");
+  conforma::require_finite(s.yaw_rate_rad_s, "state.yaw_rate_rad_s");
+  conforma::require_finite(s.axle_angular_velocity_rad_s, "state.axle_angular_velocity_rad_s");
+  if (e.normal_mode != CONFORMA_LOAD_CONTROL && e.normal_mode != CONFORMA_GIVEN_APPROACH)
+    throw InputError("options.normal_mode must be CONFORMA_LOAD_CONTROL (0) or CONFORMA_GIVEN_APPROACH (1), not " +
+                     std::to_string(e.normal_mode));
+  const bool load_control = e.normal_mode == CONFORMA_LOAD_CONTROL;
+  if (load_control) {
+    conforma::require_non_negative(e.vertical_load_N[0], "options.vertical_load_N[0] (left)");
+    conforma::require_non_negative(e.vertical_load_N[1], "options.vertical_load_N[1] (right)");
+  }
+  conforma::WheelsetPose pose{s.lateral_m, s.vertical_m, s.roll_rad, s.yaw_rad};
+  if (e.rigid_equilibrium) {
+    conforma::require_finite(e.approach_m, "options.approach_m");
+    const conforma::EquilibriumResult eq = model.geometry->SolveRigidEquilibrium(s.lateral_m, s.yaw_rad, pose);
+    if (eq.status == conforma::EquilibriumStatus::NoContact)
+      throw InputError("no rigid contact at state.lateral_m = " + std::to_string(s.lateral_m) + " m");
+    pose = eq.pose;
+    if (!load_control) pose.vertical_m -= e.approach_m;
+  }
+  result->roll_rad = pose.roll_rad;
+  const conforma::WheelsetVelocity velocity{s.forward_speed_m_s, s.lateral_velocity_m_s, s.yaw_rate_rad_s,
+                                            s.axle_angular_velocity_rad_s};
+  conforma::WheelContactOptions options = model.contact;  // per-call copy: the handle stays untouched
+  options.load_tolerance = e.load_tolerance;
+  for (Side side : {Side::Left, Side::Right}) {
+    const int i = conforma::side_index(side);
+    options.vertical_load_N = load_control ? e.vertical_load_N[i] : -1.0;
+    const conforma::WheelContactReport r = SolveWheelContact(*model.geometry, side, pose, velocity, options);
+    FillWheel(*model.geometry, side, r, &result->wheel[i]);
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+void conforma_default_track_params(conforma_track_params* t) {
+  if (!t) return;
+  t->wheel_profile = "S1002";
+  t->rail_profile = "60E1";
+  t->rail_inclination_rad = -1.0;
+  t->gauge_m = 1.435;
+  t->gauge_height_m = 0.014;
+  t->flange_back_distance_m = 1.360;
+  t->flange_back_position_m = -0.070;
+  t->nominal_radius_m = 0.46;
+}
+
+void conforma_default_contact_params(conforma_contact_params* c) {
+  if (!c) return;
+  const conforma::WheelContactOptions d;
+  c->model = "conformal";
+  c->shear_modulus_Pa = d.material.shear_modulus_Pa;
+  c->poisson_ratio = d.material.poisson_ratio;
+  c->friction_coefficient = d.friction_coefficient;
+  c->fastsim_elements = d.fastsim_elements;
+  c->kp_strips = d.kp_strips;
+}
+
+void conforma_default_evaluation_options(conforma_evaluation_options* o) {
+  if (!o) return;
+  o->normal_mode = CONFORMA_LOAD_CONTROL;
+  o->vertical_load_N[0] = o->vertical_load_N[1] = 10e3;
+  o->rigid_equilibrium = 0;
+  o->approach_m = 0.05e-3;
+  o->load_tolerance = conforma::WheelContactOptions().load_tolerance;
+}
+
+conforma_status conforma_model_create(const conforma_track_params* track, const conforma_contact_params* contact,
+                                      conforma_model** model, char* error_text, size_t error_text_size) {
+  CopyText("", error_text, error_text_size);
+  if (!model) {
+    CopyText("conforma_model_create: model (output pointer) is NULL", error_text, error_text_size);
+    return CONFORMA_ERROR_NULL;
+  }
+  *model = nullptr;
+  if (!track || !contact || !track->wheel_profile || !track->rail_profile || !contact->model) {
+    CopyText("conforma_model_create: track, contact, a profile name or the model name is NULL", error_text,
+             error_text_size);
+    return CONFORMA_ERROR_NULL;
+  }
+  try {
+    conforma::interop::TrackSpec spec;
+    spec.wheel = track->wheel_profile;
+    spec.rail = track->rail_profile;
+    if (track->rail_inclination_rad >= 0.0) spec.inclination_rad = track->rail_inclination_rad;
+    spec.gauge_m = track->gauge_m;
+    spec.gauge_height_m = track->gauge_height_m;
+    spec.flange_back_distance_m = track->flange_back_distance_m;
+    spec.flange_back_position_m = track->flange_back_position_m;
+    spec.nominal_radius_m = track->nominal_radius_m;
+    auto m = std::make_unique<conforma_model>();
+    m->contact.model = conforma::ParseContactModel(contact->model);
+    m->contact.material.shear_modulus_Pa = contact->shear_modulus_Pa;
+    m->contact.material.poisson_ratio = contact->poisson_ratio;
+    m->contact.friction_coefficient = contact->friction_coefficient;
+    m->contact.fastsim_elements = contact->fastsim_elements;
+    m->contact.kp_strips = contact->kp_strips;
+    m->contact.validate();
+    m->geometry = conforma::interop::MakeTrackGeometry(spec);
+    *model = m.release();
+    return CONFORMA_OK;
+  } catch (const conforma::InputError& e) {
+    CopyText(e.what(), error_text, error_text_size);
+    return CONFORMA_ERROR_INPUT;
+  } catch (const std::exception& e) {
+    CopyText(std::string("internal error: ") + e.what(), error_text, error_text_size);
+    return CONFORMA_ERROR_INTERNAL;
+  } catch (...) {
+    CopyText("internal error", error_text, error_text_size);
+    return CONFORMA_ERROR_INTERNAL;
+  }
+}
+
+void conforma_model_destroy(conforma_model* model) { delete model; }
+
+conforma_status conforma_evaluate(const conforma_model* model, const conforma_wheelset_state* state,
+                                  const conforma_evaluation_options* options, conforma_wheelset_result* result) {
+  if (!result) return CONFORMA_ERROR_NULL;
+  std::memset(result, 0, sizeof *result);
+  if (!model || !state) {
+    CopyText("conforma_evaluate: model or state is NULL", result->error_message, sizeof result->error_message);
+    return CONFORMA_ERROR_NULL;
+  }
+  conforma_evaluation_options defaults;
+  conforma_default_evaluation_options(&defaults);
+  conforma_status status = CONFORMA_OK;
+  std::string message;
+  try {
+    Evaluate(*model, *state, options ? *options : defaults, result);
+  } catch (const conforma::InputError& e) {
+    status = CONFORMA_ERROR_INPUT, message = e.what();
+  } catch (const std::exception& e) {
+    status = CONFORMA_ERROR_INTERNAL, message = std::string("internal error: ") + e.what();
+  } catch (...) {
+    status = CONFORMA_ERROR_INTERNAL, message = "internal error";
+  }
+  if (status != CONFORMA_OK) {
+    std::memset(result, 0, sizeof *result);
+    CopyText(message, result->error_message, sizeof result->error_message);
+    try {
+      std::lock_guard<std::mutex> lock(model->error_mutex);
+      model->last_error = message;
+    } catch (...) {
+    }
+  }
+  return status;
+}
+
+size_t conforma_model_last_error(const conforma_model* model, char* buffer, size_t buffer_size) {
+  if (!model) {
+    CopyText("", buffer, buffer_size);
+    return 0;
+  }
+  try {
+    std::lock_guard<std::mutex> lock(model->error_mutex);
+    CopyText(model->last_error, buffer, buffer_size);
+    return model->last_error.size();
+  } catch (...) {
+    CopyText("", buffer, buffer_size);
+    return 0;
+  }
+}
+
+int conforma_api_version(void) { return CONFORMA_C_API_VERSION; }
+
+}  // extern "C"

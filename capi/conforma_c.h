@@ -1,0 +1,202 @@
+/* Conforma C API: one wheelset contact evaluation per call, for multibody co-simulation.
+ *
+ * A multibody code (Simpack, GENSYS, Universal Mechanism, VAMPIRE, an own integrator) creates ONE model handle
+ * per wheelset/track combination at start-up and then, at every time step, calls conforma_evaluate() with the
+ * wheelset pose and velocities. The call returns, per wheel, the forces and moments on the wheel and the
+ * contact state (patches, contact points, areas, maximum pressure). Everything crosses the boundary as plain C
+ * structs and arrays; no C++ exception ever leaves the library; every function returns a conforma_status.
+ *
+ * UNITS: SI throughout (m, rad, N, N m, Pa, s). Profile FILES are in mm as the field writes them.
+ *
+ * FRAMES (as include/conforma/geometry.hpp; the C++ side is tested against the Manchester A-2.2 reference):
+ *   Track frame, right-handed: x along the track in the rolling direction, y lateral positive towards the LEFT
+ *   rail, z up; the top of the rails is at z = 0.
+ *   Wheelset pose: lateral shift y (+ towards the left rail), vertical position z of the axle centre above
+ *   (rail-top level + mean nominal radius), roll (about +x, + raises the LEFT wheel), yaw (about +z, + turns
+ *   the heading towards the left rail).
+ *   Wheel index 0 = LEFT, 1 = RIGHT (CONFORMA_LEFT, CONFORMA_RIGHT).
+ *   Per patch the forces are also given in the patch's contact frame (Kalker / CONTACT convention, the right
+ *   wheel reported as the mirror image of a left wheel): longitudinal along the track, lateral along the rail
+ *   profile towards the FIELD side, normal along the outward rail normal; contact angle + towards the gauge side.
+ *   All forces and moments are those exerted BY THE RAIL ON THE WHEEL.
+ *
+ * NORMAL PROBLEM: either load control (each wheel pushed down until the vertical components of its patch
+ * forces carry the given vertical load; the pose's vertical_m and roll_rad are then only the starting point)
+ * or given approach (the pose is used as it stands: the multibody code owns the vertical dynamics). Optionally
+ * (rigid_equilibrium = 1) the vertical position and roll are first set to the rigid contact of both wheels at
+ * the given y and yaw, exactly as the command line `conforma contact` does; in approach mode the wheelset is
+ * then lowered by approach_m below that rigid position.
+ *
+ * THREAD SAFETY: a model handle is immutable after conforma_model_create(). conforma_evaluate() on the SAME
+ * handle may be called from any number of threads at once; each call uses only its own stack/heap workspace.
+ * The only shared mutable datum is the handle's last-error text, which is guarded by a mutex and copied out by
+ * conforma_model_last_error(); each call's own error text is also returned in its result struct.
+ *
+ * Minimal use (capi/examples/minimal.c is built and run by the tests):
+ *     conforma_track_params track; conforma_contact_params contact; conforma_model* model;
+ *     char err[256];
+ *     conforma_default_track_params(&track);            // S1002 on 60E1 at 1:40, standard gauge
+ *     conforma_default_contact_params(&contact);        // conformal model, G = 82 GPa, nu = 0.28, mu = 0.3
+ *     if (conforma_model_create(&track, &contact, &model, err, sizeof err) != CONFORMA_OK) { puts(err); ... }
+ *     conforma_wheelset_state state = {0};  state.lateral_m = 0.003;  state.forward_speed_m_s = 20.0;
+ *     state.axle_angular_velocity_rad_s = 20.0 / 0.46;
+ *     conforma_evaluation_options eval;  conforma_default_evaluation_options(&eval);
+ *     conforma_wheelset_result result;
+ *     if (conforma_evaluate(model, &state, &eval, &result) == CONFORMA_OK) ... result.wheel[0].force_track_N ...
+ *     conforma_model_destroy(model);
+ */
+#ifndef CONFORMA_C_H
+#define CONFORMA_C_H
+
+#include <stddef.h>
+
+#if defined(_WIN32)
+#define CONFORMA_C_EXPORT __declspec(dllexport)
+#elif defined(__GNUC__)
+#define CONFORMA_C_EXPORT __attribute__((visibility("default")))
+#else
+#define CONFORMA_C_EXPORT
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Version of this interface; bumped on any incompatible change of a struct or function below. */
+#define CONFORMA_C_API_VERSION 1
+#define CONFORMA_MAX_PATCHES 4    /* patches stored per wheel (more are counted in patches_found) */
+#define CONFORMA_ERROR_TEXT 256   /* size of the error texts, including the terminating 0 */
+#define CONFORMA_LEFT 0
+#define CONFORMA_RIGHT 1
+
+typedef enum conforma_status {
+  CONFORMA_OK = 0,
+  CONFORMA_ERROR_INPUT = 1,     /* bad input: the error text names the parameter, file and line */
+  CONFORMA_ERROR_NULL = 2,      /* a required pointer argument was NULL */
+  CONFORMA_ERROR_INTERNAL = 3   /* unexpected failure inside the library (out of memory, ...) */
+} conforma_status;
+
+typedef enum conforma_wheel_status {
+  CONFORMA_WHEEL_OK = 0,
+  CONFORMA_WHEEL_NO_CONTACT = 1,     /* no interpenetration (wheel lifted or load 0): all forces 0 */
+  CONFORMA_WHEEL_NOT_CONVERGED = 2   /* load control did not reach the load within 10x its tolerance */
+} conforma_wheel_status;
+
+typedef enum conforma_normal_mode {
+  CONFORMA_LOAD_CONTROL = 0,   /* vertical load per wheel given (vertical_load_N) */
+  CONFORMA_GIVEN_APPROACH = 1  /* pose used as given (multibody coupling) */
+} conforma_normal_mode;
+
+/* Track and profiles. Profile strings: a built-in name ("S1002" wheel; "60E1", "54E1", "50E6", "50E4" rail) or a
+ * file path (.prw/.prr Simpack, .whl/.ban MiniProf, .txt/.csv/.dat two columns y z in mm). Both wheels share the
+ * wheel profile, both rails the rail profile. */
+typedef struct conforma_track_params {
+  const char* wheel_profile;       /* default "S1002" */
+  const char* rail_profile;        /* default "60E1" */
+  double rail_inclination_rad;     /* < 0: default (1:40 for built-in rails, 0 for files, which are canted) */
+  double gauge_m;                  /* 1.435, measured gauge_height_m below the rail top */
+  double gauge_height_m;           /* 0.014 */
+  double flange_back_distance_m;   /* 1.360 */
+  double flange_back_position_m;   /* -0.070: wheel-profile y of the flange back */
+  double nominal_radius_m;         /* 0.46: taping-line radius of both wheels */
+} conforma_track_params;
+
+/* Contact model and material. */
+typedef struct conforma_contact_params {
+  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "reference" (slow, normal only) */
+  double shear_modulus_Pa;         /* 82e9 */
+  double poisson_ratio;            /* 0.28 */
+  double friction_coefficient;     /* 0.3 */
+  int fastsim_elements;            /* 30: FASTSIM elements per strip */
+  int kp_strips;                   /* 31: strips across the contact (KP models) */
+} conforma_contact_params;
+
+/* Wheelset pose and velocities in the track frame. */
+typedef struct conforma_wheelset_state {
+  double lateral_m, vertical_m, roll_rad, yaw_rad;
+  double forward_speed_m_s;            /* V > 0 along +x */
+  double lateral_velocity_m_s;         /* dy/dt */
+  double yaw_rate_rad_s;               /* d(yaw)/dt */
+  double axle_angular_velocity_rad_s;  /* about the axle, + rolling forwards (V / r0 for pure rolling) */
+} conforma_wheelset_state;
+
+typedef struct conforma_evaluation_options {
+  int normal_mode;                 /* conforma_normal_mode; default CONFORMA_LOAD_CONTROL */
+  double vertical_load_N[2];       /* load control: per wheel [left, right], >= 0; default 10e3 each */
+  int rigid_equilibrium;           /* 1: vertical_m and roll_rad from the rigid contact of both wheels at the given
+                                      lateral_m and yaw_rad (as `conforma contact`); 0 (default): as given */
+  double approach_m;               /* rigid_equilibrium with CONFORMA_GIVEN_APPROACH: push-down below rigid contact */
+  double load_tolerance;           /* relative tolerance of load control; default 1e-6 */
+} conforma_evaluation_options;
+
+typedef struct conforma_patch_result {
+  /* contact frame of the patch (Kalker's convention, right wheel mirrored) */
+  double normal_force_N;           /* along the outward rail normal */
+  double longitudinal_force_N;     /* creep force along the track */
+  double lateral_force_N;          /* creep force along the rail profile, + towards the field side */
+  double spin_moment_Nm;           /* creep moment about the normal */
+  /* track frame */
+  double force_track_N[3];         /* resultant of pressure and creep forces */
+  double spin_moment_track_Nm[3];  /* the spin moment as a vector along the normal */
+  double contact_point_track_m[3]; /* reference point of the patch on the rail surface */
+  double normal_track[3];          /* outward rail normal (unit) */
+  double contact_angle_rad;        /* + towards the gauge side (flange contact about +1.1 rad) */
+  double rolling_radius_m;
+  double approach_m;               /* approach of the patch along its reference normal */
+  /* contact state */
+  double area_m2, pmax_Pa, adhesion_area_m2, slip_area_m2, frictional_power_W;
+  double creepage_longitudinal, creepage_lateral, creepage_spin_per_m;  /* at the reference point */
+  double conformity_index_deg;     /* alpha_c (paper 003 eq. 13); 0 for the Hertz model */
+  int is_conformal;                /* 1 when the KP solver treated the patch as conformal */
+} conforma_patch_result;
+
+typedef struct conforma_wheel_result {
+  int status;                      /* conforma_wheel_status */
+  int patch_count;                 /* patches stored in patch[] (<= CONFORMA_MAX_PATCHES) */
+  int patches_found;               /* all patches (their forces are in the totals even beyond the stored ones) */
+  conforma_patch_result patch[CONFORMA_MAX_PATCHES];  /* along the rail, gauge side first */
+  double force_track_N[3];         /* sum over the patches */
+  double moment_track_Nm[3];       /* about the wheel centre (axle point in the taping-line plane), track frame */
+  double wheel_centre_track_m[3];
+  double vertical_position_m;      /* the pose's vertical_m the wheel was solved at (pushed down in load control) */
+  int load_iterations;
+} conforma_wheel_result;
+
+typedef struct conforma_wheelset_result {
+  conforma_wheel_result wheel[2];  /* [CONFORMA_LEFT, CONFORMA_RIGHT] */
+  double roll_rad;                 /* roll used (solved with rigid_equilibrium) */
+  char error_message[CONFORMA_ERROR_TEXT];  /* "" on success */
+} conforma_wheelset_result;
+
+typedef struct conforma_model conforma_model;  /* opaque handle */
+
+/* Defaults (the values in the comments above). */
+CONFORMA_C_EXPORT void conforma_default_track_params(conforma_track_params* track);
+CONFORMA_C_EXPORT void conforma_default_contact_params(conforma_contact_params* contact);
+CONFORMA_C_EXPORT void conforma_default_evaluation_options(conforma_evaluation_options* options);
+
+/* Builds the model: loads/generates the profiles, mounts the rails, prepares the geometry tables. On failure
+ * *model is NULL and error_text (if not NULL) receives the message, truncated to error_text_size. */
+CONFORMA_C_EXPORT conforma_status conforma_model_create(const conforma_track_params* track,
+                                                        const conforma_contact_params* contact,
+                                                        conforma_model** model, char* error_text,
+                                                        size_t error_text_size);
+/* Frees the model (NULL is ignored). No evaluation may be running on it. */
+CONFORMA_C_EXPORT void conforma_model_destroy(conforma_model* model);
+
+/* One wheelset evaluation (both wheels). `options` may be NULL (defaults). On error the result's error_message and
+ * the handle's last error carry the text; the result is zeroed otherwise. */
+CONFORMA_C_EXPORT conforma_status conforma_evaluate(const conforma_model* model, const conforma_wheelset_state* state,
+                                                    const conforma_evaluation_options* options,
+                                                    conforma_wheelset_result* result);
+
+/* Copies the most recent error text of any call on this handle ("" if none) into buffer; returns its full length. */
+CONFORMA_C_EXPORT size_t conforma_model_last_error(const conforma_model* model, char* buffer, size_t buffer_size);
+
+CONFORMA_C_EXPORT int conforma_api_version(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CONFORMA_C_H */
