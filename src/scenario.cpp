@@ -18,7 +18,12 @@
 namespace conforma {
 
 const char* to_string(KinematicsProvider provider) {
-  return provider == KinematicsProvider::QuasiStatic ? "quasistatic" : "centred";
+  switch (provider) {
+    case KinematicsProvider::QuasiStatic: return "quasistatic";
+    case KinematicsProvider::Centred: return "centred";
+    case KinematicsProvider::Kinematic: return "kinematic";
+  }
+  return "?";
 }
 
 namespace {
@@ -285,7 +290,8 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
       const std::string p = r.text(k["provider"], "kinematics.provider");
       if (p == "quasistatic") s.kinematics.provider = KinematicsProvider::QuasiStatic;
       else if (p == "centred") s.kinematics.provider = KinematicsProvider::Centred;
-      else r.fail("kinematics.provider", "unknown provider '" + p + "' (quasistatic, centred)");
+      else if (p == "kinematic") s.kinematics.provider = KinematicsProvider::Kinematic;
+      else r.fail("kinematics.provider", "unknown provider '" + p + "' (quasistatic, centred, kinematic)");
     }
     if (k["tangent_amplitude_mm"]) s.kinematics.tangent_amplitude_m = 1e-3 * r.number(k["tangent_amplitude_mm"], "kinematics.tangent_amplitude_mm");
     if (k["tangent_phases"]) s.kinematics.tangent_phases = r.integer(k["tangent_phases"], "kinematics.tangent_phases");

@@ -1,6 +1,7 @@
 // The wear loop over wheel steps and rail steps (wear_simulation.hpp; paper 003 §6 and Fig. 11).
 #include "conforma/wear_simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -21,15 +22,34 @@ const char* to_string(WearSimulationStatus status) {
 WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m) {
   WheelWearDepths d;
   const double h = 0.1e-3;
+  const std::vector<Eigen::Vector2d> w = worn.sample(h);
   const int n = static_cast<int>(std::floor(initial.length() / h));
+  size_t guess = 0;
   for (int i = 0; i <= n; ++i) {
     const double s = i * h;
     const Eigen::Vector2d q = initial.position(s);
     const Eigen::Vector2d normal = initial.normal(s);
-    const Eigen::Vector2d p = worn.position(worn.closest_s(q));
-    // depth along the initial outward normal (material removed: the worn surface lies inside)
-    const double depth = (q - p).dot(normal);
-    if (q.y() > flange_root_y_m) d.tread_m = std::max(d.tread_m, depth);
+    // nearest sample of the worn profile (both curves are ordered the same way: search forward from the last hit,
+    // then a full scan if the distance is not small)
+    size_t best = guess;
+    double best_d2 = (w[guess] - q).squaredNorm();
+    for (size_t k = 0; k < w.size(); ++k) {
+      const double d2 = (w[k] - q).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = k;
+    }
+    guess = best;
+    // refine on the chord to the better neighbour, then take the depth along the initial outward normal
+    Eigen::Vector2d p = w[best];
+    for (int nb : {-1, 1}) {
+      const long j = static_cast<long>(best) + nb;
+      if (j < 0 || j >= static_cast<long>(w.size())) continue;
+      const Eigen::Vector2d e = w[j] - w[best];
+      const double t = std::clamp((q - w[best]).dot(e) / e.squaredNorm(), 0.0, 1.0);
+      const Eigen::Vector2d c = w[best] + t * e;
+      if ((c - q).squaredNorm() < (p - q).squaredNorm()) p = c;
+    }
+    const double depth = (q - p).dot(normal);  // > 0: the worn surface lies inside (material removed)
+    if (q[0] > flange_root_y_m) d.tread_m = std::max(d.tread_m, depth);
     else d.flange_m = std::max(d.flange_m, depth);
   }
   return d;
@@ -53,8 +73,9 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   const int steps = options.steps >= 0 ? options.steps : scenario.update.steps;
   const double total_km = options.total_km >= 0.0 ? options.total_km : scenario.update.total_km;
   if (steps < 1) throw InputError("wear simulation: steps must be >= 1");
+  auto fallbacks = std::make_shared<std::atomic<int>>(0);
   const KinematicsFunction kinematics =
-      kinematics_in ? kinematics_in : MakeScenarioKinematics(scenario, options.model, contact);
+      kinematics_in ? kinematics_in : MakeScenarioKinematics(scenario, options.model, contact, fallbacks);
 
   StepWearOptions step_options;
   step_options.contact.model = options.model;
@@ -87,6 +108,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       std::vector<KinematicsSeries> series(scenario.classes.size());
       std::vector<std::string> errors(scenario.classes.size());
       const int nc = static_cast<int>(scenario.classes.size());
+      const int fallbacks_before = fallbacks->load();
 #pragma omp parallel for schedule(dynamic, 1)
       for (int c = 0; c < nc; ++c) {
         try {
@@ -113,6 +135,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.step = j;
       rec.samples = wear.samples;
       rec.failed_contacts = wear.failed_contacts;
+      rec.kinematics_fallbacks = fallbacks->load() - fallbacks_before;
       rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
       rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
       rec.validity = up.validity;

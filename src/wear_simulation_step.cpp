@@ -179,9 +179,15 @@ KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrack
   return s;
 }
 
-KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact) {
+KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
+                                          std::shared_ptr<std::atomic<int>> fallbacks) {
   if (scenario.kinematics.provider == KinematicsProvider::Centred) {
     return [scenario](const WheelsetTrackGeometry& g, const TrackClass& tc, int) { return CentredKinematics(scenario, g, tc); };
+  }
+  if (scenario.kinematics.provider == KinematicsProvider::Kinematic) {
+    return [scenario](const WheelsetTrackGeometry& g, const TrackClass& tc, int) {
+      return KinematicCurvingEstimate(scenario, g, tc);
+    };
   }
   QuasiStaticOptions qo;
   qo.contact.model = model;
@@ -190,13 +196,22 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
   qo.tangent_phases = scenario.kinematics.tangent_phases;
   qo.cant_base_m = scenario.kinematics.cant_base_m;
   qo.free_axle_rotation = scenario.kinematics.free_axle_rotation;
-  const VehicleParameters vehicle = scenario.vehicle;
-  return [qo, vehicle, contact](const WheelsetTrackGeometry& g, const TrackClass& tc, int) {
+  return [qo, scenario, contact, fallbacks](const WheelsetTrackGeometry& g, const TrackClass& tc, int) {
     const WheelContactFunction f = [&contact](const WheelsetTrackGeometry& gg, Side sd, const WheelsetPose& p,
                                               const WheelsetVelocity& v, const WheelContactOptions& o) {
       return contact(gg, sd, p, v, o);
     };
-    return SolveQuasiStaticCurving(vehicle, g, tc, qo, f).series;
+    QuasiStaticResult r = SolveQuasiStaticCurving(scenario.vehicle, g, tc, qo, f);
+    bool accept = r.status != QuasiStaticStatus::NoContact && !r.series.samples.empty();
+    if (accept && r.status == QuasiStaticStatus::NotConverged) {
+      const double c = TrackClassCurvature(tc);
+      const double limit = std::abs(FlangeContactShift(g, c >= 0.0 ? 1.0 : -1.0)) + 3e-3;
+      for (const KinematicsSample& s : r.series.samples)
+        if (std::abs(s.pose.lateral_m) > limit) accept = false;
+    }
+    if (accept) return r.series;
+    if (fallbacks) ++*fallbacks;
+    return KinematicCurvingEstimate(scenario, g, tc);
   };
 }
 

@@ -5,10 +5,11 @@
 // the key and the file):
 //   name: default_metro
 //   vehicle: { base: metro | minuetto, bogie_count: 5, wheelbase_m: 2.0, ... any VehicleParameters field }
-//   kinematics: { provider: quasistatic | centred, tangent_amplitude_mm: 3, tangent_phases: 8,
+//   kinematics: { provider: quasistatic | centred | kinematic, tangent_amplitude_mm: 3, tangent_phases: 8,
 //                 cant_base_m: 1.5, free_axle_rotation: true }
 //       quasistatic: kinematics_quasistatic.hpp (Ceres, contact model in the loop) -- the default;
-//       centred:     every wheelset centred and unyawed, yaw rate V/R, pure rolling (fast, for tests).
+//       centred:     every wheelset centred and unyawed, yaw rate V/R, pure rolling (fast, for tests);
+//       kinematic:   the kinematic curving estimate of wear_simulation.hpp (flange contact + angle of attack).
 //   track: { gauge_mm: 1435, rail_inclination: "1:20" | 0.05 (rad) }
 //   profiles: { wheel: S1002 | <file>, rail: 50E4 | 60E1 | 54E1 | 50E6 | <file>, wheel_radius_mm: 355.5 }
 //       a built-in rail is generated UNINCLINED and mounted with track.rail_inclination; a rail file is mounted
@@ -38,7 +39,7 @@
 
 namespace conforma {
 
-enum class KinematicsProvider { QuasiStatic, Centred };
+enum class KinematicsProvider { QuasiStatic, Centred, Kinematic };
 const char* to_string(KinematicsProvider provider);
 
 struct ScenarioKinematics {

@@ -17,6 +17,8 @@
 // Determinism: samples are evaluated in parallel (OpenMP) into per-sample slots and summed sequentially in a
 // fixed order, so the result does not depend on the number of threads.
 #include <array>
+#include <atomic>
+#include <memory>
 #include <functional>
 #include <string>
 #include <vector>
@@ -65,8 +67,23 @@ StepWear ComputeStepWear(const WheelsetTrackGeometry& geometry, const std::vecto
 // Centred wheelsets: y = 0, psi = 0 at the rigid equilibrium, yaw rate V/R, axle speed V/r0, static wheel loads.
 KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrackGeometry& geometry,
                                    const TrackClass& track_class);
-// The scenario's provider (quasi-static curving with `model` in the loop, or centred).
-KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact);
+// Kinematic curving estimate (no force equilibrium; the fallback of the quasi-static provider): on a curve every
+// bogie is a rigid frame on the chord, so both wheelsets are parallel to it: the leading wheelset has the angle of
+// attack psi = -a c (towards the outer rail) and runs at flange contact (the smallest |y| towards the outer rail
+// at which the outer wheel's rigid contact angle exceeds 0.5 rad); the trailing wheelset (psi = +a c) sits where
+// the rolling radius difference gives pure rolling, r_L - r_R = -2 b0 r0 c (clipped at flange contact). On tangent
+// track: the centred wheelset plus the Klingel oscillation of amplitude tangent_amplitude_m (as the quasi-static
+// provider). Loads: static wheel load -/+ m a_nc h / (2 b0) on the inner/outer wheel. One bogie (two wheelsets).
+KinematicsSeries KinematicCurvingEstimate(const Scenario& scenario, const WheelsetTrackGeometry& geometry,
+                                          const TrackClass& track_class);
+// Lateral shift at which the wheel on the outer side (c > 0: right, y < 0) reaches flange contact (rigid contact
+// angle > flange_angle_rad), searched up to 20 mm; signed (negative for c > 0).
+double FlangeContactShift(const WheelsetTrackGeometry& geometry, double curvature_sign, double flange_angle_rad = 0.5);
+// The scenario's provider. Quasi-static: a class whose solution is NoContact, or NotConverged with a wheelset beyond
+// flange contact + 3 mm (flange climbing: the least-squares point of a discontinuous problem), uses
+// KinematicCurvingEstimate instead; `fallbacks` (optional, thread-safe counter) counts those classes.
+KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
+                                          std::shared_ptr<std::atomic<int>> fallbacks = nullptr);
 
 // ---------------------------------------------------------------- the whole run
 struct WearSimulationOptions {
@@ -96,6 +113,7 @@ struct WearStepRecord {
   std::array<WearDistribution, 2> rail_depth_per_passage;  // [Left, Right]
   ProfileValidity validity;
   int samples = 0, failed_contacts = 0;
+  int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
 };
 
 enum class WearSimulationStatus { Completed, InvalidProfile, NoWear };
