@@ -78,7 +78,9 @@ TEST(WheelContactPipeline, CellFieldsIntegrateToThePatchForces) {
     EXPECT_NEAR(load, p.fn_N, 0.02 * p.fn_N) << to_string(m);  // element-centre sampling of the pressure
     EXPECT_NEAR(area, p.area_m2, 0.03 * p.area_m2) << to_string(m);
     EXPECT_EQ(dx_area, static_cast<double>(p.cells.size()));
-    if (m == ContactModel::Hertz) EXPECT_NEAR(fx, p.fx_N, 1e-9 * p.fn_N);
+    if (m == ContactModel::Hertz) {
+      EXPECT_NEAR(fx, p.fx_N, 1e-9 * p.fn_N);
+    }
     EXPECT_NEAR(p.cells.front().rail_s_m, p.reference_s_on_rail_m + p.cells.front().s_m, 1e-12);
   }
 }
