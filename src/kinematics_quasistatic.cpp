@@ -172,6 +172,18 @@ struct AttemptResult {
   int iterations = 0;
 };
 
+// Stops the minimizer once every scaled residual is certainly 100 times below the tolerance (|r|_max <= |r|_2).
+class SmallResidualStop : public ceres::IterationCallback {
+ public:
+  explicit SmallResidualStop(double residual) : cost_(0.5 * residual * residual) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
+    return summary.cost <= cost_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  double cost_;
+};
+
 AttemptResult SolveBogie(BogieContext& ctx, double* p) {
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -189,6 +201,8 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
   so.num_threads = 1;
   so.logging_type = ceres::SILENT;
   so.minimizer_progress_to_stdout = false;
+  SmallResidualStop stop(1e-2 * ctx.options->residual_tolerance);
+  so.callbacks.push_back(&stop);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   AttemptResult out;
