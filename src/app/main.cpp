@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterSweepCommand(app);
   conforma::cli::RegisterProfileCommand(app);
   conforma::cli::RegisterMbenchCommand(app);
+  conforma::cli::RegisterBenchCommand(app);
+  conforma::cli::RegisterThresholdCommand(app);
+  conforma::cli::RegisterStressCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

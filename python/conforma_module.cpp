@@ -1,0 +1,407 @@
+// Python module `conforma._core` (pybind11): profiles, track, one wheelset contact with per-cell fields as NumPy
+// arrays, the Manchester A-2.2 runner. The package python/conforma/__init__.py re-exports it.
+// conforma::InputError becomes conforma.InputError (a ValueError) with the C++ message unchanged.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_io.hpp"
+#include "conforma/standard_profiles.hpp"
+#include "conforma/validation_manchester.hpp"
+#include "conforma/wheel_contact.hpp"
+#include "conforma/wheel_dimensions.hpp"
+#include "interop.hpp"
+#include "module_parts.hpp"
+
+namespace py = pybind11;
+using namespace conforma;
+
+namespace conforma::python {
+
+py::array_t<double> Column(const std::vector<double>& values) {
+  py::array_t<double> a(static_cast<py::ssize_t>(values.size()));
+  auto view = a.mutable_unchecked<1>();
+  for (size_t i = 0; i < values.size(); ++i) view(static_cast<py::ssize_t>(i)) = values[i];
+  return a;
+}
+
+py::array_t<double> PointsArray(const std::vector<Eigen::Vector2d>& points) {
+  py::array_t<double> a({static_cast<py::ssize_t>(points.size()), static_cast<py::ssize_t>(2)});
+  auto view = a.mutable_unchecked<2>();
+  for (size_t i = 0; i < points.size(); ++i) {
+    view(static_cast<py::ssize_t>(i), 0) = points[i].x();
+    view(static_cast<py::ssize_t>(i), 1) = points[i].y();
+  }
+  return a;
+}
+
+py::dict DimensionsDict(const WheelDimensions& d) {
+  py::dict out;
+  out["sd_m"] = d.sd_m, out["sh_m"] = d.sh_m, out["qr_m"] = d.qr_m;
+  out["sd_mm"] = d.sd_m * 1e3, out["sh_mm"] = d.sh_m * 1e3, out["qr_mm"] = d.qr_m * 1e3;
+  out["p0_m"] = std::vector<double>{d.p0.x(), d.p0.y()};
+  out["tip_m"] = std::vector<double>{d.tip.x(), d.tip.y()};
+  out["sd_point_m"] = std::vector<double>{d.sd_point.x(), d.sd_point.y()};
+  out["qr_point_m"] = std::vector<double>{d.qr_point.x(), d.qr_point.y()};
+  return out;
+}
+
+ProfileKind KindFrom(const std::string& name) {
+  if (name == "wheel") return ProfileKind::Wheel;
+  if (name == "rail") return ProfileKind::Rail;
+  throw InputError("profile kind must be 'wheel' or 'rail', not '" + name + "'");
+}
+
+}  // namespace conforma::python
+
+namespace {
+
+using conforma::python::Column;
+
+// Per-cell fields of a patch as NumPy arrays (grid coordinates and the solution on them).
+py::dict FieldsDict(const PatchReport& p) {
+  const size_t n = p.cells.size();
+  std::vector<double> x(n), s(n), rail_s(n), wheel_y(n), area(n), dx(n), pressure(n), tx(n), ts(n), sx(n), ss(n),
+      wear_index(n);
+  py::array_t<bool> adhesion(static_cast<py::ssize_t>(n));
+  auto adh = adhesion.mutable_unchecked<1>();
+  for (size_t i = 0; i < n; ++i) {
+    const ContactCell& c = p.cells[i];
+    x[i] = c.x_m, s[i] = c.s_m, rail_s[i] = c.rail_s_m, wheel_y[i] = c.wheel_y_m, area[i] = c.area_m2;
+    dx[i] = c.length_x_m, pressure[i] = c.pressure_Pa, tx[i] = c.traction_x_Pa, ts[i] = c.traction_s_Pa;
+    sx[i] = c.slip_x, ss[i] = c.slip_s;
+    // wear index per unit area: frictional work per unit rolled distance and area, |p_t . s| (T gamma / A)
+    wear_index[i] = std::fabs(c.traction_x_Pa * c.slip_x + c.traction_s_Pa * c.slip_s);
+    adh(static_cast<py::ssize_t>(i)) = !c.in_slip;
+  }
+  py::dict f;
+  f["x_m"] = Column(x), f["s_m"] = Column(s), f["rail_s_m"] = Column(rail_s), f["wheel_y_m"] = Column(wheel_y);
+  f["area_m2"] = Column(area), f["length_x_m"] = Column(dx), f["pressure_Pa"] = Column(pressure);
+  f["traction_x_Pa"] = Column(tx), f["traction_s_Pa"] = Column(ts), f["slip_x"] = Column(sx), f["slip_s"] = Column(ss);
+  f["adhesion"] = adhesion;
+  f["wear_index_Pa"] = Column(wear_index);
+  return f;
+}
+
+// The keys of `conforma contact --json` (src/app/report_json.cpp), plus "fields" when they were kept.
+py::dict PatchDict(const PatchReport& p, bool with_fields) {
+  py::dict d;
+  d["normal_status"] = p.normal_status, d["tangential_status"] = p.tangential_status;
+  d["fn_N"] = p.fn_N, d["fx_N"] = p.fx_N, d["fy_N"] = p.fy_N, d["mz_Nm"] = p.mz_Nm;
+  d["pmax_Pa"] = p.pmax_Pa, d["p0_Pa"] = p.p0_Pa, d["area_m2"] = p.area_m2, d["a_m"] = p.a_m, d["b_m"] = p.b_m;
+  d["width_m"] = p.width_m, d["length_m"] = p.length_m, d["approach_m"] = p.approach_m;
+  d["contact_angle_rad"] = p.contact_angle_rad, d["y_contact_rail_m"] = p.y_contact_rail_m;
+  d["z_contact_rail_m"] = p.z_contact_rail_m, d["y_contact_wheel_m"] = p.y_contact_wheel_m;
+  d["rolling_radius_m"] = p.rolling_radius_m, d["lead_m"] = p.lead_m;
+  d["xi"] = p.xi, d["eta"] = p.eta, d["phi_per_m"] = p.phi_per_m, d["alpha_c_deg"] = p.alpha_c_deg;
+  d["is_conformal"] = p.is_conformal, d["adhesion_area_m2"] = p.adhesion_area_m2, d["slip_area_m2"] = p.slip_area_m2;
+  d["frictional_power_W"] = p.frictional_power_W;
+  d["vertical_force_N"] = p.vertical_force_N, d["lateral_force_N"] = p.lateral_force_N;
+  if (with_fields) d["fields"] = FieldsDict(p);
+  return d;
+}
+
+py::dict WheelDict(const WheelsetTrackGeometry& geometry, const WheelContactReport& r, bool with_fields) {
+  py::list patches;
+  for (const PatchReport& p : r.patches) {
+    py::dict d = PatchDict(p, with_fields);
+    const interop::TrackFramePatch t = interop::ToTrackFrame(geometry, r.side, p);
+    d["force_track_N"] = std::vector<double>{t.force_N.x(), t.force_N.y(), t.force_N.z()};
+    d["contact_point_track_m"] = std::vector<double>{t.point_m.x(), t.point_m.y(), t.point_m.z()};
+    patches.append(d);
+  }
+  py::dict pose;
+  pose["y_m"] = r.pose.lateral_m, pose["z_m"] = r.pose.vertical_m, pose["roll_rad"] = r.pose.roll_rad;
+  pose["yaw_rad"] = r.pose.yaw_rad;
+  py::dict d;
+  d["side"] = to_string(r.side), d["model"] = to_string(r.model), d["status"] = to_string(r.status);
+  d["pose"] = pose;
+  d["vertical_force_N"] = r.vertical_force_N, d["pressure_vertical_force_N"] = r.pressure_vertical_force_N;
+  d["lateral_force_N"] = r.lateral_force_N, d["load_iterations"] = r.load_iterations;
+  d["patches"] = patches;
+  return d;
+}
+
+// A track: the geometry of S1002-type wheels on two rails (interop::MakeTrackGeometry, as the command line).
+struct Track {
+  std::shared_ptr<const WheelsetTrackGeometry> geometry;
+};
+
+Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<double> inclination_rad,
+                double gauge_m, double gauge_height_m, double flange_back_distance_m, double flange_back_position_m,
+                double nominal_radius_m) {
+  interop::TrackSpec spec;
+  spec.inclination_rad = inclination_rad;
+  spec.gauge_m = gauge_m, spec.gauge_height_m = gauge_height_m;
+  spec.flange_back_distance_m = flange_back_distance_m, spec.flange_back_position_m = flange_back_position_m;
+  spec.nominal_radius_m = nominal_radius_m;
+  const bool wheel_is_name = py::isinstance<py::str>(wheel), rail_is_name = py::isinstance<py::str>(rail);
+  if (wheel_is_name && rail_is_name) {
+    spec.wheel = wheel.cast<std::string>(), spec.rail = rail.cast<std::string>();
+    py::gil_scoped_release release;
+    return Track{interop::MakeTrackGeometry(spec)};
+  }
+  Profile w = wheel_is_name ? interop::WheelProfileFrom(wheel.cast<std::string>()) : wheel.cast<Profile>();
+  bool built_in = false;
+  Profile r = rail_is_name ? interop::RailProfileFrom(rail.cast<std::string>(), &built_in) : rail.cast<Profile>();
+  if (w.kind() != ProfileKind::Wheel) throw InputError("Track: the wheel profile is a rail profile");
+  if (r.kind() != ProfileKind::Rail) throw InputError("Track: the rail profile is a wheel profile");
+  const double incl = inclination_rad ? *inclination_rad : built_in ? rail_inclination_1in40() : 0.0;
+  py::gil_scoped_release release;
+  return Track{interop::MakeTrackGeometry(w, r, incl, spec)};
+}
+
+WheelContactOptions ContactOptions(const std::string& model, double load_N, double mu, double shear_modulus_Pa,
+                                   double poisson_ratio, int grid, bool fields) {
+  WheelContactOptions o;
+  o.model = ParseContactModel(model);
+  o.vertical_load_N = load_N;
+  o.friction_coefficient = mu;
+  o.material.shear_modulus_Pa = shear_modulus_Pa;
+  o.material.poisson_ratio = poisson_ratio;
+  o.fastsim_elements = grid;
+  o.keep_fields = fields;
+  o.validate();
+  return o;
+}
+
+py::list Contact(const Track& track, double lateral_m, double yaw_rad, std::optional<double> roll_rad,
+                 const std::string& model, double load_N, double speed_m_s, double mu, double shear_modulus_Pa,
+                 double poisson_ratio, int grid, double approach_m, const std::string& side, std::optional<double> xi,
+                 std::optional<double> eta, std::optional<double> phi_per_m, bool fields) {
+  WheelContactOptions o = ContactOptions(model, load_N, mu, shear_modulus_Pa, poisson_ratio, grid, fields);
+  if (xi || eta || phi_per_m) {
+    o.creepages_given = true;
+    o.creepages = {xi.value_or(0.0), eta.value_or(0.0), phi_per_m.value_or(0.0)};
+    o.validate();
+  }
+  interop::CliContactInput in;
+  in.lateral_m = lateral_m, in.yaw_rad = yaw_rad, in.roll_rad = roll_rad, in.approach_m = approach_m;
+  in.speed_m_s = speed_m_s;
+  if (side == "left") in.sides = {Side::Left};
+  else if (side == "right") in.sides = {Side::Right};
+  else if (side != "both") throw InputError("side must be 'left', 'right' or 'both', not '" + side + "'");
+  std::vector<WheelContactReport> reports;
+  {
+    py::gil_scoped_release release;
+    reports = interop::SolveLikeCli(*track.geometry, in, o);
+  }
+  py::list out;
+  for (const WheelContactReport& r : reports) out.append(WheelDict(*track.geometry, r, fields));
+  return out;
+}
+
+py::dict ContactAtPose(const Track& track, const std::string& side, double lateral_m, double vertical_m,
+                       double roll_rad, double yaw_rad, double speed_m_s, double lateral_velocity_m_s,
+                       double yaw_rate_rad_s, std::optional<double> axle_angular_velocity_rad_s,
+                       const std::string& model, double load_N, double mu, double shear_modulus_Pa,
+                       double poisson_ratio, int grid, bool fields) {
+  const WheelContactOptions o = ContactOptions(model, load_N, mu, shear_modulus_Pa, poisson_ratio, grid, fields);
+  require_finite(lateral_m, "lateral_m");
+  require_finite(vertical_m, "vertical_m");
+  require_finite(roll_rad, "roll_rad");
+  require_finite(yaw_rad, "yaw_rad");
+  require_finite(lateral_velocity_m_s, "lateral_velocity_m_s");
+  require_finite(yaw_rate_rad_s, "yaw_rate_rad_s");
+  if (axle_angular_velocity_rad_s) require_finite(*axle_angular_velocity_rad_s, "axle_angular_velocity_rad_s");
+  Side s = Side::Left;
+  if (side == "right") s = Side::Right;
+  else if (side != "left") throw InputError("side must be 'left' or 'right', not '" + side + "'");
+  const double r0 = track.geometry->setup().nominal_radius_m[0];
+  const WheelsetVelocity v{speed_m_s, lateral_velocity_m_s, yaw_rate_rad_s,
+                           axle_angular_velocity_rad_s.value_or(speed_m_s / r0)};
+  WheelContactReport r;
+  {
+    py::gil_scoped_release release;
+    r = SolveWheelContact(*track.geometry, s, WheelsetPose{lateral_m, vertical_m, roll_rad, yaw_rad}, v, o);
+  }
+  return WheelDict(*track.geometry, r, fields);
+}
+
+py::list Manchester(const std::string& model, bool creepages_from_file, const std::string& data_dir,
+                    int fastsim_elements) {
+  ManchesterOptions o;
+  o.model = ParseContactModel(model);
+  o.creepages_from_file = creepages_from_file;
+  o.fastsim_elements = fastsim_elements;
+  std::vector<ManchesterComparison> rows;
+  {
+    py::gil_scoped_release release;
+    rows = RunManchesterA22(data_dir, o);
+  }
+  py::list out;
+  for (const ManchesterComparison& r : rows) {
+    const ManchesterReferenceCase& c = r.reference;
+    py::dict ref;
+    ref["case"] = c.id, ref["y_ws_mm"] = c.y_ws_mm, ref["yaw_mrad"] = c.yaw_mrad, ref["roll_rad"] = c.roll_rad;
+    ref["y_cp_rail_mm"] = c.y_cp_rail_mm, ref["delta_cp_rad"] = c.delta_cp_rad, ref["fn_N"] = c.fn_N;
+    ref["fx_N"] = c.fx_N, ref["fs_N"] = c.fs_N, ref["mn_Nmm"] = c.mn_Nmm, ref["xi"] = c.xi, ref["eta"] = c.eta;
+    ref["phi_per_mm"] = c.phi_per_mm, ref["p_max_MPa"] = c.p_max_MPa, ref["area_mm2"] = c.area_mm2;
+    py::dict d;
+    d["reference"] = ref;
+    d["patches"] = r.patches, d["fn_N"] = r.fn_N, d["fx_N"] = r.fx_N, d["fs_N"] = r.fs_N;
+    d["pmax_MPa"] = r.pmax_MPa, d["area_mm2"] = r.area_mm2, d["y_cp_mm"] = r.y_cp_mm, d["delta_rad"] = r.delta_rad;
+    d["err_fn"] = r.err_fn, d["err_pmax"] = r.err_pmax, d["err_area"] = r.err_area;
+    d["err_fx_N"] = r.err_fx_N, d["err_fs_N"] = r.err_fs_N;
+    d["status"] = to_string(r.report.status);
+    out.append(d);
+  }
+  return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "Conforma: conformal wheel-rail contact (C++ core). SI units everywhere (m, rad, N, Pa).";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  m.attr("default_shared_data") = CONFORMA_SHARED_DATA;
+
+  py::class_<Profile>(m, "Profile", R"doc(A wheel or rail cross-section profile (metres).
+
+Conventions (include/conforma/profile.hpp): y towards the FIELD side; rail z up from the rail top; wheel z = radial
+height above the taping line (flange at negative y, flange back at -0.070 m for S1002).)doc")
+      .def_property_readonly("kind", [](const Profile& p) { return std::string(to_string(p.kind())); },
+                             "'wheel' or 'rail'")
+      .def_property_readonly("source", &Profile::source, "file or generator the profile came from")
+      .def_property_readonly("length_m", &Profile::length, "total arc length [m]")
+      .def_property_readonly("y_min_m", &Profile::y_min)
+      .def_property_readonly("y_max_m", &Profile::y_max)
+      .def(
+          "points",
+          [](const Profile& p, std::optional<double> spacing_m) {
+            return conforma::python::PointsArray(spacing_m ? p.sample(*spacing_m) : p.samples());
+          },
+          py::arg("spacing_m") = py::none(),
+          "(N, 2) array of (y, z) [m] along the curve, uniform in arc length (the stored samples by default)")
+      .def("height_at", &Profile::height_at, py::arg("y_m"), "z [m] at lateral position y, or None outside")
+      .def(
+          "dimensions",
+          [](const Profile& p, double flange_back_y_m, double taping_line_y_m) {
+            return conforma::python::DimensionsDict(MeasureWheelDimensions(p, flange_back_y_m, taping_line_y_m));
+          },
+          py::arg("flange_back_y_m") = -0.070, py::arg("taping_line_y_m") = 0.0,
+          "Flange dimensions Sd, Sh, qR (EN 15313) of a wheel profile: dict with sd_m, sh_m, qr_m (and _mm)")
+      .def(
+          "save_simpack", [](const Profile& p, const std::string& path) { SaveProfileSimpack(p, path); },
+          py::arg("path"), "write a Simpack .prw (wheel) / .prr (rail) file in mm")
+      .def(
+          "save_csv", [](const Profile& p, const std::string& path) { SaveProfileCsv(p, path); }, py::arg("path"),
+          "write 'y_mm,z_mm' CSV")
+      .def("__repr__", [](const Profile& p) {
+        return "<conforma.Profile " + std::string(to_string(p.kind())) + " '" + p.source() + "' y " +
+               std::to_string(p.y_min() * 1e3) + ".." + std::to_string(p.y_max() * 1e3) + " mm>";
+      });
+
+  m.def("s1002", []() { return MakeS1002(); }, "The S1002 wheel profile generated from its standard definition.");
+  m.def(
+      "rail",
+      [](const std::string& section, double inclination_rad) {
+        for (RailSection s : {RailSection::R60E1, RailSection::R54E1, RailSection::R50E6, RailSection::R50E4})
+          if (section == to_string(s)) return MakeRail(s, inclination_rad);
+        throw InputError("unknown rail section '" + section + "' (expected 60E1, 54E1, 50E6 or 50E4)");
+      },
+      py::arg("section") = "60E1", py::arg("inclination_rad") = 0.0,
+      "EN 13674 rail head ('60E1', '54E1', '50E6', '50E4') canted by inclination_rad, origin at its highest point.");
+  m.def(
+      "load_profile",
+      [](const std::string& path, std::optional<std::string> kind, double smoothing_rms_m, bool mirror_y,
+         bool mirror_z, double length_unit_m) {
+        ProfileReadOptions o;
+        if (kind) o.kind = conforma::python::KindFrom(*kind);
+        o.fit.smoothing_rms_m = smoothing_rms_m;
+        o.mirror_y = mirror_y, o.mirror_z = mirror_z, o.length_unit_m = length_unit_m;
+        return LoadProfile(path, o);
+      },
+      py::arg("path"), py::arg("kind") = py::none(), py::arg("smoothing_rms_m") = 0.0, py::arg("mirror_y") = false,
+      py::arg("mirror_z") = false, py::arg("length_unit_m") = 1e-3,
+      "Read a profile file: Simpack .prw/.prr, MiniProf .whl/.ban, or two columns .txt/.csv/.dat (kind "
+      "'wheel'/'rail' required for those). Raises InputError 'file:line: reason' on malformed files.");
+  m.def(
+      "profile_from_points",
+      [](py::array_t<double, py::array::c_style | py::array::forcecast> points, const std::string& kind,
+         double smoothing_rms_m) {
+        if (points.ndim() != 2 || points.shape(1) != 2) throw InputError("points must be an (N, 2) array of (y, z) [m]");
+        std::vector<Eigen::Vector2d> pts(static_cast<size_t>(points.shape(0)));
+        auto v = points.unchecked<2>();
+        for (py::ssize_t i = 0; i < points.shape(0); ++i) pts[static_cast<size_t>(i)] = {v(i, 0), v(i, 1)};
+        ProfileFitOptions fit;
+        fit.smoothing_rms_m = smoothing_rms_m;
+        return Profile::FromPoints(std::move(pts), conforma::python::KindFrom(kind), fit, "python points");
+      },
+      py::arg("points"), py::arg("kind"), py::arg("smoothing_rms_m") = 0.0,
+      "Profile from an (N, 2) array of (y, z) in metres (conventions of Profile).");
+  m.def(
+      "wheel_dimensions",
+      [](const Profile& p, double flange_back_y_m, double taping_line_y_m) {
+        return conforma::python::DimensionsDict(MeasureWheelDimensions(p, flange_back_y_m, taping_line_y_m));
+      },
+      py::arg("wheel"), py::arg("flange_back_y_m") = -0.070, py::arg("taping_line_y_m") = 0.0,
+      "Sd, Sh, qR of a wheel profile (dict with sd_m, sh_m, qr_m, sd_mm, sh_mm, qr_mm and the points used).");
+
+  py::class_<Track>(m, "Track", R"doc(Wheelset on straight track: both wheels share one wheel profile, both rails one
+rail profile (the same construction as `conforma contact --wheel ... --rail ...`).
+
+wheel: 'S1002', a file path or a Profile; rail: '60E1', '54E1', '50E6', '50E4', a file path or a Profile.
+inclination_rad: rail cant applied by the track; default 1:40 for built-in rail names, 0 for files and Profiles.)doc")
+      .def(py::init(&MakeTrack), py::arg("wheel") = "S1002", py::arg("rail") = "60E1",
+           py::arg("inclination_rad") = py::none(), py::arg("gauge_m") = 1.435, py::arg("gauge_height_m") = 0.014,
+           py::arg("flange_back_distance_m") = 1.360, py::arg("flange_back_position_m") = -0.070,
+           py::arg("nominal_radius_m") = 0.46)
+      .def_property_readonly("nominal_radius_m", [](const Track& t) { return t.geometry->setup().nominal_radius_m[0]; })
+      .def(
+          "mounted_rail", [](const Track& t, const std::string& side) {
+            return t.geometry->mounted_rail(side == "right" ? Side::Right : Side::Left);
+          },
+          py::arg("side") = "left", "the rail profile as mounted (inclined, origin at its highest point)")
+      .def(
+          "rigid_equilibrium",
+          [](const Track& t, double lateral_m, double yaw_rad) {
+            const EquilibriumResult e = t.geometry->SolveRigidEquilibrium(lateral_m, yaw_rad);
+            py::dict d;
+            d["status"] = to_string(e.status);
+            d["y_m"] = e.pose.lateral_m, d["z_m"] = e.pose.vertical_m, d["roll_rad"] = e.pose.roll_rad;
+            d["yaw_rad"] = e.pose.yaw_rad, d["rolling_radius_difference_m"] = e.rolling_radius_difference_m;
+            return d;
+          },
+          py::arg("lateral_m"), py::arg("yaw_rad") = 0.0,
+          "Vertical position and roll at which both wheels touch their rails (rigid).");
+
+  m.def("contact", &Contact, py::arg("track"), py::arg("lateral_m") = 0.0, py::arg("yaw_rad") = 0.0,
+        py::arg("roll_rad") = py::none(), py::arg("model") = "hertz", py::arg("load_N") = 10e3,
+        py::arg("speed_m_s") = 2.0, py::arg("mu") = 0.3, py::arg("shear_modulus_Pa") = 82e9,
+        py::arg("poisson_ratio") = 0.28, py::arg("grid") = 30, py::arg("approach_m") = 0.05e-3,
+        py::arg("side") = "both", py::arg("xi") = py::none(), py::arg("eta") = py::none(),
+        py::arg("phi_per_m") = py::none(), py::arg("fields") = true,
+        R"doc(Contact of one wheelset pose, exactly as `conforma contact` (same forces to the last bit).
+
+The wheelset is placed at lateral_m (+ towards the left rail) and yaw_rad in rigid contact with both rails (roll
+from that equilibrium unless roll_rad is given), then each wheel is pushed down until it carries load_N (load
+control), or with load_N < 0 lowered by approach_m (approach mode). Creepages from pure rolling at speed_m_s
+unless xi / eta / phi_per_m are given. model: 'hertz', 'kp', 'kpec', 'conformal', 'reference'.
+
+Returns a list of wheel dicts (side, status, pose, vertical_force_N, lateral_force_N, patches). Each patch dict has
+the keys of `conforma contact --json` (fn_N, fx_N, fy_N, mz_Nm, pmax_Pa, area_m2, contact_angle_rad, xi, eta,
+phi_per_m, ...; forces on the wheel in the patch's contact frame) plus force_track_N / contact_point_track_m in
+the track frame and, with fields=True, 'fields': NumPy arrays per element -- grid coordinates x_m (along the
+track), s_m (along the rail profile from the patch reference point), rail_s_m, wheel_y_m, area_m2, length_x_m, and
+pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear_index_Pa = |p_t . slip|.)doc");
+  m.def("contact_at_pose", &ContactAtPose, py::arg("track"), py::arg("side"), py::arg("lateral_m"),
+        py::arg("vertical_m"), py::arg("roll_rad") = 0.0, py::arg("yaw_rad") = 0.0, py::arg("speed_m_s") = 2.0,
+        py::arg("lateral_velocity_m_s") = 0.0, py::arg("yaw_rate_rad_s") = 0.0,
+        py::arg("axle_angular_velocity_rad_s") = py::none(), py::arg("model") = "hertz", py::arg("load_N") = -1.0,
+        py::arg("mu") = 0.3, py::arg("shear_modulus_Pa") = 82e9, py::arg("poisson_ratio") = 0.28,
+        py::arg("grid") = 30, py::arg("fields") = true,
+        "One wheel at a given wheelset pose and velocities (the multibody entry point); load_N < 0 (default): "
+        "pose as given, otherwise load control starting from vertical_m. Returns a wheel dict as contact().");
+  m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,
+        py::arg("data_dir") = std::string(CONFORMA_SHARED_DATA), py::arg("fastsim_elements") = 30,
+        "Manchester benchmark A-2.2 (left wheel, 21 cases) against CONTACT's results: one dict per case with the "
+        "reference values and the relative/absolute errors (as `conforma mbench`).");
+  conforma::python::BindWear(m);
+}

@@ -1,0 +1,76 @@
+// C API: one wheelset pose (both wheels) per call, as a multibody code calls it each time step. Target
+// (issue 7): <= 100 us median for the conformal model. Load control (10 kN per wheel) and given approach.
+#include <benchmark/benchmark.h>
+
+#include "conforma_c.h"
+
+namespace {
+
+void BM_CApiWheelset(benchmark::State& state, const char* model_name, int mode, double lateral_m, int kp_strips = 31,
+                     int fastsim_elements = 30) {
+  conforma_track_params track;
+  conforma_contact_params contact;
+  conforma_default_track_params(&track);
+  conforma_default_contact_params(&contact);
+  contact.model = model_name;
+  contact.kp_strips = kp_strips;
+  contact.fastsim_elements = fastsim_elements;
+  conforma_model* model = nullptr;
+  char error[CONFORMA_ERROR_TEXT];
+  if (conforma_model_create(&track, &contact, &model, error, sizeof error) != CONFORMA_OK) {
+    state.SkipWithError(error);
+    return;
+  }
+  conforma_wheelset_state s{};
+  s.lateral_m = lateral_m;
+  s.yaw_rad = 1e-3;
+  s.forward_speed_m_s = 20.0;
+  s.axle_angular_velocity_rad_s = 20.0 / 0.46;
+  conforma_evaluation_options o;
+  conforma_default_evaluation_options(&o);
+  // the pose a multibody code would pass: rigid contact, then (approach mode) 50 um below it
+  conforma_wheelset_result r;
+  {
+    conforma_evaluation_options rigid = o;
+    rigid.rigid_equilibrium = 1;
+    rigid.normal_mode = CONFORMA_GIVEN_APPROACH;
+    rigid.approach_m = 0.0;
+    conforma_evaluate(model, &s, &rigid, &r);
+    s.roll_rad = r.roll_rad;
+    s.vertical_m = r.wheel[0].vertical_position_m - (mode == CONFORMA_GIVEN_APPROACH ? 50e-6 : 0.0);
+  }
+  o.normal_mode = mode;
+  for (auto _ : state) {
+    const int status = conforma_evaluate(model, &s, &o, &r);
+    if (status != CONFORMA_OK) {
+      state.SkipWithError(r.error_message);
+      break;
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["patches_left"] = r.wheel[0].patches_found;
+  state.counters["Fz_left_N"] = r.wheel[0].force_track_N[2];
+  conforma_model_destroy(model);
+}
+
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_load_y3mm, "conformal", CONFORMA_LOAD_CONTROL, 3e-3)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_load_y7mm_flange, "conformal", CONFORMA_LOAD_CONTROL, 7e-3)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_approach_y3mm, "conformal", CONFORMA_GIVEN_APPROACH, 3e-3)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_approach_y7mm_flange, "conformal", CONFORMA_GIVEN_APPROACH, 7e-3)
+    ->Unit(benchmark::kMicrosecond);
+// coarser discretisation (the C API's contact params): strips across the contact / FASTSIM elements per strip
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_approach_y3mm_strips15_el15, "conformal", CONFORMA_GIVEN_APPROACH, 3e-3,
+                  15, 15)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_approach_y7mm_strips15_el15, "conformal", CONFORMA_GIVEN_APPROACH, 7e-3,
+                  15, 15)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_approach_y3mm_strips11_el11, "conformal", CONFORMA_GIVEN_APPROACH, 3e-3,
+                  11, 11)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_CApiWheelset, hertz_load_y3mm, "hertz", CONFORMA_LOAD_CONTROL, 3e-3)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
