@@ -1,0 +1,90 @@
+#pragma once
+// Conformity-index threshold study (issue 6, `conforma threshold`): above which conformity index alpha_c
+// (paper 003 eq. 13) does the conformal model differ from the planar one by more than a tolerance?
+//
+// Per contact situation (one PatchGeometry with its load and creepages, benchmark_cases.hpp) the conformal model
+// (conformal KP + curved FASTSIM) and the planar comparison model (by default planar KP + FASTSIM on the patch
+// flattened onto the reference tangent plane; see PlanarComparison) are solved at the same grid, normal load and
+// creepages. Relative differences, taken against the conformal result:
+//   d_pmax = |p_max,c - p_max,p| / p_max,c,  d_area likewise,
+//   d_creep = |F_t,c - F_t,p| / |F_t,c|   (F_t = (F_x, F_y) in the patch reference frame, vector difference),
+//   d_wear = |W_c - W_p| / W_c            (W = sum |p_t . s| dA),
+//   d = max(d_pmax, d_area, d_creep, d_wear).
+//
+// Threshold fit (FitConformityThreshold): the study asks for the smallest alpha_c above which the difference
+// exceeds the tolerance. The data are a scatter, not a function of alpha_c alone (the difference also depends on
+// the patch shape and the creepages), so the threshold is fitted as the best step function: the alpha* that
+// minimises the number of misclassified situations, #{alpha_c < alpha*, d > tol} + #{alpha_c >= alpha*, d <= tol},
+// ties resolved to the smallest alpha* (alpha* = infinity, i.e. no threshold, only when strictly better). Its
+// bracket is [largest alpha_c below alpha*, alpha*]. As a cross-check a power law d = c alpha_c^k is fitted by
+// least squares in log-log (points with alpha_c >= 0.5 deg and d > 1e-4), giving alpha_pow = (tol / c)^(1/k) (the
+// conformal correction grows ~ alpha_c^2 for small angles).
+#include <string>
+#include <vector>
+
+#include "conforma/benchmark_cases.hpp"
+
+namespace conforma {
+
+enum class PlanarComparison {
+  FlattenedKp,    // planar KP (half-space, eps = 0.55) on the patch projected onto the reference tangent plane
+                  // (FlattenPatch): the classic non-conformal model; the default
+  CurvilinearKp,  // the pipeline's `kp` model: planar KP on the curvilinear strips (only the influence function and
+                  // the FASTSIM frames differ from the conformal model)
+  Hertz,          // Hertz + FASTSIM with the curvatures at the smallest rigid gap
+};
+const char* to_string(PlanarComparison comparison);  // "flat_kp", "kp", "hertz"
+PlanarComparison ParsePlanarComparison(const std::string& name);
+
+// The patch as a planar contact model sees it: rail and wheel surfaces of the curvilinear strips (rail points
+// integrated from the tangents t(s) = cos(alpha) t0 - sin(alpha) n0, wheel points displaced by gap(s) along
+// n(s) = cos(alpha) n0 + sin(alpha) t0, patch.hpp / curved_fastsim.hpp) resampled on a uniform lateral grid along t0
+// (spacing ds) with the gap measured along the reference normal n0, alpha = 0. Strips whose normal is turned by 85 deg
+// or more, and any part where the surfaces fold back over t0, are left out. Throws InputError for an inconsistent
+// patch.
+PatchGeometry FlattenPatch(const PatchGeometry& curved);
+
+struct ThresholdOptions {
+  double tolerance = 0.05;
+  PlanarComparison against = PlanarComparison::FlattenedKp;
+  int kp_strips = 31;
+  int fastsim_elements = 30;
+  void validate() const;
+};
+
+struct ThresholdPoint {
+  std::string name, family;
+  double alpha_c_deg = 0.0;       // conformal KP patch
+  double contact_angle_deg = 0.0; // reference normal from the track vertical
+  double d_pmax = 0.0, d_area = 0.0, d_creep = 0.0, d_wear = 0.0, d_max = 0.0;
+  bool valid = false;             // both models found a contact
+  std::string status;
+};
+
+// One situation (solves both models).
+ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const ThresholdOptions& options);
+// Every situation, in parallel with OpenMP (results identical for any thread count).
+std::vector<ThresholdPoint> CompareConformalPlanar(const std::vector<BenchCase>& situations,
+                                                   const ThresholdOptions& options);
+
+struct ThresholdFit {
+  double threshold_deg = 0.0;      // alpha* of the step fit (infinity when no point exceeds the tolerance)
+  double bracket_low_deg = 0.0;    // largest alpha_c below alpha* (0 if none)
+  int misclassified = 0, points = 0;
+  int exceeding = 0;               // points with d > tol
+  double power_c = 0.0, power_k = 0.0, power_r2 = 0.0;
+  double power_threshold_deg = 0.0;  // (tol / c)^(1/k); 0 when the fit is impossible
+};
+// d_of selects the difference (d_max by default: pass nullptr).
+ThresholdFit FitConformityThreshold(const std::vector<ThresholdPoint>& points, double tolerance,
+                                    double (*d_of)(const ThresholdPoint&) = nullptr);
+
+// Situation sweeps (left wheel, every interpenetration region as its own situation):
+//  "new":    S1002 on 60E1 at 1:20, lateral shift -4 ... 10 mm step 0.1 mm, yaw 0, 5, 10, 15, 20 mrad
+//  "worn":   worn_high_mileage.prw on site_b_hr.prr (inclination 0: as measured), same shifts and yaws
+//  "groove": CONTACT's circle R = 10 mm in grooves of decreasing radius 14 ... 10.02 mm
+// Creepages xi = 1e-3, eta = 0.5e-3, phi = 0.2 /m; vertical load per wheel vertical_load_N.
+std::vector<BenchCase> MakeThresholdSituations(const std::string& set, const std::string& shared_data_dir,
+                                               double vertical_load_N = 10e3);
+
+}  // namespace conforma

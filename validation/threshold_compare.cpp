@@ -1,0 +1,121 @@
+// Conformal against planar on one situation, and the situation sweeps (threshold.hpp).
+#include <cmath>
+#include <cstdio>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_io.hpp"
+#include "conforma/standard_profiles.hpp"
+#include "conforma/threshold.hpp"
+
+namespace conforma {
+
+void ThresholdOptions::validate() const {
+  require_positive(tolerance, "tolerance");
+  if (kp_strips < 3) throw InputError("threshold: kp_strips must be >= 3");
+  if (fastsim_elements < 2) throw InputError("threshold: fastsim_elements must be >= 2");
+}
+
+const char* to_string(PlanarComparison comparison) {
+  switch (comparison) {
+    case PlanarComparison::FlattenedKp: return "flat_kp";
+    case PlanarComparison::CurvilinearKp: return "kp";
+    case PlanarComparison::Hertz: return "hertz";
+  }
+  return "?";
+}
+
+PlanarComparison ParsePlanarComparison(const std::string& name) {
+  for (PlanarComparison c : {PlanarComparison::FlattenedKp, PlanarComparison::CurvilinearKp, PlanarComparison::Hertz})
+    if (name == to_string(c)) return c;
+  throw InputError("unknown planar comparison '" + name + "' (expected flat_kp, kp or hertz)");
+}
+
+ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const ThresholdOptions& options) {
+  options.validate();
+  PatchSolveOptions o;
+  o.kp_strips = options.kp_strips;
+  o.fastsim_elements = options.fastsim_elements;
+  o.model = ContactModel::Conformal;
+  const PatchSolution c = SolveBenchPatch(situation, o);
+  o.model = options.against == PlanarComparison::Hertz ? ContactModel::Hertz : ContactModel::Kp;
+  ThresholdPoint t;
+  PatchSolution p;
+  if (options.against == PlanarComparison::FlattenedKp) {
+    BenchCase flat = situation;
+    try {
+      flat.patch = FlattenPatch(situation.patch);
+    } catch (const InputError& e) {
+      t.name = situation.name, t.family = situation.family, t.status = std::string("flatten: ") + e.what();
+      return t;
+    }
+    p = SolveBenchPatch(flat, o);
+  } else {
+    p = SolveBenchPatch(situation, o);
+  }
+  t.name = situation.name;
+  t.family = situation.family;
+  t.alpha_c_deg = c.alpha_c_deg;
+  t.contact_angle_deg = situation.patch.contact_angle_rad * 180.0 / M_PI;
+  t.status = c.normal_status + "/" + c.tangential_status + "|" + p.normal_status + "/" + p.tangential_status;
+  t.valid = c.in_contact && p.in_contact && c.pmax_Pa > 0.0 && c.area_m2 > 0.0;
+  if (!t.valid) return t;
+  auto rel = [](double a, double b) { return a != 0.0 ? std::fabs(a - b) / std::fabs(a) : (b == 0.0 ? 0.0 : 1.0); };
+  t.d_pmax = rel(c.pmax_Pa, p.pmax_Pa);
+  t.d_area = rel(c.area_m2, p.area_m2);
+  const double ft = std::hypot(c.fx_N, c.fy_N);
+  t.d_creep = ft > 0.0 ? std::hypot(c.fx_N - p.fx_N, c.fy_N - p.fy_N) / ft : 0.0;
+  t.d_wear = rel(c.wear_index_N, p.wear_index_N);
+  t.d_max = std::max({t.d_pmax, t.d_area, t.d_creep, t.d_wear});
+  return t;
+}
+
+std::vector<ThresholdPoint> CompareConformalPlanar(const std::vector<BenchCase>& situations,
+                                                   const ThresholdOptions& options) {
+  options.validate();
+  std::vector<ThresholdPoint> out(situations.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int i = 0; i < static_cast<int>(situations.size()); ++i) out[i] = CompareConformalPlanar(situations[i], options);
+  return out;
+}
+
+std::vector<BenchCase> MakeThresholdSituations(const std::string& set, const std::string& shared_data_dir,
+                                               double vertical_load_N) {
+  const FastsimCreepages creepages{1.0e-3, 0.5e-3, 0.2};
+  if (set == "groove") {
+    return MakeGrooveBenchCases({14.0e-3, 12.0e-3, 11.0e-3, 10.5e-3, 10.25e-3, 10.1e-3, 10.05e-3, 10.02e-3},
+                                vertical_load_N);
+  }
+  Profile wheel, rail;
+  double inclination = 0.0;
+  if (set == "new") {
+    wheel = MakeS1002();
+    rail = MakeRail(RailSection::R60E1, 0.0);
+    inclination = std::atan(1.0 / 20.0);
+  } else if (set == "worn") {
+    ProfileReadOptions w, r;
+    w.kind = ProfileKind::Wheel;
+    r.kind = ProfileKind::Rail;
+    const std::string bank = shared_data_dir + "/profiles/contact/testbank/profiles/";
+    wheel = LoadProfile(bank + "worn_high_mileage.prw", w);
+    rail = LoadProfile(bank + "site_b_hr.prr", r);
+  } else {
+    throw InputError("threshold: unknown situation set '" + set + "' (expected new, worn or groove)");
+  }
+  const WheelsetTrackGeometry geometry(MakeSymmetricTrack(wheel, rail, inclination));
+  Material steel;
+  std::vector<BenchCase> out;
+  for (double yaw_mrad : {0.0, 5.0, 10.0, 15.0, 20.0}) {
+    for (int k = -40; k <= 100; ++k) {
+      WheelsetPose pose;
+      pose.lateral_m = k * 0.1e-3;
+      pose.yaw_rad = yaw_mrad * 1e-3;
+      char name[64];
+      std::snprintf(name, sizeof name, "%s_y%.2f_yaw%.0f", set.c_str(), k * 0.1, yaw_mrad);
+      const auto found = BenchCasesFromPose(geometry, Side::Left, pose, vertical_load_N, steel, creepages, name, set);
+      out.insert(out.end(), found.begin(), found.end());
+    }
+  }
+  return out;
+}
+
+}  // namespace conforma
