@@ -43,6 +43,12 @@ KpOptions ConformalKpOptions(const Material& material) {
   return options;
 }
 
+KpOptions ConformalKpecOptions(const Material& material) {
+  KpOptions options = ConformalKpOptions(material);
+  options.penetration = KpPenetrationRule::VariableEpsilon;
+  return options;
+}
+
 namespace {
 
 using kp_detail::PatchInterpolant;

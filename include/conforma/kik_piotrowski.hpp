@@ -103,6 +103,11 @@ KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& patch, double approa
 KpOptions PlanarKpOptions(const Material& material);      // eps = 0.55, half-space
 KpOptions KpecOptions(const Material& material);          // variable eps, half-space
 KpOptions ConformalKpOptions(const Material& material);   // eps = 0.55, Blanco-Lorenzo
+// Variable eps (KPEC rule) with the Blanco-Lorenzo influence: the default of the pipeline's `conformal` model.
+// Paper 003 leaves the virtual-penetration rule open; the constant eps = 0.55 under-estimates p_max by 6-14 % on
+// elliptic and wide patches (physics-reference §3.2), which the variable rule removes (tests/test_kp_groove.cpp,
+// tests/test_validation_manchester.cpp).
+KpOptions ConformalKpecOptions(const Material& material);
 
 // Pressure at (x, s) of a solved patch (0 outside the contact).
 double KpPressureAt(const KpResult& result, double x_m, double s_m);

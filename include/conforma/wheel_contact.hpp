@@ -39,6 +39,9 @@ struct WheelContactOptions {
   int bem_x_elements = 64;             // reference BEM elements along x (strips: the candidate's ds)
   double candidate_strip_width_m = 0.1e-3;
   double conformity_threshold_deg = 18.0;
+  // `conformal` model: virtual-penetration rule. true (default): CONTACT's variable eps (ConformalKpecOptions);
+  // false: Kik-Piotrowski's constant eps = 0.55 (ConformalKpOptions). See kik_piotrowski.hpp.
+  bool conformal_variable_penetration = true;
   bool solve_tangential = true;        // false: normal problem only
   bool keep_fields = false;            // fill PatchReport::cells (pressure, traction, slip per element)
   FastsimOptions fastsim;              // bound and marching (hertz model)

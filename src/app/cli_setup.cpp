@@ -87,6 +87,9 @@ void ContactArgs::add_to(CLI::App* app) {
   app->add_option("--G-GPa", shear_modulus_GPa, "shear modulus of wheel and rail");
   app->add_option("--nu", poisson, "Poisson ratio");
   app->add_option("--grid", grid, "FASTSIM elements per strip");
+  app->add_option("--penetration", penetration, "conformal model: virtual penetration rule, variable (KPEC) or "
+                                                "constant (eps = 0.55)")
+      ->check(CLI::IsMember({"variable", "constant"}));
 }
 
 WheelContactOptions ContactArgs::options() const {
@@ -97,6 +100,7 @@ WheelContactOptions ContactArgs::options() const {
   o.material.shear_modulus_Pa = shear_modulus_GPa * 1e9;
   o.material.poisson_ratio = poisson;
   o.fastsim_elements = grid;
+  o.conformal_variable_penetration = penetration == "variable";
   o.validate();
   return o;
 }

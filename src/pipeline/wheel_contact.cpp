@@ -120,7 +120,8 @@ PatchFrame FrameOf(const PatchGeometry& patch) {
 
 KpOptions KpOptionsFor(const WheelContactOptions& o) {
   KpOptions k = o.model == ContactModel::Kpec        ? KpecOptions(o.material)
-                : o.model == ContactModel::Conformal ? ConformalKpOptions(o.material)
+                : o.model == ContactModel::Conformal ? (o.conformal_variable_penetration ? ConformalKpecOptions(o.material)
+                                                                                         : ConformalKpOptions(o.material))
                                                      : PlanarKpOptions(o.material);
   k.strips_across_contact = o.kp_strips;
   k.conformity_threshold_deg = o.conformity_threshold_deg;
