@@ -9,6 +9,9 @@
 #include <thread>
 #include <vector>
 
+#include "conforma/geometry.hpp"
+#include "conforma/profile_io.hpp"
+#include "conforma/wheel_contact.hpp"
 #include "conforma_c.h"
 
 namespace {
@@ -184,4 +187,59 @@ TEST(CApiThreads, BadInputIsAnErrorCodeWithAMessageNamingTheParameter) {
   track.rail_profile = "/nonexistent/rail.prr";
   EXPECT_EQ(conforma_model_create(&track, &contact, &m, text, sizeof text), CONFORMA_ERROR_INPUT);
   EXPECT_NE(std::string(text).find("/nonexistent/rail.prr"), std::string::npos) << text;
+}
+
+// The C API from profile FILES (Manchester wheel and rail) gives the forces of the C++ pipeline called
+// directly with the same sequence (rigid equilibrium, then load control from there), to the last bit.
+
+TEST(CApiThreads, ModelFromProfileFilesEqualsTheCppPipeline) {
+  const std::string dir = std::string(CONFORMA_SHARED_DATA) + "/profiles/contact/examples/";
+  const std::string wheel = dir + "MBench_S1002_v3.prw", rail = dir + "MBench_UIC60_v3.prr";
+  conforma_track_params track;
+  conforma_contact_params contact;
+  conforma_default_track_params(&track);
+  conforma_default_contact_params(&contact);
+  track.wheel_profile = wheel.c_str();
+  track.rail_profile = rail.c_str();  // a file: taken as canted (inclination 0)
+  conforma_model* model = nullptr;
+  char error[CONFORMA_ERROR_TEXT];
+  ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
+
+  conforma::ProfileReadOptions wo, ro;
+  wo.kind = conforma::ProfileKind::Wheel;
+  ro.kind = conforma::ProfileKind::Rail;
+  const conforma::WheelsetTrackGeometry geometry(
+      conforma::MakeSymmetricTrack(conforma::LoadProfile(wheel, wo), conforma::LoadProfile(rail, ro), 0.0));
+  conforma::WheelContactOptions options;
+  options.model = conforma::ContactModel::Conformal;
+
+  for (double y_mm : {0.0, 3.0, 6.0, 8.0}) {
+    conforma_wheelset_state s{};
+    s.lateral_m = y_mm * 1e-3;
+    s.yaw_rad = 2.4 * y_mm * 1e-3;  // Manchester: yaw = 2.4 y mrad (y in mm)
+    s.forward_speed_m_s = 2.0;
+    s.axle_angular_velocity_rad_s = 2.0 / 0.46;
+    conforma_evaluation_options o;
+    conforma_default_evaluation_options(&o);
+    o.rigid_equilibrium = 1;
+    conforma_wheelset_result r;
+    ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+
+    const conforma::EquilibriumResult eq = geometry.SolveRigidEquilibrium(s.lateral_m, s.yaw_rad);
+    const conforma::WheelsetVelocity v{2.0, 0.0, 0.0, 2.0 / 0.46};
+    for (conforma::Side side : {conforma::Side::Left, conforma::Side::Right}) {
+      const conforma::WheelContactReport ref = conforma::SolveWheelContact(geometry, side, eq.pose, v, options);
+      const conforma_wheel_result& w = r.wheel[conforma::side_index(side)];
+      ASSERT_EQ(w.patches_found, static_cast<int>(ref.patches.size())) << y_mm;
+      for (int j = 0; j < w.patch_count; ++j) {
+        EXPECT_EQ(w.patch[j].normal_force_N, ref.patches[j].fn_N) << y_mm;
+        EXPECT_EQ(w.patch[j].longitudinal_force_N, ref.patches[j].fx_N) << y_mm;
+        EXPECT_EQ(w.patch[j].lateral_force_N, ref.patches[j].fy_N) << y_mm;
+        EXPECT_EQ(w.patch[j].spin_moment_Nm, ref.patches[j].mz_Nm) << y_mm;
+        EXPECT_EQ(w.patch[j].pmax_Pa, ref.patches[j].pmax_Pa) << y_mm;
+      }
+      EXPECT_EQ(w.vertical_position_m, ref.pose.vertical_m);
+    }
+  }
+  conforma_model_destroy(model);
 }
