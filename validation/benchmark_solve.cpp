@@ -203,6 +203,8 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
           a.approach_m = s.approach_m;
           PatchSolution sa;
           row.time_approach_us = MedianTimeUs([&] { sa = SolveBenchPatch(c, a); }, options);
+          a.solve_tangential = false;
+          row.time_normal_us = MedianTimeUs([&] { sa = SolveBenchPatch(c, a); }, options);
         }
         row.model = v.name;
         row.grid = grid.label();

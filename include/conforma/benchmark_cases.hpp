@@ -93,6 +93,7 @@ struct BenchRow {
   std::string model, grid, case_name, family;
   double time_us = 0.0;       // median wall time per patch: load-controlled normal + tangential solve
   double time_approach_us = 0.0;  // the same with the approach given (one normal solve) + tangential
+  double time_normal_us = 0.0;    // the approach-given normal solve alone
   // Relative errors, signed: (model - reference) / reference; creep forces relative to |F_t| of the reference.
   double err_pmax = 0.0, err_area = 0.0, err_fn = 0.0, err_fx = 0.0, err_fy = 0.0, err_wear = 0.0;
   double alpha_c_deg = 0.0;

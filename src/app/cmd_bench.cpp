@@ -55,19 +55,20 @@ void RegisterBenchCommand(CLI::App& app) {
     const std::string csv = *out_dir + "/bench.csv";
     std::ofstream f(csv);
     if (!f) throw InputError("bench: cannot write " + csv);
-    f << "model,grid,case,time_us,err_pmax,err_area,err_fx,err_fy,err_wear,err_fn,family,alpha_c_deg,time_approach_us,status\n";
+    f << "model,grid,case,time_us,err_pmax,err_area,err_fx,err_fy,err_wear,err_fn,family,alpha_c_deg,time_approach_us,time_normal_us,status\n";
     for (const BenchRow& r : rows) {
       char line[512];
-      std::snprintf(line, sizeof line, "%s,%s,%s,%.3f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%.3f,%.3f,%s\n", r.model.c_str(),
+      std::snprintf(line, sizeof line, "%s,%s,%s,%.3f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%s,%.3f,%.3f,%.3f,%s\n", r.model.c_str(),
                     r.grid.c_str(), r.case_name.c_str(), r.time_us, r.err_pmax, r.err_area, r.err_fx, r.err_fy,
-                    r.err_wear, r.err_fn, r.family.c_str(), r.alpha_c_deg, r.time_approach_us, r.status.c_str());
+                    r.err_wear, r.err_fn, r.family.c_str(), r.alpha_c_deg, r.time_approach_us, r.time_normal_us,
+                    r.status.c_str());
       f << line;
     }
     f.close();
 
     // Summary per model and grid: median time, max |error| over the cases.
     nlohmann::json summary;
-    std::printf("\n%-14s %-7s %9s %9s %9s %9s %9s %9s %9s %9s\n", "model", "grid", "t_med_us", "t_max_us", "t_appr_us", "|pmax|max",
+    std::printf("\n%-14s %-7s %9s %9s %9s %9s %9s %9s %9s %9s %9s\n", "model", "grid", "t_med_us", "t_max_us", "t_appr_us", "t_norm_us", "|pmax|max",
                 "|area|max", "|fn|max", "|Ft|max", "|wear|max");
     std::map<std::string, double> median_time_default;
     std::vector<std::string> names;
@@ -75,13 +76,14 @@ void RegisterBenchCommand(CLI::App& app) {
     if (options.conformal_kpec) names.push_back("conformal_kpec");
     for (const std::string& name : names) {
       for (const BenchGrid& g : options.grids) {
-        std::vector<double> t, ta;
+        std::vector<double> t, ta, tn;
         double ep = 0, ea = 0, en = 0, ef = 0, ew = 0;
         std::string worst_case;
         for (const BenchRow& r : rows) {
           if (r.model != name || r.grid != g.label()) continue;
           t.push_back(r.time_us);
           ta.push_back(r.time_approach_us);
+          tn.push_back(r.time_normal_us);
           if (std::fabs(r.err_pmax) > ep) ep = std::fabs(r.err_pmax), worst_case = r.case_name;
           ea = std::max(ea, std::fabs(r.err_area));
           en = std::max(en, std::fabs(r.err_fn));
@@ -89,11 +91,12 @@ void RegisterBenchCommand(CLI::App& app) {
           ew = std::max(ew, std::fabs(r.err_wear));
         }
         const double tmax = t.empty() ? 0.0 : *std::max_element(t.begin(), t.end());
-        std::printf("%-14s %-7s %9.1f %9.1f %9.1f %8.1f%% %8.1f%% %8.1f%% %8.1f%% %8.1f%%  (worst pmax: %s)\n",
-                    name.c_str(), g.label().c_str(), Median(t), tmax, Median(ta), 100 * ep, 100 * ea, 100 * en, 100 * ef, 100 * ew,
+        std::printf("%-14s %-7s %9.1f %9.1f %9.1f %9.1f %8.1f%% %8.1f%% %8.1f%% %8.1f%% %8.1f%%  (worst pmax: %s)\n",
+                    name.c_str(), g.label().c_str(), Median(t), tmax, Median(ta), Median(tn), 100 * ep, 100 * ea, 100 * en, 100 * ef, 100 * ew,
                     worst_case.c_str());
         summary["models"][name][g.label()] = {{"median_time_us", Median(t)}, {"max_time_us", tmax},
                                                {"median_time_approach_given_us", Median(ta)},
+                                               {"median_time_normal_approach_given_us", Median(tn)},
                                                        {"max_abs_err_pmax", ep}, {"worst_pmax_case", worst_case},
                                                        {"max_abs_err_area", ea}, {"max_abs_err_fn", en},
                                                        {"max_abs_err_ft", ef}, {"max_abs_err_wear", ew}};
@@ -109,6 +112,7 @@ void RegisterBenchCommand(CLI::App& app) {
     }
     std::ofstream(*out_dir + "/bench_summary.json") << summary.dump(2) << "\n";
     std::printf("wrote %s and %s/bench_summary.json\n", csv.c_str(), out_dir->c_str());
+    std::fflush(stdout);  // before the plot script's own output
     if (*plot) {
       const std::string cmd = "/usr/bin/python3 " + std::string(CONFORMA_SOURCE_DIR) + "/scripts/plot_bench.py '" + csv +
                               "' '" + *out_dir + "/bench_pareto.png'";

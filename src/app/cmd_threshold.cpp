@@ -107,6 +107,7 @@ void RegisterThresholdCommand(CLI::App& app) {
     std::ofstream(*out_dir + "/threshold.json") << json.dump(2) << "\n";
     std::printf("all sets: threshold_deg %s (tolerance %.0f%%, against %s); wrote %s, %s/threshold.json\n",
                 json["threshold_deg"].dump().c_str(), 100 * *tolerance, against->c_str(), csv.c_str(), out_dir->c_str());
+    std::fflush(stdout);  // before the plot script's own output
     if (*plot) {
       const std::string cmd = "/usr/bin/python3 " + std::string(CONFORMA_SOURCE_DIR) + "/scripts/plot_threshold.py '" +
                               csv + "' '" + *out_dir + "/threshold.json' '" + *out_dir + "/threshold.png'";
