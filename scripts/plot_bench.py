@@ -22,7 +22,7 @@ def main(path, out):
     for r in rows:
         groups[(r["model"], r["grid"])].append(r)
     colors = {"hertz": "tab:blue", "kp": "tab:orange", "kpec": "tab:green", "conformal": "tab:red",
-              "conformal_kpec": "tab:purple"}
+              "conformal_eps055": "tab:purple"}
     fig, axes = plt.subplots(1, 2, figsize=(12, 5))
     panels = [("p_max error vs BEM (Blanco)", lambda r: abs(float(r["err_pmax"]))),
               ("creep force error vs fine conformal", lambda r: max(abs(float(r["err_fx"])), abs(float(r["err_fy"]))))]

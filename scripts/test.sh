@@ -5,4 +5,4 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$here/build}"
 "$here/scripts/setup.sh" "$build"
 cd "$build"
-ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" --timeout 600
+ctest --output-on-failure -j "$(nproc 2>/dev/null || echo 2)" --timeout 900 -LE stress_long

@@ -31,10 +31,10 @@ namespace {
 
 KpOptions KpOptionsFor(const PatchSolveOptions& o, const Material& material) {
   KpOptions k = o.model == ContactModel::Kpec        ? KpecOptions(material)
-                : o.model == ContactModel::Conformal ? ConformalKpOptions(material)
+                : o.model == ContactModel::Conformal ? (o.variable_epsilon ? ConformalKpecOptions(material)
+                                                                           : ConformalKpOptions(material))
                                                      : PlanarKpOptions(material);
   k.strips_across_contact = o.kp_strips;
-  if (o.model == ContactModel::Conformal && o.variable_epsilon) k.penetration = KpPenetrationRule::VariableEpsilon;
   return k;
 }
 
@@ -186,8 +186,8 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
       const char* name;
     };
     std::vector<Variant> variants;
-    for (ContactModel model : options.models) variants.push_back({model, false, to_string(model)});
-    if (options.conformal_kpec) variants.push_back({ContactModel::Conformal, true, "conformal_kpec"});
+    for (ContactModel model : options.models) variants.push_back({model, true, to_string(model)});
+    if (options.conformal_eps055) variants.push_back({ContactModel::Conformal, false, "conformal_eps055"});
     for (const Variant& v : variants) {
       for (const BenchGrid& grid : options.grids) {
         PatchSolveOptions o;

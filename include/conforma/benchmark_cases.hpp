@@ -52,9 +52,9 @@ struct PatchSolveOptions {
   double load_tolerance = 1e-6;  // relative, on fn_bar
   // > 0: approach given (one normal solve, as a multibody code in penetration mode calls it) instead of the load
   double approach_m = 0.0;
-  // Conformal model only: KPEC's variable virtual penetration instead of eps = 0.55 (Blanco-Lorenzo influence kept);
-  // reported by the bench as the model "conformal_kpec".
-  bool variable_epsilon = false;
+  // Conformal model only: KPEC's variable virtual penetration (the pipeline's default, ConformalKpecOptions); false:
+  // Kik-Piotrowski's eps = 0.55 (ConformalKpOptions), reported by the bench as the model "conformal_eps055".
+  bool variable_epsilon = true;
   bool solve_tangential = true;
   void validate() const;
 };
@@ -103,7 +103,7 @@ struct BenchRow {
 struct BenchOptions {
   std::vector<ContactModel> models{ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal};
   std::vector<BenchGrid> grids = DefaultBenchGrids();
-  bool conformal_kpec = true;  // also run the conformal model with KPEC's variable epsilon ("conformal_kpec")
+  bool conformal_eps055 = true;  // also run the conformal model with eps = 0.55 ("conformal_eps055")
   BenchGrid tangential_reference{121, 100};  // conformal model on this grid
   int bem_x_elements = 64;
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)

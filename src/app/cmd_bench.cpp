@@ -73,7 +73,7 @@ void RegisterBenchCommand(CLI::App& app) {
     std::map<std::string, double> median_time_default;
     std::vector<std::string> names;
     for (ContactModel m : options.models) names.push_back(to_string(m));
-    if (options.conformal_kpec) names.push_back("conformal_kpec");
+    if (options.conformal_eps055) names.push_back("conformal_eps055");
     for (const std::string& name : names) {
       for (const BenchGrid& g : options.grids) {
         std::vector<double> t, ta, tn;
