@@ -110,6 +110,16 @@ Profile BuiltInOrFileWheel(const Reader& r, const std::string& name) {
   return LoadProfile(r.path(name), o);
 }
 
+// Contact model by name (the same names as ParseContactModel of the pipeline, which the core cannot link to).
+ContactModel ModelFromName(const Reader& r, const std::string& name) {
+  if (name == "hertz") return ContactModel::Hertz;
+  if (name == "kp") return ContactModel::Kp;
+  if (name == "kpec") return ContactModel::Kpec;
+  if (name == "conformal") return ContactModel::Conformal;
+  if (name == "reference") return ContactModel::Reference;
+  r.fail("contact_model", "unknown contact model '" + name + "' (hertz, kp, kpec, conformal, reference)");
+}
+
 WearLaw LawFromName(const Reader& r, const std::string& name) {
   if (name == "usfd") return WearLaw{};
   return LoadWearLaw(r.path(name));
@@ -311,8 +321,16 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     if (p["rail"]) s.rail_name = r.text(p["rail"], "profiles.rail");
     if (p["wheel_radius_mm"]) s.vehicle.nominal_wheel_radius_m = 1e-3 * r.number(p["wheel_radius_mm"], "profiles.wheel_radius_mm");
   }
-  s.wheel = BuiltInOrFileWheel(r, s.wheel_name);
-  s.rail = BuiltInOrFileRail(r, s.rail_name);
+  try {
+    s.wheel = BuiltInOrFileWheel(r, s.wheel_name);
+  } catch (const InputError& e) {
+    r.fail("profiles.wheel", e.what());
+  }
+  try {
+    s.rail = BuiltInOrFileRail(r, s.rail_name);
+  } catch (const InputError& e) {
+    r.fail("profiles.rail", e.what());
+  }
   if (const YAML::Node m = root["material"]) {
     r.check_keys(m, "material", {"shear_modulus_Pa", "poisson_ratio", "density_kg_m3"});
     if (m["shear_modulus_Pa"]) s.material.shear_modulus_Pa = r.number(m["shear_modulus_Pa"], "material.shear_modulus_Pa");
@@ -322,12 +340,18 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   s.wear.wheel_material = s.material;
   s.wear.rail_material = s.material;
   if (root["friction"]) s.friction_coefficient = r.number(root["friction"], "friction");
-  if (root["wear_law"]) {
-    s.wear.wheel_law = LawFromName(r, r.text(root["wear_law"], "wear_law"));
-    s.wear.rail_law = s.wear.wheel_law;
+  try {
+    if (root["wear_law"]) {
+      s.wear.wheel_law = LawFromName(r, r.text(root["wear_law"], "wear_law"));
+      s.wear.rail_law = s.wear.wheel_law;
+    }
+    if (root["rail_wear_law"]) s.wear.rail_law = LawFromName(r, r.text(root["rail_wear_law"], "rail_wear_law"));
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    if (msg.rfind(source, 0) == 0) throw;
+    r.fail("wear_law", msg);
   }
-  if (root["rail_wear_law"]) s.wear.rail_law = LawFromName(r, r.text(root["rail_wear_law"], "rail_wear_law"));
-  if (root["contact_model"]) s.model = ParseContactModel(r.text(root["contact_model"], "contact_model"));
+  if (root["contact_model"]) s.model = ModelFromName(r, r.text(root["contact_model"], "contact_model"));
   if (const YAML::Node u = root["update"]) {
     r.check_keys(u, "update", {"cap_mm", "smoothing_mm", "steps", "total_km", "max_curvature_1_m"});
     if (u["cap_mm"]) s.update.cap_m = 1e-3 * r.number(u["cap_mm"], "update.cap_mm");

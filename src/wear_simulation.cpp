@@ -135,6 +135,8 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.step = j;
       rec.samples = wear.samples;
       rec.failed_contacts = wear.failed_contacts;
+      rec.approximate_contacts = wear.approximate_contacts;
+      rec.hertz_fallback_contacts = wear.hertz_fallback_contacts;
       rec.kinematics_fallbacks = fallbacks->load() - fallbacks_before;
       rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
       rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};

@@ -45,6 +45,12 @@ struct StepWearOptions {
   WheelContactOptions contact;  // model, material, discretisation; keep_fields, load and friction are set per call
   WearModel wear;
   double grid_spacing_m = 0.1e-3;  // wear grids on the wheel and rail arc lengths
+  // A wheel whose load control ended NotConverged is used when its carried vertical load is within this fraction
+  // of the target (otherwise it is a failed contact, without wear).
+  double load_acceptance = 0.10;
+  // A wheel whose load control finds no bracket with the chosen model (NotConverged without patches; seen with the
+  // kp/conformal models at flange contact on worn profiles) is solved with the Hertz model instead (counted).
+  bool hertz_fallback = true;
 };
 
 struct StepWear {
@@ -53,6 +59,8 @@ struct StepWear {
   std::vector<std::array<TrackClassWear, 2>> per_class;
   int samples = 0;                         // wheel contacts evaluated
   int failed_contacts = 0;                 // NoContact / NotConverged wheels (no wear taken from them)
+  int approximate_contacts = 0;            // NotConverged wheels within load_acceptance (used)
+  int hertz_fallback_contacts = 0;         // wheels solved with the Hertz model instead (hertz_fallback)
   int patches = 0, slipping_cells = 0;
   double wheel_area_off_grid_m2 = 0.0;     // cells that could not be mapped to the wheel arc length
 };
@@ -112,7 +120,7 @@ struct WearStepRecord {
   WearDistribution removed_depth;           // smoothed, scaled depth removed [m]
   std::array<WearDistribution, 2> rail_depth_per_passage;  // [Left, Right]
   ProfileValidity validity;
-  int samples = 0, failed_contacts = 0;
+  int samples = 0, failed_contacts = 0, approximate_contacts = 0, hertz_fallback_contacts = 0;
   int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
 };
 

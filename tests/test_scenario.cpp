@@ -1,0 +1,88 @@
+// Scenario files (scenario.hpp): the two shipped scenarios, unknown keys and bad values named with the file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "conforma/error.hpp"
+#include "conforma/scenario.hpp"
+
+namespace conforma {
+namespace {
+
+const std::string kDir = std::string(CONFORMA_SOURCE_DIR) + "/scenarios/";
+
+double ShareSum(const Scenario& s) {
+  double sum = 0.0;
+  for (const TrackClass& c : s.classes) sum += c.share;
+  return sum;
+}
+
+TEST(Scenario, DefaultMetroAfterPaper003) {
+  const Scenario s = LoadScenario(kDir + "default_metro.yaml");
+  EXPECT_EQ(s.name, "default_metro");
+  EXPECT_NEAR(s.vehicle.nominal_wheel_radius_m, 0.3555, 1e-12);  // 711 mm wheels
+  EXPECT_NEAR(s.rail_inclination_rad, std::atan(1.0 / 20.0), 1e-15);
+  EXPECT_EQ(s.rail_name, "50E4");
+  EXPECT_EQ(s.wheel.kind(), ProfileKind::Wheel);
+  EXPECT_EQ(s.rail.kind(), ProfileKind::Rail);
+  EXPECT_NEAR(ShareSum(s), 1.0, 1e-12);
+  ASSERT_EQ(s.classes.size(), 4u);
+  EXPECT_EQ(s.classes[0].curve_radius_m, 0.0);  // tangent track
+  EXPECT_NEAR(s.classes[0].share, 0.8, 1e-12);   // percent normalised
+  EXPECT_NEAR(s.classes[3].speed_m_s, 35.0 / 3.6, 1e-12);
+  EXPECT_NEAR(s.classes[3].cant_m, 0.110, 1e-12);
+  EXPECT_NEAR(s.update.cap_m, 0.4e-3, 1e-15);
+  EXPECT_TRUE(s.rail_steps.fixed);
+  EXPECT_EQ(s.model, ContactModel::Conformal);
+}
+
+TEST(Scenario, AostaFromTheMeasuredClassTable) {
+  const Scenario s = LoadScenario(kDir + "aosta_aln501.yaml");
+  ASSERT_EQ(s.classes.size(), 18u);  // 17 curve classes + the straight remainder
+  EXPECT_EQ(s.classes[0].name, "tangent");
+  // curve shares of track_classes.csv sum to 67.73 %: the straight part is 32.27 %
+  EXPECT_NEAR(s.classes[0].share, 0.3227, 1e-9);
+  EXPECT_NEAR(ShareSum(s), 1.0, 1e-12);
+  EXPECT_NEAR(s.classes[8].curve_radius_m, 200.0, 0.0);
+  EXPECT_NEAR(s.classes[8].share, 0.2064, 1e-12);
+  EXPECT_NEAR(s.update.total_km, 3500.0, 0.0);
+  EXPECT_EQ(s.vehicle.bogie_count, 2);
+}
+
+void ExpectError(const std::string& yaml, const std::string& fragment) {
+  try {
+    ParseScenario(yaml, "bad.yaml");
+    FAIL() << "no error for: " << yaml;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("bad.yaml"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(fragment), std::string::npos) << msg;
+  }
+}
+
+const char* kClasses = "track_classes: [{radius_m: 0, speed_kmh: 60, share: 1}]\n";
+
+TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
+  ExpectError(std::string("colour: red\n") + kClasses, "colour");
+  ExpectError(std::string("update: {cap_mm: 0.4, stepz: 3}\n") + kClasses, "stepz");
+  ExpectError(std::string("vehicle: {base: metro, wheel_base_m: 2}\n") + kClasses, "wheel_base_m");
+  ExpectError("track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, cant: 3}]\n", "cant");
+  ExpectError(std::string("update: {cap_mm: abc}\n") + kClasses, "update.cap_mm");
+  ExpectError(std::string("update: {cap_mm: -1}\n") + kClasses, "cap_mm");
+  ExpectError(std::string("contact_model: fem\n") + kClasses, "fem");
+  ExpectError("track_classes: [{radius_m: 0, share: 1}]\n", "speed_kmh");
+  ExpectError("name: x\n", "no track classes");
+  ExpectError(std::string("profiles: {rail: /nonexistent/rail.prr}\n") + kClasses, "rail.prr");
+}
+
+TEST(Scenario, MinimalFileTakesTheDefaults) {
+  const Scenario s = ParseScenario(kClasses, "mini.yaml");
+  EXPECT_EQ(s.classes.size(), 1u);
+  EXPECT_EQ(s.update.steps, 20);
+  EXPECT_EQ(s.kinematics.provider, KinematicsProvider::QuasiStatic);
+  EXPECT_NEAR(s.classes[0].friction_coefficient, 0.3, 0.0);
+}
+
+}  // namespace
+}  // namespace conforma
