@@ -35,9 +35,15 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
   PatchSolveOptions o;
   o.kp_strips = options.kp_strips;
   o.fastsim_elements = options.fastsim_elements;
+  o.variable_epsilon = options.variable_epsilon;
   o.model = ContactModel::Conformal;
   const PatchSolution c = SolveBenchPatch(situation, o);
-  o.model = options.against == PlanarComparison::Hertz ? ContactModel::Hertz : ContactModel::Kp;
+  // The planar KP-type model with the SAME virtual-penetration rule as the conformal model (KPEC for the default
+  // variable eps, KP for eps = 0.55), so that the difference isolates the conformity (curved surface + Blanco
+  // influence) and not the penetration rule.
+  o.model = options.against == PlanarComparison::Hertz ? ContactModel::Hertz
+            : o.variable_epsilon                       ? ContactModel::Kpec
+                                                       : ContactModel::Kp;
   ThresholdPoint t;
   PatchSolution p;
   if (options.against == PlanarComparison::FlattenedKp) {

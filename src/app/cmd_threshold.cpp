@@ -52,6 +52,7 @@ void RegisterThresholdCommand(CLI::App& app) {
   auto load = std::make_shared<double>(10e3);
   auto strips = std::make_shared<int>(31);
   auto elements = std::make_shared<int>(30);
+  auto variable_eps = std::make_shared<bool>(false);
   auto plot = std::make_shared<bool>(true);
   CLI::App* sub = app.add_subcommand("threshold", "conformity-index threshold: conformal vs planar over sweeps");
   sub->add_option("--out", *out_dir, "output folder");
@@ -63,10 +64,13 @@ void RegisterThresholdCommand(CLI::App& app) {
   sub->add_option("--kp-strips", *strips, "KP strips across the contact");
   sub->add_option("--fastsim-elements", *elements, "FASTSIM elements per strip");
   sub->add_flag("!--no-plot", *plot, "do not run scripts/plot_threshold.py");
+  sub->add_flag("--variable-penetration", *variable_eps,
+                "compare with KPEC's variable eps on both sides (default: eps = 0.55, paper 003's formulation)");
   sub->callback([=]() {
     ThresholdOptions options;
     options.tolerance = *tolerance;
     options.kp_strips = *strips;
+    options.variable_epsilon = *variable_eps;
     options.fastsim_elements = *elements;
     options.against = ParsePlanarComparison(*against);
     require_positive(*load, "--load-N");
