@@ -18,7 +18,10 @@ double FlangeContactShift(const WheelsetTrackGeometry& geometry, double curvatur
     guess = eq.pose;
     for (const RigidContactPoint& p : eq.contact.wheel[side_index(outer)].points)
       if (p.gap_m < 1e-6 + eq.contact.wheel[side_index(outer)].points.front().gap_m && p.contact_angle_rad > flange_angle_rad)
-        return dir * y;
+        // the flange has become the rigid contact: the wheelset jumped onto its flange (tread lifted). The flange
+        // position is the last shift before that jump, where the tread still carries and the flange gap is below
+        // the scan resolution (under load both touch: two-point contact).
+        return dir * std::max(0.0, y - 0.1e-3);
   }
   return dir * 20e-3;
 }
