@@ -59,6 +59,8 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
                   st.empty() ? 0.0 : st.back().flange_wear_m * 1e3, to_string(r.result.status));
     md << buf;
   }
+  for (const ModelRun& r : runs)
+    if (!r.result.message.empty()) md << "\n" << r.name << " stopped: " << r.result.message << "\n";
   const WheelDimensions& d0 = runs.front().result.initial_dimensions;
   std::snprintf(buf, sizeof buf, "\nInitial profile: Sd %.3f mm, Sh %.3f mm, qR %.3f mm.\n", d0.sd_m * 1e3, d0.sh_m * 1e3,
                 d0.qr_m * 1e3);
