@@ -70,8 +70,11 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
       failed += s.failed_contacts;
       wheels += s.samples + s.failed_contacts;
     }
-    // material is removed: flange thickness cannot grow, the tread loses at least the first step's cap
-    EXPECT_LE(r.steps.back().dimensions.sd_m, r.initial_dimensions.sd_m + 1e-6);
+    // wear only removes material: no point of the worn profile lies outside the initial one (depth of the initial
+    // profile measured along the worn profile's normals <= resampling tolerance), and the largest depth is at
+    // least one cap (Sd may grow: it is measured 10 mm above the worn taping line)
+    const WheelWearDepths added = MeasureWheelWear(r.steps.back().wheel, r.initial_wheel);
+    EXPECT_LE(std::max(added.tread_m, added.flange_m), 2e-6) << to_string(m);
     EXPECT_GE(std::max(r.steps.back().tread_wear_m, r.steps.back().flange_wear_m), 0.99 * sc.update.cap_m);
     RecordProperty(std::string(to_string(m)) + "_failed_wheel_contacts", std::to_string(failed) + "/" + std::to_string(wheels));
     std::printf("%s: failed wheel contacts %d of %d\n", to_string(m), failed, wheels);
@@ -82,7 +85,7 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
 }
 
 TEST(WearSimulation, TotalKmShortensTheLastStep) {
-  const Scenario sc = FastMetro();
+  const Scenario sc = FastMetroSmoothed();
   WearSimulationOptions o;
   o.model = ContactModel::Hertz;
   o.steps = 10;
