@@ -128,7 +128,15 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       uo.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
       uo.step_index = j;
       if (total_km > 0.0) uo.max_distance_step_m = (total_km - km) * 1e3;
-      const ProfileUpdateResult up = UpdateProfile(wheel, wear.wheel.wheel_depth_per_metre, 1.0, uo);
+      WearDistribution depth = wear.wheel.wheel_depth_per_metre;
+      if (options.edge_taper_m > 0.0) {
+        const double L = depth.length_m();
+        for (size_t i = 0; i < depth.size(); ++i) {
+          const double e = std::min(depth.s(i), L - depth.s(i));
+          if (e < options.edge_taper_m) depth.depth_m[i] *= 0.5 - 0.5 * std::cos(M_PI * e / options.edge_taper_m);
+        }
+      }
+      const ProfileUpdateResult up = UpdateProfile(wheel, depth, 1.0, uo);
 
       WearStepRecord rec;
       rec.rail_step = k;

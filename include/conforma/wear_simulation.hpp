@@ -103,6 +103,11 @@ struct WearSimulationOptions {
   int kp_strips = 31;
   double candidate_strip_width_m = 0.1e-3;
   double grid_spacing_m = 0.1e-3;
+  // The accumulated wheel depth is tapered to zero (raised cosine) over this length at both ends of the wheel
+  // profile before the update: at the very end of the profile (field-side edge, flange back) the removal along
+  // the normal has no neighbour on one side and a worn edge turns into a kink that fails the validity check.
+  // 0 disables the taper.
+  double edge_taper_m = 3e-3;
   // Called after every wheel step (progress display, streaming output); may be empty.
   std::function<void(const struct WearStepRecord&)> on_step;
 };
