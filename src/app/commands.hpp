@@ -8,6 +8,8 @@ void RegisterContactCommand(CLI::App& app);  // conforma contact: one wheelset p
 void RegisterSweepCommand(CLI::App& app);    // conforma sweep: lateral sweep table (the default main job)
 void RegisterProfileCommand(CLI::App& app);  // conforma profile: info / write standard profiles
 void RegisterMbenchCommand(CLI::App& app);   // conforma mbench: Manchester against CONTACT
+void RegisterWearCommand(CLI::App& app);     // conforma wear: wear loop of a scenario
+void RegisterCompareCommand(CLI::App& app);  // conforma compare: several contact models on one scenario, report
 void RegisterBenchCommand(CLI::App& app);    // conforma bench: run time against error per model and grid
 void RegisterThresholdCommand(CLI::App& app);  // conforma threshold: conformity-index threshold study
 void RegisterStressCommand(CLI::App& app);     // conforma stress: numerical stability stress suite

@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterSweepCommand(app);
   conforma::cli::RegisterProfileCommand(app);
   conforma::cli::RegisterMbenchCommand(app);
+  conforma::cli::RegisterWearCommand(app);
+  conforma::cli::RegisterCompareCommand(app);
   conforma::cli::RegisterBenchCommand(app);
   conforma::cli::RegisterThresholdCommand(app);
   conforma::cli::RegisterStressCommand(app);
