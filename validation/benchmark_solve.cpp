@@ -30,12 +30,7 @@ std::vector<BenchGrid> DefaultBenchGrids() { return {{11, 10}, {21, 20}, {31, 30
 namespace {
 
 KpOptions KpOptionsFor(const PatchSolveOptions& o, const Material& material) {
-  KpOptions k = o.model == ContactModel::Kpec        ? KpecOptions(material)
-                : o.model == ContactModel::Conformal ? (o.variable_epsilon ? ConformalKpecOptions(material)
-                                                                           : ConformalKpOptions(material))
-                                                     : PlanarKpOptions(material);
-  k.strips_across_contact = o.kp_strips;
-  return k;
+  return KpOptionsForModel(o.model, material, o.variable_epsilon, o.kp_strips);
 }
 
 PatchSolution SolveHertzModel(const BenchCase& c, const PatchSolveOptions& o) {

@@ -17,6 +17,7 @@
 #include "conforma/creepage.hpp"
 #include "conforma/fastsim.hpp"
 #include "conforma/geometry.hpp"
+#include "conforma/kik_piotrowski.hpp"
 #include "conforma/material.hpp"
 
 namespace conforma {
@@ -101,6 +102,11 @@ struct WheelContactReport {
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side)
   int load_iterations = 0;
 };
+
+// The Kik-Piotrowski options of a KP-type model (kp, kpec, conformal; conformal: variable or constant virtual
+// penetration) with `strips` strips across the contact. InputError for hertz / reference.
+KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool conformal_variable_penetration,
+                            int strips);
 
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
 // mode. Throws InputError for bad options or velocities; no contact is a status.

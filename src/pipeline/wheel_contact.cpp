@@ -119,11 +119,8 @@ PatchFrame FrameOf(const PatchGeometry& patch) {
 }
 
 KpOptions KpOptionsFor(const WheelContactOptions& o) {
-  KpOptions k = o.model == ContactModel::Kpec        ? KpecOptions(o.material)
-                : o.model == ContactModel::Conformal ? (o.conformal_variable_penetration ? ConformalKpecOptions(o.material)
-                                                                                         : ConformalKpOptions(o.material))
-                                                     : PlanarKpOptions(o.material);
-  k.strips_across_contact = o.kp_strips;
+  if (o.model == ContactModel::Hertz || o.model == ContactModel::Reference) return PlanarKpOptions(o.material);  // unused
+  KpOptions k = KpOptionsForModel(o.model, o.material, o.conformal_variable_penetration, o.kp_strips);
   k.conformity_threshold_deg = o.conformity_threshold_deg;
   return k;
 }
@@ -213,6 +210,21 @@ double SolveMonotone(const std::function<double(double)>& f, double lo, double h
 }
 
 }  // namespace
+
+KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool conformal_variable_penetration,
+                            int strips) {
+  KpOptions k;
+  switch (model) {
+    case ContactModel::Kp: k = PlanarKpOptions(material); break;
+    case ContactModel::Kpec: k = KpecOptions(material); break;
+    case ContactModel::Conformal:
+      k = conformal_variable_penetration ? ConformalKpecOptions(material) : ConformalKpOptions(material);
+      break;
+    default: throw InputError(std::string("model '") + to_string(model) + "' is not a Kik-Piotrowski model");
+  }
+  k.strips_across_contact = strips;
+  return k;
+}
 
 WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
                                      const WheelsetVelocity& velocity, const WheelContactOptions& options) {
