@@ -1,11 +1,15 @@
 // conforma: command-line entry point. Subcommands are registered in their own files (src/app/cmd_*.cpp).
 #include <CLI/CLI.hpp>
+#include <glog/logging.h>
 #include <iostream>
 
 #include "commands.hpp"
 #include "conforma/error.hpp"
 
 int main(int argc, char** argv) {
+  // Ceres reports failed residual evaluations through glog; the curving solver treats them as a normal outcome
+  // (counted in its status), so only fatal messages reach the terminal.
+  FLAGS_minloglevel = google::GLOG_FATAL;
   CLI::App app{"Conforma: conformal wheel-rail contact and wear"};
   app.option_defaults()->always_capture_default();
   app.require_subcommand(1);
