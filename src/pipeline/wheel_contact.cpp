@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "conforma/bem_reference.hpp"
+#include "conforma/conformity.hpp"
 #include "conforma/curved_fastsim.hpp"
 #include "conforma/error.hpp"
 #include "conforma/hertz.hpp"
@@ -178,10 +179,21 @@ NormalSolution SolveReferencePatch(const PatchGeometry& patch, double approach_m
   if (r.status == BemStatus::NoContact) return out;
   out.in_contact = r.normal_force_reference_N > 0.0;
   out.fn_N = r.normal_force_reference_N;
+  // lateral component of the curved-surface pressure along t0 (n_j = cos a n0 + sin a t0, patch.hpp), as the KP
+  // models report it, so that load control balances the same resultant for every model
+  for (int j = 0; j < r.grid.ns; ++j)
+    out.fs_N += r.pressure_Pa.col(j).sum() * std::sin(r.grid.alpha(j)) * r.grid.element_area_m2();
   out.pmax_Pa = out.p0_Pa = r.max_pressure_Pa;
   out.area_m2 = r.contact_area_m2;
   out.width_m = r.contact_width_s_m;
   out.length_m = r.contact_length_x_m;
+  // conformity index (paper 003 eq. 13) over the strips whose centres lie in the BEM contact
+  std::vector<double> angles;
+  for (size_t j = 0; j < patch.strips(); ++j)
+    if (patch.s_m[j] >= r.contact_s_min_m && patch.s_m[j] <= r.contact_s_max_m) angles.push_back(patch.alpha_rad[j]);
+  const ConformityIndex index = ComputeConformityIndex(angles, o.conformity_threshold_deg);
+  out.alpha_c_deg = index.alpha_c_deg;
+  out.is_conformal = index.is_conformal;
   return out;
 }
 
