@@ -1,36 +1,20 @@
-// Parametric cubic smoothing spline for noisy profile points, solved with SuiteSparse CHOLMOD.
+// Parametric cubic smoothing spline for noisy profile points, solved with SuiteSparse CHOLMOD (sparse_cholesky.hpp).
 // Reinsch (1967) algorithm in the notation of Green & Silverman (1994) §2.3: with knot spacings h_i,
 // Q (n x n-2) and R (n-2 x n-2) tridiagonal, the natural smoothing spline has second derivatives gamma at the
 // interior knots solving (R + lambda Q^T Q) gamma = Q^T y and values f = y - lambda Q gamma.
 #include "profile_smoothing.hpp"
 
-#include <cholmod.h>
-
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
 #include "conforma/error.hpp"
+#include "conforma/sparse_cholesky.hpp"
 
 namespace conforma::profile_smoothing {
 
 namespace {
-
-// Owns a cholmod_common and the objects allocated with it.
-class Cholmod {
- public:
-  Cholmod() { cholmod_start(&c_); c_.print = 0; }
-  ~Cholmod() {
-    if (L_) cholmod_free_factor(&L_, &c_);
-    if (A_) cholmod_free_sparse(&A_, &c_);
-    cholmod_finish(&c_);
-  }
-  Cholmod(const Cholmod&) = delete;
-  Cholmod& operator=(const Cholmod&) = delete;
-  cholmod_common c_;
-  cholmod_sparse* A_ = nullptr;
-  cholmod_factor* L_ = nullptr;
-};
 
 struct Fit {
   std::vector<double> fy, fz, gy, gz;  // values and second derivatives at all knots (natural: 0 at the ends)
@@ -41,7 +25,7 @@ struct Fit {
 class SmoothingSystem {
  public:
   SmoothingSystem(const std::vector<double>& t, const std::vector<Eigen::Vector2d>& p, const std::string& source)
-      : t_(t), p_(p), source_(source), n_(t.size()), m_(n_ - 2) {
+      : p_(p), source_(source), n_(t.size()), m_(n_ - 2) {
     h_.resize(n_ - 1);
     for (size_t i = 0; i + 1 < n_; ++i) h_[i] = t[i + 1] - t[i];
     a_.resize(m_); b_.resize(m_); c_.resize(m_);
@@ -50,43 +34,22 @@ class SmoothingSystem {
       b_[j] = -1.0 / h_[j] - 1.0 / h_[j + 1];
       c_[j] = 1.0 / h_[j + 1];
     }
-    // lower triangle of the pentadiagonal matrix, column-major: rows j, j+1, j+2
-    const size_t nnz = 3 * m_;
-    cm_.A_ = cholmod_allocate_sparse(m_, m_, nnz, 1, 1, -1, CHOLMOD_REAL, &cm_.c_);
-    if (!cm_.A_) throw InputError(source_, 0, "smoothing: CHOLMOD could not allocate the matrix");
-    auto* Ap = static_cast<int*>(cm_.A_->p);
-    auto* Ai = static_cast<int*>(cm_.A_->i);
-    int k = 0;
-    for (size_t j = 0; j < m_; ++j) {
-      Ap[j] = k;
-      for (size_t r = j; r <= std::min(j + 2, m_ - 1); ++r) Ai[k++] = static_cast<int>(r);
-    }
-    Ap[m_] = k;
-    fill(1.0);
-    cm_.L_ = cholmod_analyze(cm_.A_, &cm_.c_);
-    if (!cm_.L_) throw InputError(source_, 0, "smoothing: CHOLMOD analysis failed");
   }
 
-  Fit solve(double lambda) {
-    fill(lambda);
-    cholmod_factorize(cm_.A_, cm_.L_, &cm_.c_);
-    if (cm_.c_.status != CHOLMOD_OK)
+  Fit solve(double lambda) const {
+    SparseCholesky cholesky(system(lambda));
+    if (!cholesky.ok())
       throw InputError(source_, 0, "smoothing: the spline system is not positive definite (points too close?)");
-    cholmod_dense* B = cholmod_allocate_dense(m_, 2, m_, CHOLMOD_REAL, &cm_.c_);
-    auto* bx = static_cast<double*>(B->x);
+    Eigen::VectorXd by(m_), bz(m_);
     for (size_t j = 0; j < m_; ++j) {  // Q^T y for both coordinates
-      bx[j] = a_[j] * p_[j].x() + b_[j] * p_[j + 1].x() + c_[j] * p_[j + 2].x();
-      bx[m_ + j] = a_[j] * p_[j].y() + b_[j] * p_[j + 1].y() + c_[j] * p_[j + 2].y();
+      by[j] = a_[j] * p_[j].x() + b_[j] * p_[j + 1].x() + c_[j] * p_[j + 2].x();
+      bz[j] = a_[j] * p_[j].y() + b_[j] * p_[j + 1].y() + c_[j] * p_[j + 2].y();
     }
-    cholmod_dense* X = cholmod_solve(CHOLMOD_A, cm_.L_, B, &cm_.c_);
-    cholmod_free_dense(&B, &cm_.c_);
-    if (!X) throw InputError(source_, 0, "smoothing: CHOLMOD solve failed");
-    const auto* x = static_cast<const double*>(X->x);
+    const Eigen::VectorXd xy = cholesky.solve(by), xz = cholesky.solve(bz);
     Fit f;
     f.gy.assign(n_, 0.0);
     f.gz.assign(n_, 0.0);
-    for (size_t j = 0; j < m_; ++j) { f.gy[j + 1] = x[j]; f.gz[j + 1] = x[m_ + j]; }
-    cholmod_free_dense(&X, &cm_.c_);
+    for (size_t j = 0; j < m_; ++j) { f.gy[j + 1] = xy[j]; f.gz[j + 1] = xz[j]; }
     // f = y - lambda Q gamma
     f.fy.resize(n_);
     f.fz.resize(n_);
@@ -105,21 +68,24 @@ class SmoothingSystem {
   }
 
  private:
-  void fill(double lambda) {  // R + lambda Q^T Q
-    auto* Ax = static_cast<double*>(cm_.A_->x);
-    int k = 0;
+  // R + lambda Q^T Q (pentadiagonal; lower triangle, which is all SparseCholesky reads)
+  Eigen::SparseMatrix<double> system(double lambda) const {
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(3 * m_);
     for (size_t j = 0; j < m_; ++j) {
-      Ax[k++] = (h_[j] + h_[j + 1]) / 3.0 + lambda * (a_[j] * a_[j] + b_[j] * b_[j] + c_[j] * c_[j]);
-      if (j + 1 < m_) Ax[k++] = h_[j + 1] / 6.0 + lambda * (b_[j] * a_[j + 1] + c_[j] * b_[j + 1]);
-      if (j + 2 < m_) Ax[k++] = lambda * c_[j] * a_[j + 2];
+      const int r = static_cast<int>(j);
+      entries.emplace_back(r, r, (h_[j] + h_[j + 1]) / 3.0 + lambda * (a_[j] * a_[j] + b_[j] * b_[j] + c_[j] * c_[j]));
+      if (j + 1 < m_) entries.emplace_back(r + 1, r, h_[j + 1] / 6.0 + lambda * (b_[j] * a_[j + 1] + c_[j] * b_[j + 1]));
+      if (j + 2 < m_) entries.emplace_back(r + 2, r, lambda * c_[j] * a_[j + 2]);
     }
+    Eigen::SparseMatrix<double> A(static_cast<int>(m_), static_cast<int>(m_));
+    A.setFromTriplets(entries.begin(), entries.end());
+    return A;
   }
-  const std::vector<double>& t_;
   const std::vector<Eigen::Vector2d>& p_;
   std::string source_;
   size_t n_, m_;
   std::vector<double> h_, a_, b_, c_;
-  Cholmod cm_;
 };
 
 double eval_spline(const std::vector<double>& t, const std::vector<double>& f, const std::vector<double>& g, double x) {
