@@ -31,6 +31,17 @@ struct Creepages {
   double spin_per_m = 0.0;    // phi [1/m]
 };
 
+// Rigid-body motion of a wheel relative to its (fixed) rail, in the side frame of `side` (geometry.hpp; the right
+// wheel mirrored): velocity of the wheelset centre v = (V, sigma dy/dt, 0) and angular velocity
+// omega = sigma yaw_rate z + axle_rate * axle. The velocity of a wheel point P is v + omega x (P - centre).
+struct SideFrameMotion {
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity_rad_per_s = Eigen::Vector3d::Zero();
+};
+SideFrameMotion WheelsetMotionInSideFrame(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                          const WheelsetVelocity& velocity);
+
 // wheel_point_m: the contact point on the wheel in the track frame (RigidContactPoint::wheel_point_m);
 // contact_angle_rad: angle of the rail normal there (+ towards the gauge side). Throws InputError for a
 // non-positive forward speed or non-finite input.

@@ -7,7 +7,7 @@
 
 namespace conforma {
 
-// v = (V, sigma dy/dt, 0) at the wheelset centre; omega = sigma yaw_rate z + axle_rate * axle (creepage.hpp).
+// WheelsetMotionInSideFrame (creepage.hpp) in the form local_creepage.hpp takes.
 RigidBodyMotion WheelMotionInSideFrame(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
                                        const WheelsetVelocity& velocity);
 
