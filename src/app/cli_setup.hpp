@@ -30,6 +30,10 @@ struct ContactArgs {
   std::string penetration = "variable";  // conformal model: variable (KPEC rule) or constant (eps = 0.55)
   void add_to(CLI::App* app);
   WheelContactOptions options() const;
+  // Pure rolling at the nominal radius r0 at --speed, no lateral or yaw velocity.
+  WheelsetVelocity rolling_velocity(double nominal_radius_m) const {
+    return {speed_m_s, 0.0, 0.0, speed_m_s / nominal_radius_m};
+  }
 };
 
 // Parses "1:40", "1/40", "0", "none" or a decimal angle in radians.

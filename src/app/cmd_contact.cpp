@@ -35,7 +35,7 @@ struct ContactCommand {
     if (roll_mrad) pose.roll_rad = *roll_mrad * 1e-3;
     if (options.vertical_load_N < 0.0) pose.vertical_m -= approach_mm * 1e-3;  // approach mode
     const double r0 = geometry->setup().nominal_radius_m[0];
-    WheelsetVelocity velocity{contact.speed_m_s, 0.0, 0.0, contact.speed_m_s / r0};
+    const WheelsetVelocity velocity = contact.rolling_velocity(r0);
     nlohmann::json out = {{"model", contact.model}, {"wheels", nlohmann::json::array()}};
     if (!json) {
       std::cout << "conforma contact: wheel " << track.wheel << " on rail " << track.rail << ", model " << contact.model

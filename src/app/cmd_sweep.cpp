@@ -25,13 +25,16 @@ struct SweepCommand {
     if (to_mm < from_mm) throw InputError("option --to-mm must be >= --from-mm");
     const auto geometry = track.make_geometry();
     std::vector<std::string> names;
+    std::vector<WheelContactOptions> model_options;  // built and validated once per model
     std::stringstream ss(models);
     for (std::string m; std::getline(ss, m, ',');) {
-      ParseContactModel(m);  // validates
+      ContactArgs c = contact;
+      c.model = m;
+      model_options.push_back(c.options());  // InputError for an unknown model
       names.push_back(m);
     }
     const Side s = side == "right" ? Side::Right : Side::Left;
-    const double r0 = geometry->setup().nominal_radius_m[0];
+    const WheelsetVelocity velocity = contact.rolling_velocity(geometry->setup().nominal_radius_m[0]);
     if (csv) {
       std::cout << "model,y_mm,yaw_mrad,delta_r_mm,patch,y_cp_rail_mm,contact_angle_rad,rolling_radius_mm,fn_N,pmax_MPa,"
                    "area_mm2,width_mm,alpha_c_deg,is_conformal,fx_N,fy_N,mz_Nm\n";
@@ -57,11 +60,9 @@ struct SweepCommand {
         std::cout << head;
         PrintPatchTableHeader(std::cout);
       }
-      for (const std::string& name : names) {
-        ContactArgs c = contact;
-        c.model = name;
-        const WheelsetVelocity velocity{contact.speed_m_s, 0.0, 0.0, contact.speed_m_s / r0};
-        const WheelContactReport r = SolveWheelContact(*geometry, s, eq.pose, velocity, c.options());
+      for (size_t m = 0; m < names.size(); ++m) {
+        const std::string& name = names[m];
+        const WheelContactReport r = SolveWheelContact(*geometry, s, eq.pose, velocity, model_options[m]);
         if (r.patches.empty() && !csv) std::cout << std::string(8 - std::min<size_t>(8, name.size()), ' ') << name
                                                  << ": " << to_string(r.status) << "\n";
         int j = 0;
