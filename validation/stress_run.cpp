@@ -87,6 +87,16 @@ double ForceChange(const WheelContactReport& r, const WheelContactReport& s, dou
 
 const char* kModelNames[] = {"hertz", "kp", "kpec", "conformal"};
 
+// Common end of a case: a non-finite value anywhere in the results is a failure; the digest feeds the
+// thread-count determinism check.
+void FinishCase(const ResultHash& h, const std::string& what, CaseOutcome* out) {
+  if (!h.finite) {
+    out->non_finite = true;
+    out->failure = what + ": NaN/inf in the result";
+  }
+  out->digest = h.h;
+}
+
 void RunWheelCase(const StressSetup& setup, const StressOptions& o, long i, std::mt19937_64& rng, CaseOutcome* out) {
   out->wheel = true;
   const int kind = static_cast<int>(i % 8);
@@ -172,11 +182,7 @@ void RunWheelCase(const StressSetup& setup, const StressOptions& o, long i, std:
     out->crash = true;
     out->failure = std::string(what) + ": exception " + e.what();
   }
-  if (!h.finite) {
-    out->non_finite = true;
-    out->failure = std::string(what) + ": NaN/inf in the result";
-  }
-  out->digest = h.h;
+  FinishCase(h, what, out);
 }
 
 PatchGeometry UniformPatch(int strips, double ds, double gap_curvature) {
@@ -239,11 +245,7 @@ void RunPatchCase(long i, std::mt19937_64& rng, CaseOutcome* out) {
     out->crash = true;
     out->failure = std::string(what) + ": exception " + e.what();
   }
-  if (!h.finite) {
-    out->non_finite = true;
-    out->failure = std::string(what) + ": NaN/inf in the result";
-  }
-  out->digest = h.h;
+  FinishCase(h, what, out);
 }
 
 }  // namespace
