@@ -13,5 +13,6 @@ void RegisterCompareCommand(CLI::App& app);  // conforma compare: several contac
 void RegisterBenchCommand(CLI::App& app);    // conforma bench: run time against error per model and grid
 void RegisterThresholdCommand(CLI::App& app);  // conforma threshold: conformity-index threshold study
 void RegisterStressCommand(CLI::App& app);     // conforma stress: numerical stability stress suite
+void RegisterCurvingCommand(CLI::App& app);    // conforma curving: curving kinematics and wheel forces per class
 
 }  // namespace conforma::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterBenchCommand(app);
   conforma::cli::RegisterThresholdCommand(app);
   conforma::cli::RegisterStressCommand(app);
+  conforma::cli::RegisterCurvingCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

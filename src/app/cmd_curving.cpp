@@ -1,0 +1,79 @@
+// conforma curving --scenario F [--class I] [--model M] [--provider P]: the curving kinematics of a scenario's track
+// classes on its initial profiles, with the contact forces of every wheel at the solution (what the wear loop
+// uses as its samples; kinematics_quasistatic.hpp, wear_simulation.hpp).
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "commands.hpp"
+#include "conforma/error.hpp"
+#include "conforma/kinematics_quasistatic.hpp"
+#include "conforma/scenario.hpp"
+#include "conforma/wear_simulation.hpp"
+
+namespace conforma::cli {
+
+namespace {
+
+void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const KinematicsSeries& s, ContactModel model) {
+  WheelContactOptions o;
+  o.model = model;
+  o.material = sc.material;
+  for (const KinematicsSample& k : s.samples) {
+    std::printf("    ws %d w %.3f: y %+7.3f mm  psi %+7.3f mrad  Omega r0/V-1 %+.2e\n", k.wheelset, k.weight,
+                k.pose.lateral_m * 1e3, k.pose.yaw_rad * 1e3,
+                k.velocity.axle_angular_velocity_rad_s * sc.vehicle.nominal_wheel_radius_m / k.velocity.forward_speed_m_s -
+                    1.0);
+    for (Side side : {Side::Left, Side::Right}) {
+      o.vertical_load_N = k.vertical_load_N[side_index(side)];
+      const WheelContactReport r = SolveWheelContact(g, side, k.pose, k.velocity, o);
+      std::printf("      %s Q %7.0f N  %s  %zu patches  Y %+8.0f N\n", side == Side::Left ? "L" : "R", o.vertical_load_N,
+                  to_string(r.status), r.patches.size(), r.lateral_force_N);
+      for (const PatchReport& p : r.patches)
+        std::printf("        angle %+6.1f deg  y_w %+7.2f mm  Fn %8.0f N  Fx %+7.0f  Fy %+7.0f  pmax %5.0f MPa  "
+                    "xi %+.4f eta %+.4f phi %+6.2f/m  P %.0f W\n",
+                    p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, p.fn_N, p.fx_N, p.fy_N,
+                    p.pmax_Pa * 1e-6, p.xi, p.eta, p.phi_per_m, p.frictional_power_W);
+    }
+  }
+}
+
+}  // namespace
+
+void RegisterCurvingCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("curving", "curving kinematics of a scenario's track classes, with the wheel forces");
+  struct Args {
+    std::string scenario, model, provider;
+    int track_class = -1;
+  };
+  auto a = std::make_shared<Args>();
+  sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
+  sub->add_option("--class", a->track_class, "track class index (default: all)");
+  sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+  sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred (default: the scenario's)");
+  sub->callback([a]() {
+    Scenario sc = LoadScenario(a->scenario);
+    const ContactModel model = a->model.empty() ? sc.model : ParseContactModel(a->model);
+    if (a->provider == "quasistatic") sc.kinematics.provider = KinematicsProvider::QuasiStatic;
+    else if (a->provider == "kinematic") sc.kinematics.provider = KinematicsProvider::Kinematic;
+    else if (a->provider == "centred") sc.kinematics.provider = KinematicsProvider::Centred;
+    else if (!a->provider.empty()) throw InputError("--provider: unknown provider '" + a->provider + "'");
+    const int nc = static_cast<int>(sc.classes.size());
+    if (a->track_class >= nc) throw InputError("--class: index " + std::to_string(a->track_class) + " >= " + std::to_string(nc));
+    const WheelsetTrackGeometry g(sc.MakeTrackSetup());
+    auto fallbacks = std::make_shared<std::atomic<int>>(0);
+    const KinematicsFunction kin = MakeScenarioKinematics(sc, model, &SolveWheelContact, fallbacks);
+    for (int c = 0; c < nc; ++c) {
+      if (a->track_class >= 0 && c != a->track_class) continue;
+      const TrackClass& tc = sc.classes[c];
+      const int before = fallbacks->load();
+      const KinematicsSeries s = kin(g, tc, c);
+      std::printf("class %d %s: R %.0f m, cant %.0f mm, V %.1f km/h, share %.4f, provider %s%s\n", c, tc.name.c_str(),
+                  tc.curve_radius_m, tc.cant_m * 1e3, tc.speed_m_s * 3.6, tc.share, to_string(sc.kinematics.provider),
+                  fallbacks->load() > before ? " (fell back to the kinematic estimate)" : "");
+      PrintSamples(sc, g, s, model);
+    }
+  });
+}
+
+}  // namespace conforma::cli
