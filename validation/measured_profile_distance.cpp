@@ -118,6 +118,8 @@ ProfileDistanceResult MeasureProfileDistance(const Profile& simulated, const Pro
     const double dist = d.norm();
     const double signed_dist = d.dot(simulated.normal(s)) >= 0.0 ? dist : -dist;
     ++out.points;
+    out.sample_y_m.push_back(q[0]);
+    out.sample_signed_distance_m.push_back(signed_dist);
     sum2 += dist * dist;
     sum_signed += signed_dist;
     if (dist > out.max_m) {

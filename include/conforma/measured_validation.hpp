@@ -165,6 +165,8 @@ struct ProfileDistanceResult {
   double y_at_max_m = 0.0;             // lateral position of the largest |distance|
   double zone_y_min_m = 0.0, zone_y_max_m = 0.0;  // lateral extent of the counted samples
   double alignment_shift_m = 0.0;      // z shift applied to the measured profile (align_taping_line)
+  // the counted samples: lateral position on the simulated profile and signed distance (for plots)
+  std::vector<double> sample_y_m, sample_signed_distance_m;
 };
 
 // `initial` defines the worn zone (unused when options.lateral_range_m is set). Throws InputError for empty
