@@ -14,5 +14,6 @@ void RegisterBenchCommand(CLI::App& app);    // conforma bench: run time against
 void RegisterThresholdCommand(CLI::App& app);  // conforma threshold: conformity-index threshold study
 void RegisterStressCommand(CLI::App& app);     // conforma stress: numerical stability stress suite
 void RegisterCurvingCommand(CLI::App& app);    // conforma curving: curving kinematics and wheel forces per class
+void RegisterValidateCommand(CLI::App& app);   // conforma validate: wear simulation against measured wheels
 
 }  // namespace conforma::cli

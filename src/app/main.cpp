@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterThresholdCommand(app);
   conforma::cli::RegisterStressCommand(app);
   conforma::cli::RegisterCurvingCommand(app);
+  conforma::cli::RegisterValidateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
