@@ -201,7 +201,7 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
         "measured km is the linear interpolation in km between the two steps that bracket it (step 0 = the initial "
         "profile at 0 km); a measured km beyond the last step is not extrapolated and not counted. error = simulated "
         "- measured.\n\n";
-  md << "## Summary (RMS / max |error| over the measured points, mm)\n\n";
+  md << "## Summary (RMS / max |error| over all measured points, km 0 included; mm)\n\n";
   md << "| model | steps | km | run time s | Sd RMS | Sh RMS | qR RMS | Sd max | Sh max | qR max | points beyond | status |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   char buf[512];
