@@ -4,8 +4,13 @@
 //
 //   geometry  FindContactCandidates[ForLoad]  -> every interpenetration region as a PatchGeometry
 //   normal    hertz | kp | kpec | conformal | reference (BEM)      (load control over the wheel's vertical push)
+//             | auto: per patch hertz, kpec or conformal, chosen from the undeformed geometry (model_selection.hpp)
 //   creepage  rigid slip from the wheelset velocities at the patch (per strip for the conformal model)
 //   tangent   FASTSIM (hertz) | FASTSIM on the SDEC over the KP patch (kp, kpec) | curved-patch FASTSIM (conformal)
+//             (auto: the tangential model of the patch's chosen normal model)
+//   Zero creepage at a patch (all three exactly 0): the tangential solve is skipped (tangential_status
+//   "no_creepage", creep forces, moment and power exactly 0, no cells) -- FASTSIM gives exactly zero traction and
+//   slip there, so only the adhesion/slip areas and the cells (all adhesive, zero traction) are not reported.
 //
 // Frames: each wheel is reported in its side frame (geometry.hpp), i.e. the right wheel as the mirror image of a
 // left wheel; forces are those ON THE WHEEL (Kalker's convention) in the patch's contact frame: fx along the track,
@@ -19,13 +24,9 @@
 #include "conforma/geometry.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/material.hpp"
+#include "conforma/model_selection.hpp"
 
 namespace conforma {
-
-enum class ContactModel { Hertz, Kp, Kpec, Conformal, Reference };
-const char* to_string(ContactModel model);
-// "hertz", "kp", "kpec", "conformal", "reference"; InputError naming the value otherwise.
-ContactModel ParseContactModel(const std::string& name);
 
 struct WheelContactOptions {
   ContactModel model = ContactModel::Hertz;
@@ -43,6 +44,9 @@ struct WheelContactOptions {
   // `conformal` model: virtual-penetration rule. true (default): CONTACT's variable eps (ConformalKpecOptions);
   // false: Kik-Piotrowski's constant eps = 0.55 (ConformalKpOptions). See kik_piotrowski.hpp.
   bool conformal_variable_penetration = true;
+  // `auto` model: thresholds of the per-patch choice (model_selection.hpp; its conformity threshold, 17.7 deg by
+  // default, is separate from conformity_threshold_deg, which only sets the KP models' is_conformal flag).
+  ModelSelectionOptions auto_selection;
   bool solve_tangential = true;        // false: normal problem only
   bool keep_fields = false;            // fill PatchReport::cells (pressure, traction, slip per element)
   FastsimOptions fastsim;              // bound and marching (hertz model)
@@ -67,6 +71,8 @@ struct ContactCell {
 
 // Per patch: the keys of `conforma contact --json` (units in the names).
 struct PatchReport {
+  ContactModel model = ContactModel::Hertz;  // the model that solved this patch (auto: the chosen one)
+  double auto_alpha_c_deg = 0.0;             // auto only: the conformity index estimated for the choice
   std::string normal_status, tangential_status;
   double fn_N = 0.0, fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;
   double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0;

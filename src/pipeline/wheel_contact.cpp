@@ -12,6 +12,7 @@
 #include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/local_creepage.hpp"
+#include "conforma/model_selection.hpp"
 #include "pipeline/wheel_motion.hpp"
 
 namespace conforma {
@@ -23,15 +24,16 @@ const char* to_string(ContactModel model) {
     case ContactModel::Kpec: return "kpec";
     case ContactModel::Conformal: return "conformal";
     case ContactModel::Reference: return "reference";
+    case ContactModel::Auto: return "auto";
   }
   return "?";
 }
 
 ContactModel ParseContactModel(const std::string& name) {
   for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal,
-                         ContactModel::Reference})
+                         ContactModel::Reference, ContactModel::Auto})
     if (name == to_string(m)) return m;
-  throw InputError("unknown contact model '" + name + "' (expected hertz, kp, kpec, conformal or reference)");
+  throw InputError("unknown contact model '" + name + "' (expected hertz, kp, kpec, conformal, reference or auto)");
 }
 
 const char* to_string(WheelContactStatus status) {
@@ -53,6 +55,7 @@ void WheelContactOptions::validate() const {
   if (fastsim_elements < 2) throw InputError("option 'fastsim_elements' must be >= 2");
   if (kp_strips < 3) throw InputError("option 'kp_strips' must be >= 3");
   if (bem_x_elements < 8) throw InputError("option 'bem_x_elements' must be >= 8");
+  auto_selection.validate();
   if (creepages_given) {
     require_finite(creepages.longitudinal, "creepages.xi");
     require_finite(creepages.lateral, "creepages.eta");
@@ -119,9 +122,11 @@ PatchFrame FrameOf(const PatchGeometry& patch) {
   return {Eigen::Vector3d(0.0, n.x(), n.y()), Eigen::Vector3d(0.0, n.y(), -n.x())};
 }
 
-KpOptions KpOptionsFor(const WheelContactOptions& o) {
-  if (o.model == ContactModel::Hertz || o.model == ContactModel::Reference) return PlanarKpOptions(o.material);  // unused
-  KpOptions k = KpOptionsForModel(o.model, o.material, o.conformal_variable_penetration, o.kp_strips);
+// The KP options of `model` (a KP model; anything else gives unused planar options).
+KpOptions KpOptionsFor(const WheelContactOptions& o, ContactModel model) {
+  if (model != ContactModel::Kp && model != ContactModel::Kpec && model != ContactModel::Conformal)
+    return PlanarKpOptions(o.material);  // unused
+  KpOptions k = KpOptionsForModel(model, o.material, o.conformal_variable_penetration, o.kp_strips);
   k.conformity_threshold_deg = o.conformity_threshold_deg;
   return k;
 }
@@ -197,9 +202,10 @@ NormalSolution SolveReferencePatch(const PatchGeometry& patch, double approach_m
   return out;
 }
 
-// Root of f on [lo, hi] with f(lo) < 0 < f(hi) (Illinois false position, then bisection safeguard).
+// Root of f on [lo, hi] with f(lo) < 0 < f(hi) (Illinois false position, then bisection safeguard). f was last
+// evaluated at the returned x, and *f_at_root is that value (so the caller's state is already the root's).
 double SolveMonotone(const std::function<double(double)>& f, double lo, double hi, double flo, double fhi,
-                     double tolerance_abs, int* iterations) {
+                     double tolerance_abs, int* iterations, double* f_at_root) {
   double x = lo;
   int side = 0;
   for (int it = 0; it < 100; ++it) {
@@ -207,6 +213,7 @@ double SolveMonotone(const std::function<double(double)>& f, double lo, double h
     x = (lo * fhi - hi * flo) / (fhi - flo);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     const double fx = f(x);
+    *f_at_root = fx;
     if (std::fabs(fx) <= tolerance_abs || hi - lo < 1e-15) return x;
     if (fx < 0.0) {
       lo = x, flo = fx;
@@ -259,9 +266,9 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
   report.pose = candidates.pose;
   const size_t n = candidates.candidates.size();
 
-  // Hertz: the rigid contact point (smallest gap) inside each region.
+  // Hertz (and auto, which may choose Hertz): the rigid contact point (smallest gap) inside each region.
   std::vector<RigidContactPoint> hertz_points(n);
-  if (options.model == ContactModel::Hertz) {
+  if (options.model == ContactModel::Hertz || options.model == ContactModel::Auto) {
     const WheelContactResult rigid = geometry.RigidContact(side, candidates.pose);
     for (size_t j = 0; j < n; ++j) {
       const ContactCandidate& c = candidates.candidates[j];
@@ -272,9 +279,23 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
           best = p.gap_m, hertz_points[j] = p;
     }
   }
+  // The model of each patch: the chosen one, or per patch from the undeformed geometry at the candidates' pose
+  // (auto, model_selection.hpp; the approach there is the Hertz push-down in load control).
+  std::vector<ContactModel> patch_model(n, options.model);
+  std::vector<double> auto_alpha_c_deg(n, 0.0);
+  if (options.model == ContactModel::Auto) {
+    for (size_t j = 0; j < n; ++j) {
+      const PatchGeometry& patch = candidates.candidates[j].patch;
+      const ModelSelection choice =
+          SelectContactModel(patch, patch.rigid_approach_m, &hertz_points[j], options.auto_selection);
+      patch_model[j] = choice.model;
+      auto_alpha_c_deg[j] = choice.alpha_c_deg;
+    }
+  }
   std::vector<PatchFrame> frames(n);
   for (size_t j = 0; j < n; ++j) frames[j] = FrameOf(candidates.candidates[j].patch);
-  const KpOptions kp_options = KpOptionsFor(options);
+  std::vector<KpOptions> kp_options(n);
+  for (size_t j = 0; j < n; ++j) kp_options[j] = KpOptionsFor(options, patch_model[j]);
 
   // 2. Normal problem for a vertical push `dz` beyond the candidates' pose: patch j's approach along its own
   // reference normal grows by dz n0_z.
@@ -283,15 +304,15 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     for (size_t j = 0; j < n; ++j) {
       const ContactCandidate& c = candidates.candidates[j];
       NormalSolution& s = (*out)[j];
-      if (options.model == ContactModel::Hertz) {
+      if (patch_model[j] == ContactModel::Hertz) {
         const double approach = -hertz_points[j].gap_m + dz * std::cos(hertz_points[j].contact_angle_rad);
         s = SolveHertzPatch(hertz_points[j], approach, options.material);
         vertical += s.fn_N * std::cos(hertz_points[j].contact_angle_rad);
         continue;
       }
       const double approach = c.patch.rigid_approach_m + dz * frames[j].normal.z();
-      s = options.model == ContactModel::Reference ? SolveReferencePatch(c.patch, approach, options)
-                                                   : SolveKpPatch(c.patch, approach, kp_options);
+      s = patch_model[j] == ContactModel::Reference ? SolveReferencePatch(c.patch, approach, options)
+                                                    : SolveKpPatch(c.patch, approach, kp_options[j]);
       vertical += s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
     }
     return vertical;
@@ -312,8 +333,10 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
       report.status = WheelContactStatus::NotConverged;
       return report;
     }
-    const double dz = SolveMonotone(residual, lo, hi, flo, fhi, options.load_tolerance * load, &report.load_iterations);
-    const double final_residual = residual(dz);  // leaves `normal` at the solution
+    // SolveMonotone's last evaluation is at dz: `normal` already holds the solution there (no re-solve)
+    double final_residual = 0.0;
+    const double dz = SolveMonotone(residual, lo, hi, flo, fhi, options.load_tolerance * load, &report.load_iterations,
+                                    &final_residual);
     report.pose.vertical_m -= dz;
     if (std::fabs(final_residual) > 10.0 * options.load_tolerance * load) report.status = WheelContactStatus::NotConverged;
   } else {
@@ -327,8 +350,12 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     const NormalSolution& s = normal[j];
     if (!s.in_contact) continue;
     const ContactCandidate& c = candidates.candidates[j];
-    const RigidContactPoint& point = options.model == ContactModel::Hertz ? hertz_points[j] : c.reference;
+    const ContactModel model = patch_model[j];
+    const bool hertz = model == ContactModel::Hertz;
+    const RigidContactPoint& point = hertz ? hertz_points[j] : c.reference;
     PatchReport p;
+    p.model = model;
+    p.auto_alpha_c_deg = auto_alpha_c_deg[j];
     p.normal_status = s.status;
     p.fn_N = s.fn_N;
     p.pmax_Pa = s.pmax_Pa;
@@ -340,15 +367,15 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     p.b_m = s.b_m;
     p.alpha_c_deg = s.alpha_c_deg;
     p.is_conformal = s.is_conformal;
-    p.contact_angle_rad = options.model == ContactModel::Hertz ? point.contact_angle_rad : c.patch.contact_angle_rad;
+    p.contact_angle_rad = hertz ? point.contact_angle_rad : c.patch.contact_angle_rad;
     p.y_contact_rail_m = c.patch.reference_point_m.x();
     p.z_contact_rail_m = c.patch.reference_point_m.y();
     p.y_contact_wheel_m = point.wheel_profile_m.x();
-    p.reference_s_on_rail_m = options.model == ContactModel::Hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m;
+    p.reference_s_on_rail_m = hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m;
     p.rolling_radius_m = point.rolling_radius_m;
     p.lead_m = point.lead_m;
-    p.approach_m = options.model == ContactModel::Hertz ? -point.gap_m : c.patch.rigid_approach_m;
-    if (options.model != ContactModel::Hertz && s.kp.status != KpStatus::NoContact) p.approach_m = s.kp.approach_m;
+    p.approach_m = hertz ? -point.gap_m : c.patch.rigid_approach_m;
+    if (!hertz && s.kp.status != KpStatus::NoContact) p.approach_m = s.kp.approach_m;
     Creepages cr = options.creepages;
     if (kinematics) {
       if (velocity.forward_speed_m_s <= 0.0) throw InputError("forward speed must be > 0 to compute creepages");
@@ -362,7 +389,7 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     p.tangential_status = "not_solved";
     if (options.solve_tangential && !has_creepage) p.tangential_status = "no_creepage";  // nothing to solve
     if (options.solve_tangential && has_creepage) {
-      if (options.model == ContactModel::Hertz) {
+      if (hertz) {
         FastsimHertzInput in;
         in.a_m = s.a_m;
         in.b_m = s.b_m;
@@ -386,13 +413,13 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
           p.cells = CellsOf(t, map, point.lead_m, [dy](size_t) { return dy; },
                             [&s](double x, double y) { return HertzPressure(s.hertz, x, y); });
         }
-      } else if (options.model != ContactModel::Reference) {
+      } else if (model != ContactModel::Reference) {
         CurvedFastsimOptions co;
         co.elements_per_strip = options.fastsim_elements;
         co.marching = options.fastsim.marching;
         co.load_N = s.kp.fn_surface_N;
         CurvedFastsimResult t;
-        if (options.model == ContactModel::Conformal) {
+        if (model == ContactModel::Conformal) {
           CurvedFastsimInput in;
           in.friction = FrictionLaw::Constant(options.friction_coefficient);
           in.material = options.material;
@@ -439,8 +466,7 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     p.lateral_force_N = force.y();
     report.vertical_force_N += p.vertical_force_N;
     report.pressure_vertical_force_N +=
-        options.model == ContactModel::Hertz ? s.fn_N * std::cos(point.contact_angle_rad)
-                                             : s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
+        hertz ? s.fn_N * std::cos(point.contact_angle_rad) : s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
     report.lateral_force_N += p.lateral_force_N;
     report.patches.push_back(p);
   }

@@ -1,0 +1,12 @@
+#pragma once
+// The contact models of the pipeline (wheel_contact.hpp; architecture guide "Models to compare").
+#include <string>
+
+namespace conforma {
+
+enum class ContactModel { Hertz, Kp, Kpec, Conformal, Reference, Auto };
+const char* to_string(ContactModel model);
+// "hertz", "kp", "kpec", "conformal", "reference", "auto"; InputError naming the value otherwise.
+ContactModel ParseContactModel(const std::string& name);
+
+}  // namespace conforma

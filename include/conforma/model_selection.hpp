@@ -1,0 +1,71 @@
+#pragma once
+// Contact model `auto` (issue 6, "skip what a scene doesn't need"): per contact patch, the cheapest model that is
+// adequate for it, decided from the undeformed geometry alone (no normal solve).
+//
+// ESTIMATED CONTACT. The elastic contact is estimated by Kik-Piotrowski's virtual interpenetration with the
+// constant eps = 0.55 (physics-reference §3.1): the strips whose undeformed gap is below eps * delta, delta the
+// patch's rigid approach (in the pipeline the approach of the Hertz push-down for the wheel load, at which the
+// candidates are taken). For an elliptic patch this region has the width of the Hertz ellipse to a few %.
+//
+// CRITERIA (thresholds: ModelSelectionOptions, defaults below).
+//   conformity   alpha_c = max - min of the rail normal angle over the estimated contact (paper 003 eq. 13).
+//                alpha_c > conformity_threshold_deg -> `conformal`. Default 17.7 deg: the angle above which the
+//                conformal and the planar KP results differ by more than 5 % on new S1002/60E1 at 1:20
+//                (`conforma threshold`, validation/threshold_*.cpp; paper 003 gives 18 deg).
+//   ellipticity  the patch is Hertzian when, over the estimated contact,
+//                (a) the gap is a parabola in s: a least-squares fit gap ~ c0 + c1 s + c2 s^2 leaves a largest
+//                    residual <= gap_fit_tolerance * eps * delta (default 5 % of the virtual penetration);
+//                (b) the lateral curvature is the one at the rigid contact point: |c2 / B - 1| <= curvature_tolerance
+//                    (B = hertz_B_per_m of the Hertz point; default 10 %), i.e. the lateral radii do not change
+//                    across the contact width;
+//                (c) the longitudinal curvature A(s) stays within curvature_tolerance of A at the Hertz point;
+//                (d) at least min_strips strips lie in the estimated contact (otherwise nothing can be judged).
+//                elliptic and not conformal -> `hertz`; not elliptic and not conformal -> `kpec` (planar KP with
+//                the variable virtual penetration, exact for elliptic patches, physics-reference §3.3).
+//   Calibration (S1002/60E1 1:40, 10 kN, y = -9..9 mm; S1002/50E4 1:20, 40 kN): patches passing (a)-(c) have Hertz
+//   p_max within 1.1 % and creep forces within 1 % of the conformal model (fit residual up to 0.04); the rejected
+//   tread patches have fit residuals 0.06..0.7 and Hertz p_max errors up to +17 % (60E1 centred: the contact
+//   straddles the rail's R300/R80 junction) and +12..+44 % (50E4 at 1:20, every tread position).
+// The decision is a pure function of (patch, approach, Hertz point, options): deterministic and thread-safe.
+#include "conforma/contact_model.hpp"
+#include "conforma/geometry.hpp"
+#include "conforma/patch.hpp"
+
+namespace conforma {
+
+struct ModelSelectionOptions {
+  double conformity_threshold_deg = 17.7;
+  double virtual_penetration_factor = 0.55;  // eps of the estimated contact
+  double gap_fit_tolerance = 0.05;           // largest parabola residual / (eps * delta)
+  double curvature_tolerance = 0.10;         // relative, lateral (fit vs Hertz B) and longitudinal (A(s) vs A)
+  int min_strips = 5;
+  void validate() const;  // InputError naming the option
+};
+
+enum class ModelSelectionReason {
+  Elliptic,          // -> hertz
+  NonElliptic,       // -> kpec: gap not a parabola, or curvatures change across the contact
+  NoHertzPoint,      // -> kpec: no rigid contact point with positive curvatures for Hertz
+  TooFewStrips,      // -> kpec: the estimated contact covers fewer than min_strips strips
+  Conformal,         // -> conformal: alpha_c above the threshold
+};
+const char* to_string(ModelSelectionReason reason);
+
+struct ModelSelection {
+  ContactModel model = ContactModel::Kpec;  // Hertz, Kpec or Conformal
+  ModelSelectionReason reason = ModelSelectionReason::TooFewStrips;
+  double alpha_c_deg = 0.0;            // estimated conformity index
+  int strips_in_contact = 0;           // strips of the estimated contact
+  double width_m = 0.0;                // estimated contact width along s (strip centres, plus one ds)
+  double gap_fit_residual = 0.0;       // largest parabola residual / (eps * delta)
+  double lateral_curvature_error = 0.0;       // |c2 / B - 1|
+  double longitudinal_curvature_error = 0.0;  // max |A(s) / A - 1|
+};
+
+// approach_m: rigid approach of the patch along its reference normal (> 0 for a contact; <= 0 gives kpec with
+// TooFewStrips). hertz_point: the rigid contact point the Hertz model would use (nullptr: no Hertz). Throws
+// InputError for NaN input or bad options.
+ModelSelection SelectContactModel(const PatchGeometry& patch, double approach_m, const RigidContactPoint* hertz_point,
+                                  const ModelSelectionOptions& options = {});
+
+}  // namespace conforma
