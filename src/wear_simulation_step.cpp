@@ -21,6 +21,15 @@ struct SampleSlot {
   std::string error;
 };
 
+// Whether a wear law removes exactly nothing from a cell, known without evaluating it (so that leaving the cell
+// out gives bit-identical wear: ComputePatchWear deposits only depths > 0). The wear-index laws depend on
+// I_w = |p_t . s| alone (paper 003 eq. 14) and give K_w(0) at I_w = 0: nothing for every table whose first rate is
+// 0 (USFD, ...); Archard's k p |s| / H (paper 000 eq. 8) is exactly 0 at s = 0, whatever the traction.
+bool RemovesNothing(const WearLaw& law, bool zero_slip, bool zero_traction) {
+  if (law.kind == WearLawKind::WearIndex) return (zero_slip || zero_traction) && law.wear_index.rate(0.0) == 0.0;
+  return zero_slip;
+}
+
 void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& track_class, const KinematicsSample& sample,
                     const StepWearOptions& options, const WearContactFunction& contact, SampleSlot* slot) {
   for (Side side : {Side::Left, Side::Right}) {
@@ -60,9 +69,13 @@ void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& tra
       patch.rolling_speed_m_s = sample.velocity.forward_speed_m_s;
       patch.wheel_radius_m = p.rolling_radius_m;
       for (const ContactCell& c : p.cells) {
-        // Only slipping cells wear: I_w = p_t . s is zero where nothing slips (paper 003 eq. 14).
-        if (c.slip_x == 0.0 && c.slip_s == 0.0) continue;
-        if (c.traction_x_Pa == 0.0 && c.traction_s_Pa == 0.0) continue;
+        // Skip the cells where nothing slips (adhesion) or nothing is transmitted, when both laws remove exactly
+        // nothing there (RemovesNothing): identical wear, less work.
+        const bool zero_slip = c.slip_x == 0.0 && c.slip_s == 0.0;
+        const bool zero_traction = c.traction_x_Pa == 0.0 && c.traction_s_Pa == 0.0;
+        if ((zero_slip || zero_traction) && RemovesNothing(options.wear.wheel_law, zero_slip, zero_traction) &&
+            RemovesNothing(options.wear.rail_law, zero_slip, zero_traction))
+          continue;
         const std::optional<double> s_w = wheel.s_at(c.wheel_y_m);
         if (!s_w) {
           slot->off_grid_m2 += c.area_m2;
