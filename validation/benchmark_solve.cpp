@@ -12,6 +12,7 @@
 #include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
+#include "conforma/model_selection.hpp"
 
 namespace conforma {
 
@@ -63,10 +64,27 @@ PatchSolution SolveHertzModel(const BenchCase& c, const PatchSolveOptions& o) {
   return out;
 }
 
+// `auto`: the model chosen for the case's patch (model_selection.hpp) at its rigid approach, or, for a patch built
+// touching (rigid_approach_m = 0, e.g. the analytic grooves), at the Hertz approach for the case's load.
+ContactModel ResolveModel(const BenchCase& c, const PatchSolveOptions& o) {
+  if (o.model != ContactModel::Auto) return o.model;
+  RigidContactPoint point;
+  point.hertz_A_per_m = c.hertz_A_per_m;
+  point.hertz_B_per_m = c.hertz_B_per_m;
+  double approach = c.patch.rigid_approach_m;
+  if (!(approach > 0.0)) {
+    const HertzResult h = SolveHertzForLoad(c.hertz_A_per_m, c.hertz_B_per_m, c.normal_load_N, c.material);
+    approach = h.status == HertzStatus::Ok ? h.approach_m : 0.0;
+  }
+  return SelectContactModel(c.patch, approach, &point).model;
+}
+
 }  // namespace
 
-PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& o) {
-  o.validate();
+PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& options) {
+  options.validate();
+  PatchSolveOptions o = options;
+  o.model = ResolveModel(c, options);  // auto: the per-patch choice, then that model's solve
   if (o.model == ContactModel::Hertz) return SolveHertzModel(c, o);
   PatchSolution out;
   LoadControlOptions lo;
@@ -109,8 +127,10 @@ PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& o) {
   return out;
 }
 
-double NormalForceAtApproach(const BenchCase& c, const PatchSolveOptions& o, double approach_m) {
-  o.validate();
+double NormalForceAtApproach(const BenchCase& c, const PatchSolveOptions& options, double approach_m) {
+  options.validate();
+  PatchSolveOptions o = options;
+  o.model = ResolveModel(c, options);
   if (!(approach_m > 0.0)) return 0.0;
   if (o.model == ContactModel::Hertz) {
     const HertzResult h = SolveHertzForApproach(c.hertz_A_per_m, c.hertz_B_per_m, approach_m, c.material);
@@ -212,7 +232,9 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         row.err_fx = (s.fx_N - tangential.fx_N) / ft_ref;
         row.err_fy = (s.fy_N - tangential.fy_N) / ft_ref;
         row.err_wear = Relative(s.wear_index_N, tangential.wear_index_N);
-        row.alpha_c_deg = v.model == ContactModel::Hertz ? tangential.alpha_c_deg : s.alpha_c_deg;
+        const ContactModel solved = ResolveModel(c, o);  // auto: the chosen model, appended to the status
+        if (v.model == ContactModel::Auto) row.status += std::string("/") + to_string(solved);
+        row.alpha_c_deg = solved == ContactModel::Hertz ? tangential.alpha_c_deg : s.alpha_c_deg;
         rows.push_back(row);
       }
     }

@@ -29,7 +29,7 @@ double Median(std::vector<double> v) {
 void RegisterBenchCommand(CLI::App& app) {
   auto out_dir = std::make_shared<std::string>("bench_out");
   auto data = std::make_shared<std::string>(CONFORMA_SHARED_DATA);
-  auto models = std::make_shared<std::string>("hertz,kp,kpec,conformal");
+  auto models = std::make_shared<std::string>("hertz,kp,kpec,conformal,auto");
   auto families = std::make_shared<std::string>("mbench,groove,worn,flange_root");
   auto plot = std::make_shared<bool>(true);
   auto default_grid = std::make_shared<std::string>("s31e30");
