@@ -62,9 +62,47 @@ double GradedGauss(const F& f, double t_start, double t_end, double first_panel)
   return sum;  // Gauss() on a reversed interval already carries the sign
 }
 
+// K(k) - E(k) and Bulirsch's general complete elliptic integral cel(kc, p, 1, 0) = integral over [0, pi/2] of
+// cos^2 t / ((cos^2 t + p sin^2 t) sqrt(cos^2 t + kc^2 sin^2 t)) dt (Bulirsch 1969, Numer. Math. 13; the Numerical
+// Recipes `cel`) in ONE arithmetic-geometric mean of (1, kc): Bulirsch's em_n, qc_n are 2^n a_n, 2^n b_n of the
+// AGM, and K - E = K sum_n 2^(n-1) c_n^2 (physics-reference §1.2, as EllipticIntegralsFromComplementaryModulus),
+// c_0 = k, c_(n+1) = (a_n - b_n) / 2. kc > 0, k^2 + kc^2 = 1 (both passed to keep their relative precision), p > 0.
+struct KMinusEAndCel {
+  double K_minus_E = 0.0;
+  double cel = 0.0;
+};
+KMinusEAndCel CompleteEllipticKMinusEAndCel(double k_squared, double kc, double p_in) {
+  constexpr double kTolerance = 1e-9;  // relative AGM spread; the error after the last step is its square
+  double qc = kc, e = kc, em = 1.0;
+  double p = std::sqrt(p_in), a = 1.0, b = 0.0;
+  double sum = 0.5 * k_squared;  // 2^(-1) c_0^2
+  double weight = 0.25;          // 2^(n-1) / 4^(n+1) for the term (2^n a_n - 2^n b_n)^2 of c_(n+1)
+  double scale = 1.0;            // 2^(n+1) after the update of em
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double f = a;
+    a += b / p;
+    double g = e / p;
+    b += f * g;
+    b += b;
+    p += g;
+    g = em;
+    em += qc;
+    scale *= 2.0;
+    sum += weight * (g - qc) * (g - qc);
+    weight *= 0.5;
+    if (std::abs(g - qc) <= g * kTolerance) break;
+    qc = 2.0 * std::sqrt(e);
+    e = qc * em;
+  }
+  KMinusEAndCel out;
+  out.K_minus_E = M_PI * scale / (2.0 * em) * sum;  // K = pi / (2 AGM), AGM = em / 2^(n+1)
+  out.cel = 0.5 * M_PI * (b + a * em) / (em * (em + p));
+  return out;
+}
+
 }  // namespace
 
-double SemiEllipseOverDistance(double half_length, double centre_offset, double u) {
+double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offset, double u) {
   const double c = half_length;
   if (c <= 0.0) return 0.0;
   if (centre_offset == 0.0) {
@@ -86,6 +124,36 @@ double SemiEllipseOverDistance(double half_length, double centre_offset, double 
   const double first_panel = 0.5 * u / c;
   return singular + GradedGauss(rest, t_zero, 0.5 * M_PI, first_panel) -
          GradedGauss(rest, t_zero, -0.5 * M_PI, first_panel);
+}
+
+double SemiEllipseOverDistance(double half_length, double centre_offset, double u) {
+  const double c = half_length;
+  if (c <= 0.0) return 0.0;
+  // Closed form (own derivation, checked against 40-digit quadrature in tests/test_kp_strip_closed_form.cpp): with
+  // the distances A, B from the observation point to the two ends of the semi-ellipse, Byrd & Friedman 259.00's
+  // substitution turns F1 into complete elliptic integrals of the first, second and third kind,
+  //   F1 = 2 sqrt(A B) [ K(k) - E(k) + (A - B)^2 / (4 A B) * cel(k', p, 1, 0) ],
+  //   k^2 = (4 c^2 - (A - B)^2) / (4 A B),  k'^2 = ((A + B)^2 - 4 c^2) / (4 A B),  p = (A + B)^2 / (4 A B),
+  // cel(k', p, a, b) = integral over [0, pi/2] of (a cos^2 + b sin^2) / ((cos^2 + p sin^2) sqrt(cos^2 + k'^2 sin^2))
+  // (Bulirsch's general complete elliptic integral). Every term is positive: no cancellation. d = 0 (A = B):
+  // 2 sqrt(c^2 + u^2) (K - E), k' = u / sqrt(c^2 + u^2).
+  const double D = std::abs(centre_offset);  // F1 is even in d
+  const double u2 = u * u;
+  const double A = std::sqrt((c + D) * (c + D) + u2);  // to the far end
+  const double B = std::sqrt((D - c) * (D - c) + u2);  // to the near end
+  const double four_AB = 4.0 * A * B;
+  // A + B - 2c >= 0 and A + B - 2D >= 0 (triangle inequalities) without cancellation
+  const double far_excess = u2 / (A + c + D);                                // A - (c + D)
+  const double near_excess_c = c >= D ? u2 / (B + c - D) : B - (c - D);      // B - (c - D)
+  const double near_excess_D = D >= c ? u2 / (B + D - c) : B - (D - c);      // B - (D - c)
+  const double kc_squared = (far_excess + near_excess_c) * (A + B + 2.0 * c) / four_AB;
+  if (!(kc_squared > 0.0)) return SemiEllipseOverDistanceQuadrature(c, centre_offset, u);  // on the segment: infinite
+  const double A_minus_B = 4.0 * c * D / (A + B);  // (A^2 - B^2) / (A + B)
+  // 2c - (A - B) = 2c (A + B - 2D) / (A + B)
+  const double k_squared = 2.0 * c * (far_excess + near_excess_D) / (A + B) * (2.0 * c + A_minus_B) / four_AB;
+  const double p = (A + B) * (A + B) / four_AB;
+  const KMinusEAndCel integrals = CompleteEllipticKMinusEAndCel(k_squared, std::min(std::sqrt(kc_squared), 1.0), p);
+  return 2.0 * std::sqrt(A * B) * (integrals.K_minus_E + A_minus_B * A_minus_B / four_AB * integrals.cel);
 }
 
 double SemiEllipseCoupling(double half_length, double centre_offset, double u) {

@@ -6,9 +6,12 @@ namespace conforma {
 namespace kp_detail {
 
 // F1 = integral over x in [d - c, d + c] of sqrt(c^2 - (x - d)^2) / sqrt(x^2 + u^2); u > 0.
-// d = 0: closed form 2 sqrt(c^2 + u^2) (K(k) - E(k)), k'^2 = u^2 / (c^2 + u^2) (complete elliptic integrals).
-// d != 0: the log-singular part phi(0) (asinh...) in closed form, the bounded rest by graded Gauss quadrature.
+// Closed form in complete elliptic integrals (d = 0: 2 sqrt(c^2 + u^2) (K(k) - E(k)), k'^2 = u^2 / (c^2 + u^2);
+// d != 0: K - E plus Bulirsch's cel, see the .cpp).
 double SemiEllipseOverDistance(double half_length, double centre_offset, double u);
+// The same integral by quadrature (the solver's former method, kept as the test reference): the log-singular part
+// phi(0) (asinh...) in closed form, the bounded rest by graded Gauss quadrature in t (x = d + c sin t).
+double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offset, double u);
 
 // F2 = u * integral of sqrt(c^2 - (x - d)^2) / (x^2 + u^2) dx = pi (Im sqrt((w - c)(w + c)) - u), w = -d + i u
 // (Stieltjes transform of the semicircle); bounded as u -> 0.
