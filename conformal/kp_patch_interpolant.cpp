@@ -47,6 +47,7 @@ PatchInterpolant::PatchInterpolant(const PatchGeometry& patch) : patch_(patch) {
   has_x_offset_ = !patch.x_offset_m.empty();
   domain_low_ = patch.s_m.front() - 0.5 * patch.ds_m;
   domain_high_ = patch.s_m.back() + 0.5 * patch.ds_m;
+  inverse_mean_spacing_ = static_cast<double>(n - 1) / (patch.s_m.back() - patch.s_m.front());
   // Three-point slopes (exact for a quadratic on non-uniform nodes); one-sided three-point at the ends.
   slope_.resize(n);
   const auto& s = patch.s_m;
@@ -69,9 +70,17 @@ PatchInterpolant::PatchInterpolant(const PatchGeometry& patch) : patch_(patch) {
 
 size_t PatchInterpolant::Segment(double s) const {
   const auto& nodes = patch_.s_m;
-  const size_t upper = static_cast<size_t>(std::upper_bound(nodes.begin(), nodes.end(), s) - nodes.begin());
-  if (upper == 0) return 0;
-  return std::min(upper - 1, nodes.size() - 2);
+  const size_t last = nodes.size() - 2;
+  const double guess = (s - nodes.front()) * inverse_mean_spacing_;
+  size_t i = 0;
+  if (guess >= static_cast<double>(last)) {
+    i = last;
+  } else if (guess > 0.0) {
+    i = static_cast<size_t>(guess);
+  }  // else (also NaN): 0
+  while (i > 0 && nodes[i] > s) --i;
+  while (i < last && nodes[i + 1] <= s) ++i;
+  return i;
 }
 
 double PatchInterpolant::gap(double s) const {

@@ -30,7 +30,9 @@ class PatchInterpolant {
   double MinimumGapLocation() const;
 
  private:
-  size_t Segment(double s) const;  // i with nodes[i] <= s < nodes[i+1], clamped to [0, n-2]
+  // i with nodes[i] <= s < nodes[i+1], clamped to [0, n-2]: a guess from the mean node spacing, corrected by
+  // stepping (O(1) for the near-uniform strips of a PatchGeometry, exact for any increasing nodes).
+  size_t Segment(double s) const;
   double Linear(const std::vector<double>& values, double s) const;
 
   const PatchGeometry& patch_;
@@ -39,6 +41,7 @@ class PatchInterpolant {
   bool has_x_offset_ = false;
   double domain_low_ = 0.0;
   double domain_high_ = 0.0;
+  double inverse_mean_spacing_ = 0.0;
 };
 
 }  // namespace kp_detail
