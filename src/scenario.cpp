@@ -111,13 +111,13 @@ Profile BuiltInOrFileWheel(const Reader& r, const std::string& name) {
 }
 
 // Contact model by name (the same names as ParseContactModel of the pipeline, which the core cannot link to).
-ContactModel ModelFromName(const Reader& r, const std::string& name) {
+ContactModel ModelFromName(const Reader& r, const std::string& name, const std::string& where = "contact_model") {
   if (name == "hertz") return ContactModel::Hertz;
   if (name == "kp") return ContactModel::Kp;
   if (name == "kpec") return ContactModel::Kpec;
   if (name == "conformal") return ContactModel::Conformal;
   if (name == "reference") return ContactModel::Reference;
-  r.fail("contact_model", "unknown contact model '" + name + "' (hertz, kp, kpec, conformal, reference)");
+  r.fail(where, "unknown contact model '" + name + "' (hertz, kp, kpec, conformal, reference)");
 }
 
 WearLaw LawFromName(const Reader& r, const std::string& name) {
@@ -295,7 +295,8 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   s.name = root["name"] ? r.text(root["name"], "name") : "scenario";
   if (root["vehicle"]) ParseVehicle(r, root["vehicle"], &s.vehicle);
   if (const YAML::Node k = root["kinematics"]) {
-    r.check_keys(k, "kinematics", {"provider", "tangent_amplitude_mm", "tangent_phases", "cant_base_m", "free_axle_rotation"});
+    r.check_keys(k, "kinematics", {"provider", "tangent_amplitude_mm", "tangent_phases", "cant_base_m", "free_axle_rotation",
+                                     "contact_model"});
     if (k["provider"]) {
       const std::string p = r.text(k["provider"], "kinematics.provider");
       if (p == "quasistatic") s.kinematics.provider = KinematicsProvider::QuasiStatic;
@@ -307,6 +308,11 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     if (k["tangent_phases"]) s.kinematics.tangent_phases = r.integer(k["tangent_phases"], "kinematics.tangent_phases");
     if (k["cant_base_m"]) s.kinematics.cant_base_m = r.number(k["cant_base_m"], "kinematics.cant_base_m");
     if (k["free_axle_rotation"]) s.kinematics.free_axle_rotation = r.boolean(k["free_axle_rotation"], "kinematics.free_axle_rotation");
+    if (k["contact_model"]) {
+      const std::string m = r.text(k["contact_model"], "kinematics.contact_model");
+      s.kinematics.contact_model = ModelFromName(r, m, "kinematics.contact_model");
+      s.kinematics.contact_model_set = true;
+    }
   }
   if (const YAML::Node t = root["track"]) {
     r.check_keys(t, "track", {"gauge_mm", "rail_inclination"});

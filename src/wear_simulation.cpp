@@ -75,7 +75,11 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   if (steps < 1) throw InputError("wear simulation: steps must be >= 1");
   auto fallbacks = std::make_shared<std::atomic<int>>(0);
   const KinematicsFunction kinematics =
-      kinematics_in ? kinematics_in : MakeScenarioKinematics(scenario, options.model, contact, fallbacks);
+      kinematics_in ? kinematics_in
+                    : MakeScenarioKinematics(scenario,
+                                             scenario.kinematics.contact_model_set ? scenario.kinematics.contact_model
+                                                                                   : options.model,
+                                             contact, fallbacks);
 
   StepWearOptions step_options;
   step_options.contact.model = options.model;

@@ -71,6 +71,7 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("update: {cap_mm: abc}\n") + kClasses, "update.cap_mm");
   ExpectError(std::string("update: {cap_mm: -1}\n") + kClasses, "cap_mm");
   ExpectError(std::string("contact_model: fem\n") + kClasses, "fem");
+  ExpectError(std::string("kinematics: {contact_model: fem}\n") + kClasses, "kinematics.contact_model");
   ExpectError("track_classes: [{radius_m: 0, share: 1}]\n", "speed_kmh");
   ExpectError("name: x\n", "no track classes");
   ExpectError(std::string("profiles: {rail: /nonexistent/rail.prr}\n") + kClasses, "rail.prr");
@@ -82,6 +83,15 @@ TEST(Scenario, MinimalFileTakesTheDefaults) {
   EXPECT_EQ(s.update.steps, 20);
   EXPECT_EQ(s.kinematics.provider, KinematicsProvider::QuasiStatic);
   EXPECT_NEAR(s.classes[0].friction_coefficient, 0.3, 0.0);
+  EXPECT_FALSE(s.kinematics.contact_model_set);  // the curving solve uses the wear step's model
+}
+
+TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {
+  const Scenario s =
+      ParseScenario(std::string("contact_model: conformal\nkinematics: {contact_model: hertz}\n") + kClasses, "k.yaml");
+  EXPECT_EQ(s.model, ContactModel::Conformal);
+  EXPECT_TRUE(s.kinematics.contact_model_set);
+  EXPECT_EQ(s.kinematics.contact_model, ContactModel::Hertz);
 }
 
 }  // namespace

@@ -48,6 +48,11 @@ struct ScenarioKinematics {
   int tangent_phases = 8;
   double cant_base_m = 1.5;
   bool free_axle_rotation = true;
+  // Contact model inside the quasi-static curving solve (the multibody side). Unset: the wear step's model (the
+  // co-simulation of paper 003 §2). A cheaper model here (e.g. hertz, as a multibody code with its own contact
+  // would use) leaves the wear step's contact model unchanged and makes conformal runs several times faster.
+  bool contact_model_set = false;
+  ContactModel contact_model = ContactModel::Hertz;
 };
 
 struct ScenarioUpdate {

@@ -62,7 +62,9 @@ void RegisterCurvingCommand(CLI::App& app) {
     if (a->track_class >= nc) throw InputError("--class: index " + std::to_string(a->track_class) + " >= " + std::to_string(nc));
     const WheelsetTrackGeometry g(sc.MakeTrackSetup());
     auto fallbacks = std::make_shared<std::atomic<int>>(0);
-    const KinematicsFunction kin = MakeScenarioKinematics(sc, model, &SolveWheelContact, fallbacks);
+    // the curving solve's model: the scenario's kinematics.contact_model if set (as the wear loop does)
+    const ContactModel curving_model = sc.kinematics.contact_model_set ? sc.kinematics.contact_model : model;
+    const KinematicsFunction kin = MakeScenarioKinematics(sc, curving_model, &SolveWheelContact, fallbacks);
     for (int c = 0; c < nc; ++c) {
       if (a->track_class >= 0 && c != a->track_class) continue;
       const TrackClass& tc = sc.classes[c];
