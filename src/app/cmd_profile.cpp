@@ -1,4 +1,5 @@
 // conforma profile info FILE|S1002|60E1...: size, reference dimensions; conforma profile write DIR: standard files.
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 
@@ -39,6 +40,9 @@ void RegisterProfileCommand(CLI::App& app) {
   CLI::App* write = sub->add_subcommand("write", "write the standard profiles (S1002, 60E1, 54E1, 50E6, 50E4)");
   write->add_option("dir", *dir, "output folder");
   write->callback([dir]() {
+    std::error_code ec;
+    std::filesystem::create_directories(*dir, ec);
+    if (ec) throw InputError("profile write: cannot create folder '" + *dir + "': " + ec.message());
     WriteStandardProfiles(*dir);
     std::cout << "standard profiles written to " << *dir << "\n";
   });
