@@ -13,6 +13,7 @@
 #include "conforma/error.hpp"
 #include "conforma/fastsim.hpp"
 #include "conforma/model_selection.hpp"
+#include "conforma/scenario.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/wear_simulation.hpp"
 #include "conforma/wheel_contact.hpp"
@@ -339,4 +340,52 @@ TEST(AutoModel, WearWithSkippedCellsEqualsWearOfAllCells) {
   WearModel offset;
   offset.wheel_law.wear_index.points.front().rate_ug_m_mm2 = 1.0;
   ExpectSkippingIsExact(offset, ContactModel::Auto);
+}
+
+// ---------------------------------------------------------------- reuse of contact solutions on one geometry
+
+TEST(WheelContactCacheTest, RepeatedPosesReuseTheNormalProblemWithIdenticalResults) {
+  WheelContactCache cache;
+  WheelContactOptions o;
+  o.model = ContactModel::Auto;
+  o.keep_fields = true;
+  const WheelsetPose poses[] = {Pose(3.0, 1.0), Pose(6.25), Pose(0.0, -2.0)};
+  for (const WheelsetPose& pose : poses) {
+    for (double axle_speed : {2.0 / 0.46, 2.02 / 0.46, 2.0 / 0.46}) {  // an axle-speed difference, then a repeat
+      const WheelsetVelocity v{2.0, 0.0, 0.01, axle_speed};
+      ExpectIdentical(SolveWheelContactCached(Geometry(), Side::Left, pose, v, o, cache),
+                      SolveWheelContact(Geometry(), Side::Left, pose, v, o));
+    }
+  }
+  const WheelContactCache::Stats s = cache.stats();
+  EXPECT_EQ(s.misses, 3);       // one normal solve per pose
+  EXPECT_EQ(s.normal_hits, 3);  // the changed axle speed reuses it
+  EXPECT_EQ(s.report_hits, 3);  // the repeated call reuses everything
+  // another load is another normal problem
+  o.vertical_load_N = 12e3;
+  SolveWheelContactCached(Geometry(), Side::Left, poses[0], Rolling(), o, cache);
+  EXPECT_EQ(cache.stats().misses, 4);
+}
+
+TEST(WheelContactCacheTest, WearStepWithTheCachedPipelineEqualsTheUncachedOne) {
+  // The scenario's kinematics through the standard pipeline (cached per class solve) and through a wrapper that
+  // hides it (no cache): the same wear, bit for bit (hertz model and 1 step keep it fast).
+  const Scenario sc = LoadScenario(std::string(CONFORMA_SOURCE_DIR) + "/scenarios/default_metro.yaml");
+  WearSimulationOptions o;
+  o.model = ContactModel::Hertz;
+  o.steps = 1;
+  const WearSimulationResult cached = RunWearSimulation(sc, o, &SolveWheelContact);
+  const WearContactFunction uncached = [](const WheelsetTrackGeometry& g, Side s, const WheelsetPose& p,
+                                          const WheelsetVelocity& v, const WheelContactOptions& co) {
+    return SolveWheelContact(g, s, p, v, co);
+  };
+  const WearSimulationResult plain = RunWearSimulation(sc, o, uncached);
+  ASSERT_EQ(cached.steps.size(), 1u);
+  ASSERT_EQ(plain.steps.size(), 1u);
+  EXPECT_EQ(cached.steps[0].km, plain.steps[0].km);
+  const WearDistribution& a = cached.steps[0].wheel_depth_per_metre;
+  const WearDistribution& b = plain.steps[0].wheel_depth_per_metre;
+  ASSERT_TRUE(a.same_grid(b));
+  EXPECT_GT(a.max_depth_m(), 0.0);
+  for (size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a.depth_m[i], b.depth_m[i]) << i;
 }

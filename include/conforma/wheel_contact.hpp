@@ -15,6 +15,7 @@
 // Frames: each wheel is reported in its side frame (geometry.hpp), i.e. the right wheel as the mirror image of a
 // left wheel; forces are those ON THE WHEEL (Kalker's convention) in the patch's contact frame: fx along the track,
 // fy along the rail profile towards the field side (+s), fn along the outward rail normal (pushing the wheel up).
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -118,5 +119,37 @@ KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool c
 // mode. Throws InputError for bad options or velocities; no contact is a status.
 WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
                                      const WheelsetVelocity& velocity, const WheelContactOptions& options);
+
+// Reuse of contact solutions between calls on ONE geometry (profiles unchanged), e.g. within one equilibrium
+// solve, whose forward differences in the axle speed repeat the pose (normal problem reused) and whose trust-region
+// steps repeat whole evaluations (report reused). Keyed by the geometry's address, the side, the pose and the
+// options (the normal ones, plus velocity and tangential ones for a whole report): results are bit-identical to
+// uncached calls. Thread-safe; at most max_entries of each kind are kept (cleared when full). Create one per
+// geometry and drop it with the geometry (the address may be reused by the next one).
+class WheelContactCache {
+ public:
+  explicit WheelContactCache(size_t max_entries = 4096);
+  ~WheelContactCache();
+  WheelContactCache(const WheelContactCache&) = delete;
+  WheelContactCache& operator=(const WheelContactCache&) = delete;
+  struct Stats {
+    long report_hits = 0;  // whole report reused
+    long normal_hits = 0;  // normal problem reused, tangential solved
+    long misses = 0;       // both solved
+  };
+  Stats stats() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  friend WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
+                                                    const WheelsetVelocity&, const WheelContactOptions&,
+                                                    WheelContactCache&);
+};
+
+// SolveWheelContact through a cache (a separate name, so that &SolveWheelContact stays unambiguous).
+WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                           const WheelsetVelocity& velocity, const WheelContactOptions& options,
+                                           WheelContactCache& cache);
 
 }  // namespace conforma

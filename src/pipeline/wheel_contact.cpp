@@ -3,7 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
 
 #include "conforma/bem_reference.hpp"
 #include "conforma/conformity.hpp"
@@ -63,7 +67,7 @@ void WheelContactOptions::validate() const {
   }
 }
 
-namespace {
+namespace wheel_contact_detail {
 
 // The normal solution of one patch at one approach, whatever the model.
 struct NormalSolution {
@@ -228,7 +232,22 @@ double SolveMonotone(const std::function<double(double)>& f, double lo, double h
   return x;
 }
 
-}  // namespace
+// Everything the normal problem of one wheel produces (stage 1 of SolveWheelContact): what the tangential stage
+// needs, and what WheelContactCache keeps between calls at one pose.
+struct NormalStage {
+  WheelContactReport report;  // side, model, pose, load iterations, NotConverged; no patches yet
+  bool finished = false;      // the report is final (unloaded, no contact, no load bracket)
+  CandidateResult candidates;
+  std::vector<RigidContactPoint> hertz_points;
+  std::vector<ContactModel> patch_model;
+  std::vector<double> auto_alpha_c_deg;
+  std::vector<PatchFrame> frames;
+  std::vector<NormalSolution> normal;
+};
+
+}  // namespace wheel_contact_detail
+
+using namespace wheel_contact_detail;
 
 KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool conformal_variable_penetration,
                             int strips) {
@@ -245,10 +264,13 @@ KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool c
   return k;
 }
 
-WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
-                                     const WheelsetVelocity& velocity, const WheelContactOptions& options) {
-  options.validate();
-  WheelContactReport report;
+namespace {
+
+// Stage 1: candidates, model per patch, normal problem (load control). Options validated by the caller.
+NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                             const WheelContactOptions& options) {
+  NormalStage stage;
+  WheelContactReport& report = stage.report;
   report.side = side;
   report.model = options.model;
   report.pose = pose;
@@ -257,17 +279,19 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
   CandidateOptions candidate_options;
   candidate_options.strip_width_m = options.candidate_strip_width_m;
   const bool load_control = options.vertical_load_N >= 0.0;
-  if (load_control && options.vertical_load_N == 0.0) return report;  // unloaded wheel: no contact
-  const CandidateResult candidates =
-      load_control ? FindContactCandidatesForLoad(geometry, side, pose, options.vertical_load_N, options.material,
-                                                  candidate_options)
-                   : FindContactCandidates(geometry, side, pose, candidate_options);
-  if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return report;
+  stage.finished = true;
+  if (load_control && options.vertical_load_N == 0.0) return stage;  // unloaded wheel: no contact
+  CandidateResult& candidates = stage.candidates;
+  candidates = load_control ? FindContactCandidatesForLoad(geometry, side, pose, options.vertical_load_N,
+                                                           options.material, candidate_options)
+                            : FindContactCandidates(geometry, side, pose, candidate_options);
+  if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return stage;
   report.pose = candidates.pose;
   const size_t n = candidates.candidates.size();
 
   // Hertz (and auto, which may choose Hertz): the rigid contact point (smallest gap) inside each region.
-  std::vector<RigidContactPoint> hertz_points(n);
+  std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
+  hertz_points.resize(n);
   if (options.model == ContactModel::Hertz || options.model == ContactModel::Auto) {
     const WheelContactResult rigid = geometry.RigidContact(side, candidates.pose);
     for (size_t j = 0; j < n; ++j) {
@@ -281,8 +305,10 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
   }
   // The model of each patch: the chosen one, or per patch from the undeformed geometry at the candidates' pose
   // (auto, model_selection.hpp; the approach there is the Hertz push-down in load control).
-  std::vector<ContactModel> patch_model(n, options.model);
-  std::vector<double> auto_alpha_c_deg(n, 0.0);
+  std::vector<ContactModel>& patch_model = stage.patch_model;
+  std::vector<double>& auto_alpha_c_deg = stage.auto_alpha_c_deg;
+  patch_model.assign(n, options.model);
+  auto_alpha_c_deg.assign(n, 0.0);
   if (options.model == ContactModel::Auto) {
     for (size_t j = 0; j < n; ++j) {
       const PatchGeometry& patch = candidates.candidates[j].patch;
@@ -292,7 +318,8 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
       auto_alpha_c_deg[j] = choice.alpha_c_deg;
     }
   }
-  std::vector<PatchFrame> frames(n);
+  std::vector<PatchFrame>& frames = stage.frames;
+  frames.resize(n);
   for (size_t j = 0; j < n; ++j) frames[j] = FrameOf(candidates.candidates[j].patch);
   std::vector<KpOptions> kp_options(n);
   for (size_t j = 0; j < n; ++j) kp_options[j] = KpOptionsFor(options, patch_model[j]);
@@ -317,7 +344,8 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     }
     return vertical;
   };
-  std::vector<NormalSolution> normal(n);
+  std::vector<NormalSolution>& normal = stage.normal;
+  normal.resize(n);
   if (load_control) {
     const double load = options.vertical_load_N;
     auto residual = [&](double dz) { return solve_all(dz, &normal) - load; };
@@ -331,7 +359,7 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
     for (int k = 0; k < 40 && flo > 0.0; ++k) { hi = lo, fhi = flo; lo -= scale * std::pow(2.0, k); flo = residual(lo); }
     if (flo > 0.0 || fhi < 0.0) {
       report.status = WheelContactStatus::NotConverged;
-      return report;
+      return stage;
     }
     // SolveMonotone's last evaluation is at dz: `normal` already holds the solution there (no re-solve)
     double final_residual = 0.0;
@@ -342,8 +370,22 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
   } else {
     solve_all(0.0, &normal);
   }
+  stage.finished = false;
+  return stage;
+}
 
-  // 3. Creepages and the tangential problem, patch by patch.
+// Stage 2: creepages and the tangential problem, patch by patch, on a solved normal stage.
+WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
+                                      const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+  WheelContactReport report = stage.report;
+  if (stage.finished) return report;
+  const CandidateResult& candidates = stage.candidates;
+  const std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
+  const std::vector<ContactModel>& patch_model = stage.patch_model;
+  const std::vector<double>& auto_alpha_c_deg = stage.auto_alpha_c_deg;
+  const std::vector<PatchFrame>& frames = stage.frames;
+  const std::vector<NormalSolution>& normal = stage.normal;
+  const size_t n = candidates.candidates.size();
   const RigidBodyMotion motion = WheelMotionInSideFrame(geometry, side, report.pose, velocity);
   const bool kinematics = !options.creepages_given;
   for (size_t j = 0; j < n; ++j) {
@@ -473,6 +515,93 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
   if (report.status != WheelContactStatus::NotConverged)
     report.status = report.patches.empty() ? WheelContactStatus::NoContact : WheelContactStatus::Ok;
   return report;
+}
+
+
+// Key of the normal stage: everything SolveNormalStage reads (geometry identity, side, pose, normal options).
+std::vector<double> NormalKey(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                              const WheelContactOptions& o) {
+  const ModelSelectionOptions& a = o.auto_selection;
+  return {static_cast<double>(reinterpret_cast<std::uintptr_t>(&geometry)), static_cast<double>(side_index(side)),
+          pose.lateral_m, pose.vertical_m, pose.roll_rad, pose.yaw_rad, static_cast<double>(o.model),
+          o.material.shear_modulus_Pa, o.material.poisson_ratio, o.vertical_load_N, o.load_tolerance,
+          static_cast<double>(o.kp_strips), static_cast<double>(o.bem_x_elements), o.candidate_strip_width_m,
+          o.conformity_threshold_deg, o.conformal_variable_penetration ? 1.0 : 0.0, a.conformity_threshold_deg,
+          a.virtual_penetration_factor, a.gap_fit_tolerance, a.curvature_tolerance, static_cast<double>(a.min_strips)};
+}
+
+// ... plus everything FinishWheelContact reads: the whole report.
+std::vector<double> ReportKey(std::vector<double> key, const WheelsetVelocity& v, const WheelContactOptions& o) {
+  key.insert(key.end(), {v.forward_speed_m_s, v.lateral_velocity_m_s, v.yaw_rate_rad_s, v.axle_angular_velocity_rad_s,
+                         o.friction_coefficient, static_cast<double>(o.fastsim_elements), o.solve_tangential ? 1.0 : 0.0,
+                         o.keep_fields ? 1.0 : 0.0, static_cast<double>(o.fastsim.bound),
+                         o.fastsim.blend_flexibilities ? 1.0 : 0.0, static_cast<double>(o.fastsim.marching),
+                         o.creepages_given ? 1.0 : 0.0, o.creepages.longitudinal, o.creepages.lateral,
+                         o.creepages.spin_per_m, o.material.density_kg_m3});
+  return key;
+}
+
+}  // namespace
+
+struct WheelContactCache::Impl {
+  size_t max_entries = 0;
+  mutable std::mutex mutex;
+  std::map<std::vector<double>, std::shared_ptr<const NormalStage>> normal;
+  std::map<std::vector<double>, std::shared_ptr<const WheelContactReport>> reports;
+  Stats stats;
+};
+
+WheelContactCache::WheelContactCache(size_t max_entries) : impl_(std::make_unique<Impl>()) {
+  impl_->max_entries = std::max<size_t>(1, max_entries);
+}
+WheelContactCache::~WheelContactCache() = default;
+
+WheelContactCache::Stats WheelContactCache::stats() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->stats;
+}
+
+WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                     const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+  options.validate();
+  return FinishWheelContact(SolveNormalStage(geometry, side, pose, options), geometry, side, velocity, options);
+}
+
+WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                           const WheelsetVelocity& velocity, const WheelContactOptions& options,
+                                           WheelContactCache& cache) {
+  options.validate();
+  WheelContactCache::Impl& c = *cache.impl_;
+  const std::vector<double> normal_key = NormalKey(geometry, side, pose, options);
+  const std::vector<double> report_key = ReportKey(normal_key, velocity, options);
+  // a NaN cannot be a map key (no ordering): such calls go uncached (and throw where the pipeline throws)
+  for (double v : report_key)
+    if (!std::isfinite(v)) return SolveWheelContact(geometry, side, pose, velocity, options);
+  std::shared_ptr<const NormalStage> stage;
+  {
+    std::lock_guard<std::mutex> lock(c.mutex);
+    const auto r = c.reports.find(report_key);
+    if (r != c.reports.end()) {
+      ++c.stats.report_hits;
+      return *r->second;
+    }
+    const auto s = c.normal.find(normal_key);
+    if (s != c.normal.end()) {
+      ++c.stats.normal_hits;
+      stage = s->second;
+    } else {
+      ++c.stats.misses;
+    }
+  }
+  // solved outside the lock (two threads may solve the same pose at once: same result, one is kept)
+  if (!stage) stage = std::make_shared<const NormalStage>(SolveNormalStage(geometry, side, pose, options));
+  auto report = std::make_shared<const WheelContactReport>(FinishWheelContact(*stage, geometry, side, velocity, options));
+  std::lock_guard<std::mutex> lock(c.mutex);
+  if (c.normal.size() >= c.max_entries) c.normal.clear();  // bounded memory; clearing keeps results exact
+  if (c.reports.size() >= c.max_entries) c.reports.clear();
+  c.normal.emplace(normal_key, stage);
+  c.reports.emplace(report_key, report);
+  return *report;
 }
 
 }  // namespace conforma
