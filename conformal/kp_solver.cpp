@@ -10,6 +10,7 @@
 #include "conforma/influence.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "kp_patch_interpolant.hpp"
+#include "kp_solver_internal.hpp"
 #include "kp_strip_integrals.hpp"
 
 namespace conforma {
@@ -152,8 +153,9 @@ Eigen::Vector2d SurfaceStep(const PatchInterpolant& patch, double from, double t
 
 }  // namespace
 
-KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& geometry, double approach_m, const KpOptions& options) {
-  require_non_negative(approach_m, "approach_m");
+namespace kp_detail {
+
+void ValidateKpOptions(const KpOptions& options) {
   require_positive(options.virtual_penetration_factor, "KpOptions.virtual_penetration_factor");
   if (options.virtual_penetration_factor > 1.0)
     throw InputError("KpOptions.virtual_penetration_factor must be <= 1, got " +
@@ -162,8 +164,21 @@ KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& geometry, double app
     throw InputError("KpOptions.strips_across_contact must lie in [3, 100000], got " +
                      std::to_string(options.strips_across_contact));
   require_finite(options.conformity_threshold_deg, "KpOptions.conformity_threshold_deg");
-  const ElasticConstants elastic = CombinedElasticConstants(options.material);
+}
+
+}  // namespace kp_detail
+
+KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& geometry, double approach_m, const KpOptions& options) {
+  require_non_negative(approach_m, "approach_m");
+  kp_detail::ValidateKpOptions(options);
+  (void)CombinedElasticConstants(options.material);  // material errors before patch errors, as before
   const PatchInterpolant patch(geometry);
+  return kp_detail::SolveKikPiotrowskiOnInterpolant(patch, approach_m, options);
+}
+
+KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patch, double approach_m,
+                                                    const KpOptions& options) {
+  const ElasticConstants elastic = CombinedElasticConstants(options.material);
 
   KpResult result;
   result.approach_m = approach_m;

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "conforma/error.hpp"
+#include "conforma/influence.hpp"
+#include "kp_solver_internal.hpp"
 
 namespace conforma {
 
@@ -29,30 +31,70 @@ void ValidatePatches(const std::vector<WheelPatch>& patches) {
     require_finite(patches[k].load_weight, (where + ".load_weight").c_str());
   }
 }
+// The x where load = C x^1.5 (1 + beta x) reaches `target`, C and beta through (x_a, load_a) and (x_b, load_b)
+// (x > 0, loads > 0): load / x^1.5 is linear in x. Newton from the power-law step of the nearer point; NaN when the
+// model has no root there (the caller's bracket then takes over).
+double PowerLawSecantStep(double x_a, double load_a, double x_b, double load_b, double target) {
+  if (!(x_a > 0.0 && x_b > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  const double y_a = load_a / (x_a * std::sqrt(x_a)), y_b = load_b / (x_b * std::sqrt(x_b));
+  const double slope = (y_b - y_a) / (x_b - x_a);
+  double x = x_b * std::cbrt(target * target / (load_b * load_b));
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const double root_x = std::sqrt(x);
+    const double y = y_b + slope * (x - x_b);
+    const double residual = y * x * root_x - target;
+    const double derivative = slope * x * root_x + 1.5 * y * root_x;
+    if (!(derivative > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    const double step = residual / derivative;
+    x -= step;
+    if (!(x > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+    if (std::abs(step) <= 1e-15 * x) break;
+  }
+  return x;
+}
 double SmallestOffset(const std::vector<WheelPatch>& patches) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const WheelPatch& patch : patches) smallest = std::min(smallest, patch.gap_offset_m);
   return smallest;
 }
+
+// Every patch at one wheel approach, on interpolants built once (kp_solver_internal.hpp); options validated.
+WheelNormalResult SolveInterpolantsForApproach(const std::vector<WheelPatch>& patches,
+                                               const std::vector<kp_detail::PatchInterpolant>& interpolants,
+                                               double approach_m, const KpOptions& options) {
+  WheelNormalResult result;
+  result.approach_m = approach_m;
+  result.patches.reserve(patches.size());
+  bool touching = false;
+  for (size_t k = 0; k < patches.size(); ++k) {
+    const double own_approach = std::max(approach_m - patches[k].gap_offset_m, 0.0);
+    result.patches.push_back(kp_detail::SolveKikPiotrowskiOnInterpolant(interpolants[k], own_approach, options));
+    result.load_N += patches[k].load_weight * result.patches.back().fn_N;
+    touching = touching || result.patches.back().fn_N > 0.0;
+  }
+  result.evaluations = 1;
+  result.status = touching ? LoadControlStatus::Ok : LoadControlStatus::NoContact;
+  return result;
+}
+
+// Options first, then the patches in order (the order of SolveKikPiotrowskiForApproach's checks).
+std::vector<kp_detail::PatchInterpolant> PrepareInterpolants(const std::vector<WheelPatch>& patches,
+                                                             const KpOptions& options) {
+  kp_detail::ValidateKpOptions(options);
+  (void)CombinedElasticConstants(options.material);
+  std::vector<kp_detail::PatchInterpolant> interpolants;
+  interpolants.reserve(patches.size());
+  for (const WheelPatch& patch : patches) interpolants.emplace_back(*patch.geometry);
+  return interpolants;
+}
+
 }  // namespace
 
 WheelNormalResult SolveWheelForApproach(const std::vector<WheelPatch>& patches, double approach_m,
                                         const KpOptions& options) {
   ValidatePatches(patches);
   require_non_negative(approach_m, "approach_m");
-  WheelNormalResult result;
-  result.approach_m = approach_m;
-  result.patches.reserve(patches.size());
-  bool touching = false;
-  for (const WheelPatch& patch : patches) {
-    const double own_approach = std::max(approach_m - patch.gap_offset_m, 0.0);
-    result.patches.push_back(SolveKikPiotrowskiForApproach(*patch.geometry, own_approach, options));
-    result.load_N += patch.load_weight * result.patches.back().fn_N;
-    touching = touching || result.patches.back().fn_N > 0.0;
-  }
-  result.evaluations = 1;
-  result.status = touching ? LoadControlStatus::Ok : LoadControlStatus::NoContact;
-  return result;
+  return SolveInterpolantsForApproach(patches, PrepareInterpolants(patches, options), approach_m, options);
 }
 
 WheelNormalResult SolveWheelForLoad(const std::vector<WheelPatch>& patches, double load_N,
@@ -68,16 +110,17 @@ WheelNormalResult SolveWheelForLoad(const std::vector<WheelPatch>& patches, doub
     none.status = LoadControlStatus::NoContact;
     return none;
   }
+  const std::vector<kp_detail::PatchInterpolant> interpolants = PrepareInterpolants(patches, options.kp);
   int evaluations = 0;
   auto evaluate = [&](double approach) {
     ++evaluations;
-    return SolveWheelForApproach(patches, approach, options.kp);
+    return SolveInterpolantsForApproach(patches, interpolants, approach, options.kp);
   };
   // Bracket [low, high] with load(low) < target <= load(high); the step predicts with load ~ (delta - delta_1)^1.5.
   double low = first_touch, high = std::numeric_limits<double>::infinity();
   double approach = first_touch + options.initial_approach_m;
   WheelNormalResult current = evaluate(approach);
-  double previous_approach = 0.0, previous_load = 0.0, previous_root = 0.0;
+  double previous_approach = 0.0, previous_load = 0.0;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
     const double load = current.load_N;
     if (std::abs(load - load_N) <= options.relative_tolerance * load_N) {
@@ -94,20 +137,20 @@ WheelNormalResult SolveWheelForLoad(const std::vector<WheelPatch>& patches, doub
       current.evaluations = evaluations;
       return current;
     }
-    // Secant on load^(2/3), which is linear in delta for a quadratic gap; from one point, the power law itself.
-    const double target_root = std::cbrt(load_N * load_N);
-    const double root = std::cbrt(load * load);
+    // Two points: secant on the power-law coefficient load / x^1.5 (x = delta - delta_1), i.e. the model
+    // load = C x^1.5 (1 + beta x), exact for a quadratic gap (beta = 0) and first-order in the gap's departure from
+    // it; one point: the power law itself.
     double next;
-    if (load > 0.0 && previous_load > 0.0 && root != previous_root) {
-      next = approach + (target_root - root) * (approach - previous_approach) / (root - previous_root);
+    if (load > 0.0 && previous_load > 0.0 && approach != previous_approach) {
+      next = first_touch + PowerLawSecantStep(previous_approach - first_touch, previous_load, approach - first_touch,
+                                              load, load_N);
     } else if (load > 0.0) {
-      next = first_touch + (approach - first_touch) * target_root / root;
+      next = first_touch + (approach - first_touch) * std::cbrt(load_N * load_N / (load * load));
     } else {
       next = first_touch + 4.0 * (approach - first_touch);
     }
     previous_approach = approach;
     previous_load = load;
-    previous_root = root;
     if (!(next > low && next < high)) next = std::isfinite(high) ? 0.5 * (low + high) : first_touch + 4.0 * (low - first_touch);
     if (next == approach) break;
     approach = next;
