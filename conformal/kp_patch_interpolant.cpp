@@ -54,6 +54,7 @@ PatchInterpolant::PatchInterpolant(const PatchGeometry& patch) : patch_(patch) {
   const auto& g = patch.gap_m;
   if (n == 2) {
     slope_[0] = slope_[1] = (g[1] - g[0]) / (s[1] - s[0]);
+    minimum_gap_location_ = LocateMinimumGap();
     return;
   }
   auto three_point = [&](size_t a, size_t b, size_t c, double at) {
@@ -66,6 +67,7 @@ PatchInterpolant::PatchInterpolant(const PatchGeometry& patch) : patch_(patch) {
   slope_[0] = three_point(0, 1, 2, s[0]);
   for (size_t j = 1; j + 1 < n; ++j) slope_[j] = three_point(j - 1, j, j + 1, s[j]);
   slope_[n - 1] = three_point(n - 3, n - 2, n - 1, s[n - 1]);
+  minimum_gap_location_ = LocateMinimumGap();
 }
 
 size_t PatchInterpolant::Segment(double s) const {
@@ -100,7 +102,7 @@ double PatchInterpolant::Linear(const std::vector<double>& values, double s) con
   return values[i] + t * (values[i + 1] - values[i]);
 }
 
-double PatchInterpolant::MinimumGapLocation() const {
+double PatchInterpolant::LocateMinimumGap() const {
   const auto& g = patch_.gap_m;
   const auto& s = patch_.s_m;
   const size_t i = static_cast<size_t>(std::min_element(g.begin(), g.end()) - g.begin());

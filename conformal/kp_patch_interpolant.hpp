@@ -26,14 +26,15 @@ class PatchInterpolant {
   const std::vector<double>& nodes() const { return patch_.s_m; }
   const std::vector<double>& node_gaps() const { return patch_.gap_m; }
 
-  // Location of the smallest gap: the lowest node refined by the parabola through its neighbours.
-  double MinimumGapLocation() const;
+  // Location of the smallest gap: the lowest node refined by the parabola through its neighbours (computed once).
+  double MinimumGapLocation() const { return minimum_gap_location_; }
 
  private:
   // i with nodes[i] <= s < nodes[i+1], clamped to [0, n-2]: a guess from the mean node spacing, corrected by
   // stepping (O(1) for the near-uniform strips of a PatchGeometry, exact for any increasing nodes).
   size_t Segment(double s) const;
   double Linear(const std::vector<double>& values, double s) const;
+  double LocateMinimumGap() const;
 
   const PatchGeometry& patch_;
   std::vector<double> slope_;
@@ -42,6 +43,7 @@ class PatchInterpolant {
   double domain_low_ = 0.0;
   double domain_high_ = 0.0;
   double inverse_mean_spacing_ = 0.0;
+  double minimum_gap_location_ = 0.0;
 };
 
 }  // namespace kp_detail

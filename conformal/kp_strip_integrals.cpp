@@ -80,8 +80,9 @@ KMinusEAndCel CompleteEllipticKMinusEAndCel(double k_squared, double kc, double 
   double scale = 1.0;            // 2^(n+1) after the update of em
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double f = a;
-    a += b / p;
-    double g = e / p;
+    const double inverse_p = 1.0 / p;
+    a += b * inverse_p;
+    double g = e * inverse_p;
     b += f * g;
     b += b;
     p += g;
@@ -98,6 +99,27 @@ KMinusEAndCel CompleteEllipticKMinusEAndCel(double k_squared, double kc, double 
   out.K_minus_E = M_PI * scale / (2.0 * em) * sum;  // K = pi / (2 AGM), AGM = em / 2^(n+1)
   out.cel = 0.5 * M_PI * (b + a * em) / (em * (em + p));
   return out;
+}
+
+// K(k) - E(k) alone by the same AGM sum (k^2 and kc = k' passed separately to keep their relative precision).
+double CompleteEllipticKMinusE(double k_squared, double kc) {
+  constexpr double kTolerance = 1e-9;
+  double a = 1.0, b = kc;
+  double sum = 0.5 * k_squared;  // sum_n 2^(n-1) c_n^2
+  double weight = 1.0;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    const double c = 0.5 * (a - b);
+    sum += weight * c * c;
+    weight *= 2.0;
+    const double a_next = 0.5 * (a + b);
+    if (std::abs(a - b) <= a * kTolerance) {
+      a = a_next;
+      break;
+    }
+    b = std::sqrt(a * b);
+    a = a_next;
+  }
+  return M_PI / (2.0 * a) * sum;
 }
 
 }  // namespace
@@ -139,6 +161,12 @@ double SemiEllipseOverDistance(double half_length, double centre_offset, double 
   // 2 sqrt(c^2 + u^2) (K - E), k' = u / sqrt(c^2 + u^2).
   const double D = std::abs(centre_offset);  // F1 is even in d
   const double u2 = u * u;
+  if (D == 0.0) {
+    const double hypot_squared = c * c + u2;
+    const double hypot = std::sqrt(hypot_squared);
+    if (!(u > 0.0)) return SemiEllipseOverDistanceQuadrature(c, centre_offset, u);  // on the segment: infinite
+    return 2.0 * hypot * CompleteEllipticKMinusE(c * c / hypot_squared, u / hypot);
+  }
   const double A = std::sqrt((c + D) * (c + D) + u2);  // to the far end
   const double B = std::sqrt((D - c) * (D - c) + u2);  // to the near end
   const double four_AB = 4.0 * A * B;
