@@ -109,6 +109,22 @@ TEST(ModelSelection, ParabolicGapWithConstantCurvaturesIsHertzian) {
   EXPECT_EQ(SelectContactModel(patch, approach, &point).reason, ModelSelectionReason::NonElliptic);
 }
 
+TEST(ModelSelection, EllipseBeyondKalkersTablesIsNotHertz) {
+  // flange_root_p0 of the bench: A = 0.362, B = 38.5 1/m, a Hertz ellipse 19:1 (g = 0.053 < 0.1)
+  const double A = 0.362, B = 38.5;
+  const PatchGeometry patch = kp_test::HertzianPatch(A, B, 5e-3, 201);
+  RigidContactPoint point;
+  point.hertz_A_per_m = A;
+  point.hertz_B_per_m = B;
+  const ModelSelection s = SelectContactModel(patch, 1e-4, &point);
+  EXPECT_EQ(s.model, ContactModel::Kpec);
+  EXPECT_EQ(s.reason, ModelSelectionReason::ElongatedEllipse);
+  EXPECT_NEAR(s.hertz_axis_ratio, 0.053, 0.005);
+  ModelSelectionOptions o;
+  o.min_hertz_axis_ratio = 0.05;
+  EXPECT_EQ(SelectContactModel(patch, 1e-4, &point, o).model, ContactModel::Hertz);
+}
+
 TEST(ModelSelection, QuarticGapIsNotHertzianAndAWideGrooveIsConformal) {
   const double A = 1.0 / (2 * 0.46), approach = 1e-4;
   PatchGeometry flat = kp_test::HertzianPatch(A, 2.0, 10e-3, 201);

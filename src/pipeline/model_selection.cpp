@@ -8,6 +8,8 @@
 
 #include "conforma/conformity.hpp"
 #include "conforma/error.hpp"
+#include "conforma/hertz.hpp"
+#include "conforma/material.hpp"
 
 namespace conforma {
 
@@ -18,12 +20,14 @@ void ModelSelectionOptions::validate() const {
   require_non_negative(gap_fit_tolerance, "auto: gap_fit_tolerance");
   require_non_negative(curvature_tolerance, "auto: curvature_tolerance");
   if (min_strips < 3) throw InputError("auto: min_strips must be >= 3 (a parabola has three coefficients)");
+  require_non_negative(min_hertz_axis_ratio, "auto: min_hertz_axis_ratio");
 }
 
 const char* to_string(ModelSelectionReason reason) {
   switch (reason) {
     case ModelSelectionReason::Elliptic: return "elliptic";
     case ModelSelectionReason::NonElliptic: return "non_elliptic";
+    case ModelSelectionReason::ElongatedEllipse: return "elongated_ellipse";
     case ModelSelectionReason::NoHertzPoint: return "no_hertz_point";
     case ModelSelectionReason::TooFewStrips: return "too_few_strips";
     case ModelSelectionReason::Conformal: return "conformal";
@@ -100,8 +104,19 @@ ModelSelection SelectContactModel(const PatchGeometry& patch, double approach_m,
   const bool elliptic = out.gap_fit_residual <= options.gap_fit_tolerance &&
                         out.lateral_curvature_error <= options.curvature_tolerance &&
                         out.longitudinal_curvature_error <= options.curvature_tolerance;
-  out.model = elliptic ? ContactModel::Hertz : ContactModel::Kpec;
-  out.reason = elliptic ? ModelSelectionReason::Elliptic : ModelSelectionReason::NonElliptic;
+  if (!elliptic) {
+    out.reason = ModelSelectionReason::NonElliptic;
+    return out;
+  }
+  // (e) axis ratio of the Hertz ellipse: a function of A / B alone (any load and material give the same ratio)
+  const HertzResult h = SolveHertzForLoad(hertz_point->hertz_A_per_m, hertz_point->hertz_B_per_m, 1e4, Material{});
+  if (h.status == HertzStatus::Ok) out.hertz_axis_ratio = std::min(h.a_m, h.b_m) / std::max(h.a_m, h.b_m);
+  if (!(out.hertz_axis_ratio >= options.min_hertz_axis_ratio) || h.status != HertzStatus::Ok) {
+    out.reason = ModelSelectionReason::ElongatedEllipse;
+    return out;
+  }
+  out.model = ContactModel::Hertz;
+  out.reason = ModelSelectionReason::Elliptic;
   return out;
 }
 
