@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 
 #include "conforma/hertz.hpp"
 
@@ -43,6 +44,38 @@ double Gauss(const F& f, double a, double b, int points) {
   return sum * half;
 }
 
+// The nodes of Gauss(f, a, b, points) in its evaluation order (x[2i] = mid - half node_i, x[2i+1] = mid + half
+// node_i) and the sum it forms from the values there: the same arithmetic, with f evaluated as a batch.
+struct GaussRule {
+  const double* node = kGauss8Node;
+  const double* weight = kGauss8Weight;
+  int pairs = 4;
+  double mid = 0.0, half = 0.0;
+  GaussRule(double a, double b, int points) : mid(0.5 * (a + b)), half(0.5 * (b - a)) {
+    if (points == 2) {
+      node = kGauss2Node;
+      weight = kGauss2Weight;
+      pairs = 1;
+    } else if (points == 4) {
+      node = kGauss4Node;
+      weight = kGauss4Weight;
+      pairs = 2;
+    }
+  }
+  int count() const { return 2 * pairs; }
+  void Nodes(double* x) const {
+    for (int i = 0; i < pairs; ++i) {
+      x[2 * i] = mid - half * node[i];
+      x[2 * i + 1] = mid + half * node[i];
+    }
+  }
+  double Sum(const double* values) const {
+    double sum = 0.0;
+    for (int i = 0; i < pairs; ++i) sum += weight[i] * (values[2 * i] + values[2 * i + 1]);
+    return sum * half;
+  }
+};
+
 // Integral of f over [t_start, t_end] with panels growing geometrically away from t_start (where f varies on the
 // scale first_panel), 8-point Gauss per panel.
 template <class F>
@@ -60,66 +93,6 @@ double GradedGauss(const F& f, double t_start, double t_end, double first_panel)
     panel *= 4.0;
   }
   return sum;  // Gauss() on a reversed interval already carries the sign
-}
-
-// K(k) - E(k) and Bulirsch's general complete elliptic integral cel(kc, p, 1, 0) = integral over [0, pi/2] of
-// cos^2 t / ((cos^2 t + p sin^2 t) sqrt(cos^2 t + kc^2 sin^2 t)) dt (Bulirsch 1969, Numer. Math. 13; the Numerical
-// Recipes `cel`) in ONE arithmetic-geometric mean of (1, kc): Bulirsch's em_n, qc_n are 2^n a_n, 2^n b_n of the
-// AGM, and K - E = K sum_n 2^(n-1) c_n^2 (physics-reference §1.2, as EllipticIntegralsFromComplementaryModulus),
-// c_0 = k, c_(n+1) = (a_n - b_n) / 2. kc > 0, k^2 + kc^2 = 1 (both passed to keep their relative precision), p > 0.
-struct KMinusEAndCel {
-  double K_minus_E = 0.0;
-  double cel = 0.0;
-};
-KMinusEAndCel CompleteEllipticKMinusEAndCel(double k_squared, double kc, double p_in) {
-  constexpr double kTolerance = 1e-9;  // relative AGM spread; the error after the last step is its square
-  double qc = kc, e = kc, em = 1.0;
-  double p = std::sqrt(p_in), a = 1.0, b = 0.0;
-  double sum = 0.5 * k_squared;  // 2^(-1) c_0^2
-  double weight = 0.25;          // 2^(n-1) / 4^(n+1) for the term (2^n a_n - 2^n b_n)^2 of c_(n+1)
-  double scale = 1.0;            // 2^(n+1) after the update of em
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double f = a;
-    const double inverse_p = 1.0 / p;
-    a += b * inverse_p;
-    double g = e * inverse_p;
-    b += f * g;
-    b += b;
-    p += g;
-    g = em;
-    em += qc;
-    scale *= 2.0;
-    sum += weight * (g - qc) * (g - qc);
-    weight *= 0.5;
-    if (std::abs(g - qc) <= g * kTolerance) break;
-    qc = 2.0 * std::sqrt(e);
-    e = qc * em;
-  }
-  KMinusEAndCel out;
-  out.K_minus_E = M_PI * scale / (2.0 * em) * sum;  // K = pi / (2 AGM), AGM = em / 2^(n+1)
-  out.cel = 0.5 * M_PI * (b + a * em) / (em * (em + p));
-  return out;
-}
-
-// K(k) - E(k) alone by the same AGM sum (k^2 and kc = k' passed separately to keep their relative precision).
-double CompleteEllipticKMinusE(double k_squared, double kc) {
-  constexpr double kTolerance = 1e-9;
-  double a = 1.0, b = kc;
-  double sum = 0.5 * k_squared;  // sum_n 2^(n-1) c_n^2
-  double weight = 1.0;
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    const double c = 0.5 * (a - b);
-    sum += weight * c * c;
-    weight *= 2.0;
-    const double a_next = 0.5 * (a + b);
-    if (std::abs(a - b) <= a * kTolerance) {
-      a = a_next;
-      break;
-    }
-    b = std::sqrt(a * b);
-    a = a_next;
-  }
-  return M_PI / (2.0 * a) * sum;
 }
 
 }  // namespace
@@ -148,9 +121,10 @@ double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offse
          GradedGauss(rest, t_zero, -0.5 * M_PI, first_panel);
 }
 
-double SemiEllipseOverDistance(double half_length, double centre_offset, double u) {
-  const double c = half_length;
-  if (c <= 0.0) return 0.0;
+void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, const double* u, int count,
+                                  double* values) {
+  constexpr int kMaxBatch = kMaxSemiEllipseBatch;
+  if (count < 0 || count > kMaxBatch) throw std::logic_error("SemiEllipseOverDistanceBatch: count out of range");
   // Closed form (own derivation, checked against 40-digit quadrature in tests/test_kp_strip_closed_form.cpp): with
   // the distances A, B from the observation point to the two ends of the semi-ellipse, Byrd & Friedman 259.00's
   // substitution turns F1 into complete elliptic integrals of the first, second and third kind,
@@ -159,29 +133,90 @@ double SemiEllipseOverDistance(double half_length, double centre_offset, double 
   // cel(k', p, a, b) = integral over [0, pi/2] of (a cos^2 + b sin^2) / ((cos^2 + p sin^2) sqrt(cos^2 + k'^2 sin^2))
   // (Bulirsch's general complete elliptic integral). Every term is positive: no cancellation. d = 0 (A = B):
   // 2 sqrt(c^2 + u^2) (K - E), k' = u / sqrt(c^2 + u^2).
+  // K - E and cel(k', p, 1, 0) (Bulirsch 1969, Numer. Math. 13; the Numerical Recipes `cel`) come from ONE
+  // arithmetic-geometric mean of (1, k'): Bulirsch's em_n, qc_n are 2^n a_n, 2^n b_n of the AGM, and
+  // K - E = K sum_n 2^(n-1) c_n^2 (physics-reference §1.2, as EllipticIntegralsFromComplementaryModulus), c_0 = k,
+  // c_(n+1) = (a_n - b_n) / 2. The lanes run side by side (independent dependency chains overlap in the CPU); each
+  // lane stops at its own convergence, so its value does not depend on the other lanes.
+  const double c = half_length;
   const double D = std::abs(centre_offset);  // F1 is even in d
-  const double u2 = u * u;
-  if (D == 0.0) {
-    const double hypot_squared = c * c + u2;
-    const double hypot = std::sqrt(hypot_squared);
-    if (!(u > 0.0)) return SemiEllipseOverDistanceQuadrature(c, centre_offset, u);  // on the segment: infinite
-    return 2.0 * hypot * CompleteEllipticKMinusE(c * c / hypot_squared, u / hypot);
+  double qc[kMaxBatch], e[kMaxBatch], em[kMaxBatch], p[kMaxBatch], a[kMaxBatch], b[kMaxBatch], sum[kMaxBatch],
+      prefactor[kMaxBatch], cel_weight[kMaxBatch];
+  bool active[kMaxBatch], closed_form[kMaxBatch];
+  double weight = 0.25;  // 2^(n-1) / 4^(n+1) for the term (2^n a_n - 2^n b_n)^2 of c_(n+1)
+  double scale = 1.0;    // 2^(n+1) after the update of em
+  double lane_scale[kMaxBatch];
+  for (int i = 0; i < count; ++i) {
+    active[i] = closed_form[i] = false;
+    values[i] = 0.0;
+    if (c <= 0.0) continue;
+    const double u2 = u[i] * u[i];
+    const double A = std::sqrt((c + D) * (c + D) + u2);  // to the far end
+    const double B = std::sqrt((D - c) * (D - c) + u2);  // to the near end
+    const double four_AB = 4.0 * A * B;
+    // A + B - 2c >= 0 and A + B - 2D >= 0 (triangle inequalities) without cancellation
+    const double far_excess = u2 / (A + c + D);                            // A - (c + D)
+    const double near_excess_c = c >= D ? u2 / (B + c - D) : B - (c - D);  // B - (c - D)
+    const double near_excess_D = D >= c ? u2 / (B + D - c) : B - (D - c);  // B - (D - c)
+    const double kc_squared = (far_excess + near_excess_c) * (A + B + 2.0 * c) / four_AB;
+    if (!(kc_squared > 0.0)) {  // on the segment: log-infinite (or NaN input); the quadrature says what it says
+      values[i] = SemiEllipseOverDistanceQuadrature(c, centre_offset, u[i]);
+      continue;
+    }
+    const double A_minus_B = 4.0 * c * D / (A + B);  // (A^2 - B^2) / (A + B)
+    // 2c - (A - B) = 2c (A + B - 2D) / (A + B)
+    const double k_squared = 2.0 * c * (far_excess + near_excess_D) / (A + B) * (2.0 * c + A_minus_B) / four_AB;
+    active[i] = closed_form[i] = true;
+    qc[i] = e[i] = std::min(std::sqrt(kc_squared), 1.0);
+    em[i] = 1.0;
+    p[i] = std::sqrt((A + B) * (A + B) / four_AB);
+    a[i] = 1.0;
+    b[i] = 0.0;
+    sum[i] = 0.5 * k_squared;  // 2^(-1) c_0^2
+    prefactor[i] = 2.0 * std::sqrt(A * B);
+    cel_weight[i] = A_minus_B * A_minus_B / four_AB;
   }
-  const double A = std::sqrt((c + D) * (c + D) + u2);  // to the far end
-  const double B = std::sqrt((D - c) * (D - c) + u2);  // to the near end
-  const double four_AB = 4.0 * A * B;
-  // A + B - 2c >= 0 and A + B - 2D >= 0 (triangle inequalities) without cancellation
-  const double far_excess = u2 / (A + c + D);                                // A - (c + D)
-  const double near_excess_c = c >= D ? u2 / (B + c - D) : B - (c - D);      // B - (c - D)
-  const double near_excess_D = D >= c ? u2 / (B + D - c) : B - (D - c);      // B - (D - c)
-  const double kc_squared = (far_excess + near_excess_c) * (A + B + 2.0 * c) / four_AB;
-  if (!(kc_squared > 0.0)) return SemiEllipseOverDistanceQuadrature(c, centre_offset, u);  // on the segment: infinite
-  const double A_minus_B = 4.0 * c * D / (A + B);  // (A^2 - B^2) / (A + B)
-  // 2c - (A - B) = 2c (A + B - 2D) / (A + B)
-  const double k_squared = 2.0 * c * (far_excess + near_excess_D) / (A + B) * (2.0 * c + A_minus_B) / four_AB;
-  const double p = (A + B) * (A + B) / four_AB;
-  const KMinusEAndCel integrals = CompleteEllipticKMinusEAndCel(k_squared, std::min(std::sqrt(kc_squared), 1.0), p);
-  return 2.0 * std::sqrt(A * B) * (integrals.K_minus_E + A_minus_B * A_minus_B / four_AB * integrals.cel);
+  constexpr double kTolerance = 1e-9;  // relative AGM spread; the error after the last step is its square
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    scale *= 2.0;
+    bool any_active = false;
+    for (int i = 0; i < count; ++i) {
+      if (!active[i]) continue;
+      const double f = a[i];
+      const double inverse_p = 1.0 / p[i];
+      a[i] += b[i] * inverse_p;
+      double g = e[i] * inverse_p;
+      b[i] += f * g;
+      b[i] += b[i];
+      p[i] += g;
+      g = em[i];
+      em[i] += qc[i];
+      sum[i] += weight * (g - qc[i]) * (g - qc[i]);
+      if (std::abs(g - qc[i]) <= g * kTolerance) {
+        active[i] = false;
+        lane_scale[i] = scale;
+        continue;
+      }
+      any_active = true;
+      qc[i] = 2.0 * std::sqrt(e[i]);
+      e[i] = qc[i] * em[i];
+    }
+    weight *= 0.5;
+    if (!any_active) break;
+  }
+  for (int i = 0; i < count; ++i) {
+    if (!closed_form[i]) continue;
+    if (active[i]) lane_scale[i] = scale;  // not converged in 60 steps (cannot happen for k' in (0, 1])
+    const double K_minus_E = M_PI * lane_scale[i] / (2.0 * em[i]) * sum[i];  // K = pi / (2 AGM), AGM = em / 2^(n+1)
+    const double cel = 0.5 * M_PI * (b[i] + a[i] * em[i]) / (em[i] * (em[i] + p[i]));
+    values[i] = prefactor[i] * (K_minus_E + cel_weight[i] * cel);
+  }
+}
+
+double SemiEllipseOverDistance(double half_length, double centre_offset, double u) {
+  double value = 0.0;
+  SemiEllipseOverDistanceBatch(half_length, centre_offset, &u, 1, &value);
+  return value;
 }
 
 double SemiEllipseCoupling(double half_length, double centre_offset, double u) {
@@ -200,16 +235,21 @@ double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observat
   const double alpha_slope = (strip.alpha_high - strip.alpha_low) / (strip.s_high - strip.s_low);
   auto alpha_at = [&](double s) { return strip.alpha_low + alpha_slope * (s - strip.s_low); };
   const bool coupled = blanco && coupling_K != 0.0;
-  // Regular integrand at s != s_observation.
-  auto integrand = [&](double s) {
-    const double u = std::abs(s - s_observation);
-    double value = (1.0 - poisson_ratio) * SemiEllipseOverDistance(c, d, u);
-    if (blanco) {
-      const double alpha = alpha_at(s);
-      value *= std::cos(alpha);
-      if (coupled) value += coupling_K * std::sin(alpha) * (s > s_observation ? 1.0 : -1.0) * SemiEllipseCoupling(c, d, u);
+  // Regular integrand at the points s[0..count) != s_observation (F1 for all of them in one batch).
+  auto integrand = [&](const double* s, int count, double* values) {
+    double u[kMaxSemiEllipseBatch];
+    for (int i = 0; i < count; ++i) u[i] = std::abs(s[i] - s_observation);
+    SemiEllipseOverDistanceBatch(c, d, u, count, values);
+    for (int i = 0; i < count; ++i) {
+      double value = (1.0 - poisson_ratio) * values[i];
+      if (blanco) {
+        const double alpha = alpha_at(s[i]);
+        value *= std::cos(alpha);
+        if (coupled)
+          value += coupling_K * std::sin(alpha) * (s[i] > s_observation ? 1.0 : -1.0) * SemiEllipseCoupling(c, d, u[i]);
+      }
+      values[i] = value;
     }
-    return value;
   };
   // A piece [a, b] of the strip not containing the observation point in its interior.
   auto regular_piece = [&](double a, double b) {
@@ -217,7 +257,11 @@ double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observat
     const double ratio = distance / (b - a);
     // Thresholds away from the half-integer ratios of a centred observation point (no switching by rounding).
     const int points = ratio < 1.0 ? 8 : (ratio < 3.0 ? 4 : 2);
-    return Gauss(integrand, a, b, points);
+    const GaussRule rule(a, b, points);
+    double s[8], values[8];
+    rule.Nodes(s);
+    integrand(s, rule.count(), values);
+    return rule.Sum(values);
   };
   if (s_observation <= strip.s_low || s_observation >= strip.s_high) {
     if (s_observation == strip.s_low || s_observation == strip.s_high) {
@@ -236,8 +280,13 @@ double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observat
     const double h = side == 0 ? s_observation - strip.s_low : strip.s_high - s_observation;
     if (h <= 0.0) continue;
     const double sign = side == 0 ? -1.0 : 1.0;
-    auto subtracted = [&](double u) { return integrand(s_observation + sign * u) + log_coefficient * std::log(u); };
-    total += Gauss(subtracted, 0.0, h, 8) - log_coefficient * h * (std::log(h) - 1.0);
+    const GaussRule rule(0.0, h, 8);
+    double u[8], s[8], values[8];
+    rule.Nodes(u);
+    for (int i = 0; i < 8; ++i) s[i] = s_observation + sign * u[i];
+    integrand(s, 8, values);
+    for (int i = 0; i < 8; ++i) values[i] += log_coefficient * std::log(u[i]);
+    total += rule.Sum(values) - log_coefficient * h * (std::log(h) - 1.0);
   }
   return total;
 }

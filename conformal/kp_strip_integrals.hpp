@@ -9,6 +9,11 @@ namespace kp_detail {
 // Closed form in complete elliptic integrals (d = 0: 2 sqrt(c^2 + u^2) (K(k) - E(k)), k'^2 = u^2 / (c^2 + u^2);
 // d != 0: K - E plus Bulirsch's cel, see the .cpp).
 double SemiEllipseOverDistance(double half_length, double centre_offset, double u);
+// The same at up to kMaxSemiEllipseBatch distances u[0..count) for one (c, d): values[i] = F1(c, d, u[i]), each
+// bit-identical to SemiEllipseOverDistance(c, d, u[i]) (the lanes only share the loop, for speed).
+constexpr int kMaxSemiEllipseBatch = 8;
+void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, const double* u, int count,
+                                  double* values);
 // The same integral by quadrature (the solver's former method, kept as the test reference): the log-singular part
 // phi(0) (asinh...) in closed form, the bounded rest by graded Gauss quadrature in t (x = d + c sin t).
 double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offset, double u);

@@ -69,6 +69,17 @@ TEST(KpStripClosedForm, ReducesToTheCentredClosedFormAsTheOffsetVanishes) {
   }
 }
 
+TEST(KpStripClosedForm, BatchEqualsSingleCalls) {
+  // lanes converge after different numbers of AGM steps; each must equal its own single evaluation bit for bit
+  const double u[kp_detail::kMaxSemiEllipseBatch] = {1e-9, 1e-5, 3e-4, 1e-3, 2e-3, 5e-3, 2e-2, 1.0};
+  for (double d : {0.0, 4e-4, -1.1e-3, 1e-3, 3e-3}) {
+    double batch[kp_detail::kMaxSemiEllipseBatch];
+    kp_detail::SemiEllipseOverDistanceBatch(1e-3, d, u, kp_detail::kMaxSemiEllipseBatch, batch);
+    for (int i = 0; i < kp_detail::kMaxSemiEllipseBatch; ++i)
+      EXPECT_EQ(batch[i], SemiEllipseOverDistance(1e-3, d, u[i])) << "d " << d << " u " << u[i];
+  }
+}
+
 TEST(KpStripClosedForm, IsFiniteAndPositiveForEveryGeometry) {
   for (double d : {-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0})
     for (double u : {1e-12, 1e-8, 1.0, 1e3}) {
