@@ -128,7 +128,7 @@ WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side
 // geometry and drop it with the geometry (the address may be reused by the next one).
 class WheelContactCache {
  public:
-  explicit WheelContactCache(size_t max_entries = 4096);
+  explicit WheelContactCache(size_t max_entries = 1024);
   ~WheelContactCache();
   WheelContactCache(const WheelContactCache&) = delete;
   WheelContactCache& operator=(const WheelContactCache&) = delete;
