@@ -86,10 +86,11 @@ struct ContactRange {
   bool cut = false;  // reached the end of the given strips
 };
 
-// The connected range around s_start where f > 0 (f(s_start) > 0). Walks the input nodes outward, then finds
-// each edge on the interpolant.
-template <class F>
-ContactRange FindRange(const PatchInterpolant& patch, const F& f, double s_start, double f_start) {
+// The connected range around s_start where f > 0 (f(s_start) > 0). Walks the input nodes outward (f_at_node(k) =
+// f(nodes[k]), from the node values without interpolation), then finds each edge on the interpolant.
+template <class F, class FNode>
+ContactRange FindRange(const PatchInterpolant& patch, const F& f, const FNode& f_at_node, double s_start,
+                       double f_start) {
   ContactRange range;
   const auto& nodes = patch.nodes();
   const size_t first_right = static_cast<size_t>(std::upper_bound(nodes.begin(), nodes.end(), s_start) - nodes.begin());
@@ -99,7 +100,7 @@ ContactRange FindRange(const PatchInterpolant& patch, const F& f, double s_start
     bool found = false;
     for (size_t k = first_right; k <= nodes.size() && !found; ++k) {
       const double s = k < nodes.size() ? nodes[k] : patch.domain_high();
-      const double value = f(s);
+      const double value = k < nodes.size() ? f_at_node(k) : f(s);
       if (value <= 0.0) {
         range.high = EdgeRoot(f, inside, f_in, s, value);
         found = true;
@@ -120,7 +121,7 @@ ContactRange FindRange(const PatchInterpolant& patch, const F& f, double s_start
     for (size_t k = first_right; k-- > 0 && !found;) {
       const double s = nodes[k];
       if (s >= s_start) continue;
-      const double value = f(s);
+      const double value = f_at_node(k);
       if (value <= 0.0) {
         range.low = EdgeRoot(f, inside, f_in, s, value);
         found = true;
@@ -195,9 +196,10 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   if (kpec) {
     // KPEC step 2: equivalent Hertz problem from the eps = 0.5 region (CONTACT m_snorm.f90, physics-reference §3.3).
     auto half_region = [&](double s) { return 0.5 * delta - patch.gap(s); };
+    auto half_region_node = [&](size_t k) { return 0.5 * delta - patch.node_gaps()[k]; };  // = half_region(nodes[k])
     const double f0 = half_region(s_contact);
     if (!(f0 > 0.0)) return result;
-    const ContactRange half = FindRange(patch, half_region, s_contact, f0);
+    const ContactRange half = FindRange(patch, half_region, half_region_node, s_contact, f0);
     s_mid = 0.5 * (half.low + half.high);
     const double half_width = 0.5 * (half.high - half.low);
     const double A = patch.curvature(s_contact);
@@ -212,16 +214,20 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     b_hertz = hertz.b_m;
   }
   const double eps = options.virtual_penetration_factor;
-  auto interpenetration = [&](double s) {
-    if (!kpec) return eps * delta - patch.gap(s);
+  auto interpenetration_with_gap = [&](double s, double gap) {
+    if (!kpec) return eps * delta - gap;
     const double t = (s - s_mid) / b_hertz;
     const double eps_s = std::clamp((a_squared_A - spread * t * t) / delta, 0.0, 1.0);  // §3.3 step 3
-    return eps_s * delta - patch.gap(s);
+    return eps_s * delta - gap;
+  };
+  auto interpenetration = [&](double s) { return interpenetration_with_gap(s, patch.gap(s)); };
+  auto interpenetration_node = [&](size_t k) {  // = interpenetration(nodes[k]): the interpolant is exact at nodes
+    return interpenetration_with_gap(patch.nodes()[k], patch.node_gaps()[k]);
   };
   const double g_contact = interpenetration(s_contact);
   if (!(g_contact > 0.0)) return result;
   result.virtual_penetration_m = g_contact + gap_contact;
-  const ContactRange range = FindRange(patch, interpenetration, s_contact, g_contact);
+  const ContactRange range = FindRange(patch, interpenetration, interpenetration_node, s_contact, g_contact);
 
   // Strips over exactly the contact range.
   const int n = options.strips_across_contact;

@@ -154,27 +154,30 @@ void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, cons
     const double A = std::sqrt((c + D) * (c + D) + u2);  // to the far end
     const double B = std::sqrt((D - c) * (D - c) + u2);  // to the near end
     const double four_AB = 4.0 * A * B;
+    const double inverse_four_AB = 1.0 / four_AB, inverse_sum = 1.0 / (A + B);
     // A + B - 2c >= 0 and A + B - 2D >= 0 (triangle inequalities) without cancellation
-    const double far_excess = u2 / (A + c + D);                            // A - (c + D)
-    const double near_excess_c = c >= D ? u2 / (B + c - D) : B - (c - D);  // B - (c - D)
-    const double near_excess_D = D >= c ? u2 / (B + D - c) : B - (D - c);  // B - (D - c)
-    const double kc_squared = (far_excess + near_excess_c) * (A + B + 2.0 * c) / four_AB;
+    const double far_excess = u2 / (A + c + D);                                                // A - (c + D)
+    const double near_excess = u2 / (B + std::abs(c - D));                                     // B - |c - D|
+    const double near_excess_c = c >= D ? near_excess : B - (c - D);                          // B - (c - D)
+    const double near_excess_D = D >= c ? near_excess : B - (D - c);                          // B - (D - c)
+    const double kc_squared = (far_excess + near_excess_c) * (A + B + 2.0 * c) * inverse_four_AB;
     if (!(kc_squared > 0.0)) {  // on the segment: log-infinite (or NaN input); the quadrature says what it says
       values[i] = SemiEllipseOverDistanceQuadrature(c, centre_offset, u[i]);
       continue;
     }
-    const double A_minus_B = 4.0 * c * D / (A + B);  // (A^2 - B^2) / (A + B)
+    const double A_minus_B = 4.0 * c * D * inverse_sum;  // (A^2 - B^2) / (A + B)
     // 2c - (A - B) = 2c (A + B - 2D) / (A + B)
-    const double k_squared = 2.0 * c * (far_excess + near_excess_D) / (A + B) * (2.0 * c + A_minus_B) / four_AB;
+    const double k_squared =
+        2.0 * c * (far_excess + near_excess_D) * inverse_sum * (2.0 * c + A_minus_B) * inverse_four_AB;
     active[i] = closed_form[i] = true;
     qc[i] = e[i] = std::min(std::sqrt(kc_squared), 1.0);
     em[i] = 1.0;
-    p[i] = std::sqrt((A + B) * (A + B) / four_AB);
+    p[i] = std::sqrt((A + B) * (A + B) * inverse_four_AB);
     a[i] = 1.0;
     b[i] = 0.0;
     sum[i] = 0.5 * k_squared;  // 2^(-1) c_0^2
     prefactor[i] = 2.0 * std::sqrt(A * B);
-    cel_weight[i] = A_minus_B * A_minus_B / four_AB;
+    cel_weight[i] = A_minus_B * A_minus_B * inverse_four_AB;
   }
   constexpr double kTolerance = 1e-9;  // relative AGM spread; the error after the last step is its square
   for (int iteration = 0; iteration < 60; ++iteration) {
