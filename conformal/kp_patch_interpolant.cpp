@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 
 #include "conforma/error.hpp"
@@ -18,6 +20,16 @@ void RequireSize(const std::vector<double>& values, size_t strips, const char* n
                      " values for " + std::to_string(strips) + " strips");
 }
 void RequireFiniteAll(const std::vector<double>& values, const char* name) {
+  // Fast pass: a value is not finite when its exponent bits are all ones (an integer OR-reduction, vectorised);
+  // only then look for the index to name.
+  constexpr std::uint64_t kExponent = 0x7ff0000000000000ULL;
+  std::uint64_t any_non_finite = 0;
+  for (const double value : values) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    any_non_finite |= static_cast<std::uint64_t>((bits & kExponent) == kExponent);
+  }
+  if (any_non_finite == 0) return;
   for (size_t j = 0; j < values.size(); ++j)
     if (!std::isfinite(values[j]))
       throw InputError("PatchGeometry." + std::string(name) + "[" + std::to_string(j) + "] is not finite");
