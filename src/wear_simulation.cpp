@@ -140,7 +140,11 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
           if (e < options.edge_taper_m) depth.depth_m[i] *= 0.5 - 0.5 * std::cos(M_PI * e / options.edge_taper_m);
         }
       }
-      const ProfileUpdateResult up = UpdateProfile(wheel, depth, 1.0, uo);
+      ProfileUpdateResult up = UpdateProfile(wheel, depth, 1.0, uo);
+      for (int h = 0; h < options.invalid_step_halvings && up.status == ProfileUpdateStatus::InvalidProfile; ++h) {
+        uo.max_depth_per_step_m *= 0.5;
+        up = UpdateProfile(wheel, depth, 1.0, uo);
+      }
 
       WearStepRecord rec;
       rec.rail_step = k;
@@ -153,6 +157,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
       rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
       rec.validity = up.validity;
+      rec.depth_cap_m = uo.max_depth_per_step_m;
       if (up.status != ProfileUpdateStatus::Updated) {
         result.status = up.status == ProfileUpdateStatus::NoWear ? WearSimulationStatus::NoWear
                                                                    : WearSimulationStatus::InvalidProfile;

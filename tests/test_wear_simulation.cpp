@@ -63,6 +63,7 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
       // kink criterion stated in the scenario: |curvature| <= 1000 1/m (radius >= 1 mm)
       EXPECT_LE(s.validity.max_abs_curvature_1_m, sc.update.max_curvature_1_m) << to_string(m) << " step " << s.step;
       EXPECT_TRUE(SingleValuedAfterTip(s.wheel)) << to_string(m) << " step " << s.step;
+      EXPECT_EQ(s.depth_cap_m, sc.update.cap_m);                             // no step needed a smaller cap
       EXPECT_NEAR(s.max_depth_m, sc.update.cap_m, 0.01 * sc.update.cap_m);  // largest depth = cap within 1 %
       EXPECT_GT(s.step_km, 0.0);
       km += s.step_km;
@@ -95,6 +96,33 @@ TEST(WearSimulation, TotalKmShortensTheLastStep) {
   ASSERT_GE(r.steps.size(), 2u);
   EXPECT_NEAR(r.steps.back().km, 1500.0, 1e-6);
   EXPECT_LT(r.steps.back().max_depth_m, sc.update.cap_m);  // the shortened step removes less than the cap
+}
+
+// Adaptive step: a run that stops at an invalid profile with a fixed cap continues past that step when the cap may be
+// halved, every profile valid, and the repeated step removes exactly its (smaller) cap.
+TEST(WearSimulation, InvalidProfileHalvesTheCapInsteadOfStopping) {
+  Scenario sc = FastMetro();
+  sc.update.smoothing_cutoff_m = 2e-3;  // little smoothing: the kink limit is reached within a few steps
+  WearSimulationOptions o;
+  o.model = ContactModel::Hertz;
+  o.steps = 12;
+  o.total_km = 0.0;
+  o.invalid_step_halvings = 0;
+  const WearSimulationResult fixed = RunWearSimulation(sc, o);
+  ASSERT_EQ(fixed.status, WearSimulationStatus::InvalidProfile) << "no invalid profile: the test needs less smoothing";
+  const size_t failing_step = fixed.steps.size() + 1;
+  o.invalid_step_halvings = 3;
+  o.steps = static_cast<int>(failing_step);
+  const WearSimulationResult adaptive = RunWearSimulation(sc, o);
+  ASSERT_GE(adaptive.steps.size(), failing_step) << adaptive.message;
+  for (size_t i = 0; i + 1 < failing_step; ++i)  // identical up to the failing step
+    EXPECT_EQ(adaptive.steps[i].km, fixed.steps[i].km);
+  const WearStepRecord& s = adaptive.steps[failing_step - 1];
+  EXPECT_TRUE(s.validity.valid) << s.validity.reason;
+  EXPECT_LT(s.depth_cap_m, sc.update.cap_m);
+  EXPECT_NEAR(s.max_depth_m, s.depth_cap_m, 0.01 * s.depth_cap_m);
+  std::printf("fixed cap stops at step %zu (%s); halved cap %.3f mm passes it\n", failing_step, fixed.message.c_str(),
+              s.depth_cap_m * 1e3);
 }
 
 TEST(WearSimulation, SameResultForAnyThreadCount) {

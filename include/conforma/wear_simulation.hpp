@@ -108,6 +108,11 @@ struct WearSimulationOptions {
   // the normal has no neighbour on one side and a worn edge turns into a kink that fails the validity check.
   // 0 disables the taper.
   double edge_taper_m = 3e-3;
+  // Adaptive step (paper 001 §6.2: "the km_step can be variable and controlled by an adaptive procedure"): when
+  // the updated wheel profile fails the validity check (a fold where the flange face is steep, a kink), the step
+  // is repeated with half the depth cap, up to this many times (cap / 2^n). The same wear distribution is used:
+  // only the distance the step represents shrinks. 0: stop at the first invalid profile.
+  int invalid_step_halvings = 3;
   // Called after every wheel step (progress display, streaming output); may be empty.
   std::function<void(const struct WearStepRecord&)> on_step;
 };
@@ -128,6 +133,7 @@ struct WearStepRecord {
   ProfileValidity validity;
   int samples = 0, failed_contacts = 0, approximate_contacts = 0, hertz_fallback_contacts = 0;
   int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
+  double depth_cap_m = 0.0;          // cap used (the scenario's, or halved by invalid_step_halvings)
 };
 
 enum class WearSimulationStatus { Completed, InvalidProfile, NoWear };
