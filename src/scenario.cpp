@@ -117,7 +117,8 @@ ContactModel ModelFromName(const Reader& r, const std::string& name, const std::
   if (name == "kpec") return ContactModel::Kpec;
   if (name == "conformal") return ContactModel::Conformal;
   if (name == "reference") return ContactModel::Reference;
-  r.fail(where, "unknown contact model '" + name + "' (hertz, kp, kpec, conformal, reference)");
+  if (name == "auto") return ContactModel::Auto;
+  r.fail(where, "unknown contact model '" + name + "' (hertz, kp, kpec, conformal, auto, reference)");
 }
 
 WearLaw LawFromName(const Reader& r, const std::string& name) {

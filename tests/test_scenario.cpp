@@ -92,6 +92,7 @@ TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {
   EXPECT_EQ(s.model, ContactModel::Conformal);
   EXPECT_TRUE(s.kinematics.contact_model_set);
   EXPECT_EQ(s.kinematics.contact_model, ContactModel::Hertz);
+  EXPECT_EQ(ParseScenario(std::string("contact_model: auto\n") + kClasses, "a.yaml").model, ContactModel::Auto);
 }
 
 }  // namespace
