@@ -107,7 +107,7 @@ typedef struct conforma_track_params {
 
 /* Contact model and material. */
 typedef struct conforma_contact_params {
-  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "reference" (slow, normal only) */
+  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "auto", "reference" (slow, normal only) */
   double shear_modulus_Pa;         /* 82e9 */
   double poisson_ratio;            /* 0.28 */
   double friction_coefficient;     /* 0.3 */

@@ -144,7 +144,7 @@ void BindWear(py::module_& m) {
   m.def("wear", &RunWear, py::arg("scenario"), py::arg("model") = "", py::arg("steps") = -1,
         py::arg("total_km") = -1.0, py::arg("base_dir") = ".",
         R"doc(Run the wear loop of a scenario (YAML path or dict in the file's layout; relative paths in a dict are
-resolved against base_dir). model: 'hertz', 'kp', 'kpec', 'conformal' ('' = the scenario's); steps / total_km < 0:
+resolved against base_dir). model: 'hertz', 'kp', 'kpec', 'conformal', 'auto' ('' = the scenario's); steps / total_km < 0:
 the scenario's.
 
 Returns a dict: scenario, model, status, message, 'steps' -- NumPy columns with row 0 the initial wheel (km = 0):

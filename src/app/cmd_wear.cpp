@@ -20,7 +20,7 @@ void RegisterWearCommand(CLI::App& app) {
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file (scenarios/default_metro.yaml)")->required();
-  sub->add_option("--model", a->model, "contact model: hertz, kp, kpec, conformal (default: the scenario's)");
+  sub->add_option("--model", a->model, "contact model: hertz, kp, kpec, conformal, auto (default: the scenario's)");
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--steps", a->steps, "wheel steps (default: the scenario's)");
   sub->add_option("--km", a->km, "stop at this distance (default: the scenario's total_km; 0 = unlimited)");

@@ -21,7 +21,8 @@ nlohmann::json ToJson(const PatchReport& p) {
           {"phi_per_m", p.phi_per_m},           {"alpha_c_deg", p.alpha_c_deg},
           {"is_conformal", p.is_conformal},     {"adhesion_area_m2", p.adhesion_area_m2},
           {"slip_area_m2", p.slip_area_m2},     {"frictional_power_W", p.frictional_power_W},
-          {"vertical_force_N", p.vertical_force_N}, {"lateral_force_N", p.lateral_force_N}};
+          {"vertical_force_N", p.vertical_force_N}, {"lateral_force_N", p.lateral_force_N},
+          {"model", to_string(p.model)},          {"auto_alpha_c_deg", p.auto_alpha_c_deg}};
 }
 
 nlohmann::json ToJson(const WheelContactReport& r) {
