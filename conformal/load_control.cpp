@@ -7,6 +7,7 @@
 #include <string>
 
 #include "conforma/error.hpp"
+#include "conforma/hertz.hpp"
 #include "conforma/influence.hpp"
 #include "kp_solver_internal.hpp"
 
@@ -52,6 +53,26 @@ double PowerLawSecantStep(double x_a, double load_a, double x_b, double load_b, 
   }
   return x;
 }
+// Hertz approach of one patch carrying `load` alone (LoadControlOptions::hertz_initial_guess); NaN without a
+// Hertz solution (minimum at the end of the strips, B <= 0, ...).
+double HertzApproachGuess(const WheelPatch& patch, double load, const Material& material) {
+  const PatchGeometry& geometry = *patch.geometry;
+  const std::vector<double>& g = geometry.gap_m;
+  const std::vector<double>& s = geometry.s_m;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (g.size() < 3 || s.size() != g.size() || geometry.longitudinal_curvature_per_m.size() != g.size()) return nan;
+  const size_t i = static_cast<size_t>(std::min_element(g.begin(), g.end()) - g.begin());
+  if (i == 0 || i + 1 == g.size()) return nan;
+  // B = g''/2 of the parabola through the three nodes (physics-reference §1.1)
+  const double left_slope = (g[i] - g[i - 1]) / (s[i] - s[i - 1]);
+  const double right_slope = (g[i + 1] - g[i]) / (s[i + 1] - s[i]);
+  const double B = (right_slope - left_slope) / (s[i + 1] - s[i - 1]);
+  const double A = geometry.longitudinal_curvature_per_m[i];
+  if (!(A > 0.0 && B > 0.0 && patch.load_weight > 0.0 && std::isfinite(A) && std::isfinite(B))) return nan;
+  const HertzResult hertz = SolveHertzForLoad(A, B, load / patch.load_weight, material);
+  return hertz.status == HertzStatus::Ok && hertz.approach_m > 0.0 ? hertz.approach_m : nan;
+}
+
 double SmallestOffset(const std::vector<WheelPatch>& patches) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const WheelPatch& patch : patches) smallest = std::min(smallest, patch.gap_offset_m);
@@ -119,6 +140,13 @@ WheelNormalResult SolveWheelForLoad(const std::vector<WheelPatch>& patches, doub
   // Bracket [low, high] with load(low) < target <= load(high); the step predicts with load ~ (delta - delta_1)^1.5.
   double low = first_touch, high = std::numeric_limits<double>::infinity();
   double approach = first_touch + options.initial_approach_m;
+  if (options.hertz_initial_guess) {
+    size_t first = 0;
+    for (size_t k = 1; k < patches.size(); ++k)
+      if (patches[k].gap_offset_m < patches[first].gap_offset_m) first = k;
+    const double guess = HertzApproachGuess(patches[first], load_N, options.kp.material);
+    if (guess > 0.0) approach = first_touch + guess;  // NaN: keep initial_approach_m
+  }
   WheelNormalResult current = evaluate(approach);
   double previous_approach = 0.0, previous_load = 0.0;
   for (int iteration = 0; iteration < options.max_iterations; ++iteration) {
