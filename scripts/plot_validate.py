@@ -14,6 +14,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from plot_compare import read_profile  # noqa: E402  (same folder: the profile CSVs of the wear output)
+
 DIMENSIONS = (("Sd", "sd_mm", "Sd (flange thickness)"), ("Sh", "sh_mm", "Sh (flange height)"),
               ("qR", "qr_mm", "qR"))
 MARKERS = "os^Dv<>"
@@ -22,18 +24,6 @@ MARKERS = "os^Dv<>"
 def read_rows(path):
     with open(path) as f:
         return list(csv.DictReader(f))
-
-
-def read_profile(path):
-    ys, zs = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or line.startswith("y"):
-                continue
-            y, z = line.strip().split(",")[:2]
-            ys.append(float(y))
-            zs.append(float(z))
-    return ys, zs
 
 
 def value(text):

@@ -1,3 +1,4 @@
+#include <sstream>
 #include "cli_setup.hpp"
 
 #include <cmath>
@@ -103,6 +104,15 @@ WheelContactOptions ContactArgs::options() const {
   o.conformal_variable_penetration = penetration == "variable";
   o.validate();
   return o;
+}
+
+std::vector<std::string> SplitCommaList(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
 }
 
 }  // namespace conforma::cli

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "conforma/geometry.hpp"
 #include "conforma/wheel_contact.hpp"
@@ -38,5 +39,7 @@ struct ContactArgs {
 
 // Parses "1:40", "1/40", "0", "none" or a decimal angle in radians.
 double ParseInclination(const std::string& text);
+// "a,b,,c" -> {"a", "b", "c"} (empty items dropped): the --models lists.
+std::vector<std::string> SplitCommaList(const std::string& text);
 
 }  // namespace conforma::cli

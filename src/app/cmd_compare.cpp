@@ -10,6 +10,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/scenario.hpp"
@@ -19,15 +20,6 @@
 namespace conforma::cli {
 
 namespace {
-
-std::vector<std::string> SplitComma(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string f;
-  while (std::getline(ss, f, ','))
-    if (!f.empty()) out.push_back(f);
-  return out;
-}
 
 struct ModelRun {
   std::string name;
@@ -112,7 +104,7 @@ void RegisterCompareCommand(CLI::App& app) {
     const Scenario sc = LoadScenario(a->scenario);
     std::vector<ModelRun> runs;
     BeginWearOutput(a->out);
-    for (const std::string& m : SplitComma(a->models)) {
+    for (const std::string& m : SplitCommaList(a->models)) {
       ModelRun run;
       run.name = m;
       WearSimulationOptions o;

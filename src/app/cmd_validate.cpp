@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/measured_validation.hpp"
@@ -30,15 +31,6 @@
 namespace conforma::cli {
 
 namespace {
-
-std::vector<std::string> SplitList(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string f;
-  while (std::getline(ss, f, ','))
-    if (!f.empty()) out.push_back(f);
-  return out;
-}
 
 struct MeasuredProfileSpec {
   std::string path;
@@ -369,7 +361,7 @@ void RegisterValidateCommand(CLI::App& app) {
 
     BeginWearOutput(a->out);
     std::vector<ModelValidation> runs;
-    for (const std::string& m : SplitList(a->models)) {
+    for (const std::string& m : SplitCommaList(a->models)) {
       ModelValidation run;
       run.name = m;
       WearSimulationOptions o;
