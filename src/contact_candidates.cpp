@@ -19,34 +19,12 @@ const char* to_string(CandidateStatus status) {
 
 namespace {
 
-// Intersection of the silhouette with the rail between y_in (gap < 0) and y_out (gap >= 0 or outside): Illinois
-// false position while both ends have a finite gap (about 10 gap evaluations instead of 60 bisections), bisection
-// otherwise; both shrink the bracket to the last few ulps (the same crossing to rounding).
+// Intersection of the silhouette with the rail between y_in (gap < 0) and y_out (gap >= 0 or outside).
 double bisect_crossing(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f, double y_in,
                        double y_out) {
-  double gap_in = g.VerticalGapAt(side, f, y_in), gap_out = g.VerticalGapAt(side, f, y_out);
-  int kept_side = 0;
   for (int it = 0; it < 60; ++it) {
-    if (std::abs(y_out - y_in) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(y_in) + 1e-300) break;
-    double y = 0.5 * (y_in + y_out);
-    const bool secant = std::isfinite(gap_out) && gap_in < 0.0 && gap_out > 0.0;
-    if (secant) {
-      const double t = gap_in / (gap_in - gap_out);
-      const double candidate = y_in + t * (y_out - y_in);
-      if ((candidate - y_in) * (y_out - candidate) > 0.0) y = candidate;
-    }
-    const double gap = g.VerticalGapAt(side, f, y);
-    if (gap < 0.0) {
-      y_in = y;
-      gap_in = gap;
-      if (secant && kept_side == 1) gap_out *= 0.5;  // Illinois: halve the end that stays
-      kept_side = 1;
-    } else {
-      y_out = y;
-      gap_out = gap;
-      if (secant && kept_side == -1) gap_in *= 0.5;
-      kept_side = -1;
-    }
+    const double mid = 0.5 * (y_in + y_out);
+    if (g.VerticalGapAt(side, f, mid) < 0.0) y_in = mid; else y_out = mid;
   }
   return 0.5 * (y_in + y_out);
 }
