@@ -38,6 +38,28 @@ void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const Kine
   }
 }
 
+// The quasi-static solve with the options the wear loop uses (MakeScenarioKinematics), before any fallback.
+void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackClass& tc, ContactModel model) {
+  QuasiStaticOptions qo;
+  qo.contact.model = model;
+  qo.contact.material = sc.material;
+  qo.tangent_amplitude_m = sc.kinematics.tangent_amplitude_m;
+  qo.tangent_phases = sc.kinematics.tangent_phases;
+  qo.cant_base_m = sc.kinematics.cant_base_m;
+  qo.free_axle_rotation = sc.kinematics.free_axle_rotation;
+  const QuasiStaticResult r = SolveQuasiStaticCurving(sc.vehicle, g, tc, qo);
+  const double c = TrackClassCurvature(tc);
+  std::printf("  equilibrium %s, a_nc %.3f m/s^2, flange-contact shift %+.3f mm\n", to_string(r.status),
+              r.unbalanced_acceleration_m_s2, FlangeContactShift(g, c >= 0.0 ? 1.0 : -1.0) * 1e3);
+  for (const BogieQuasiStaticReport& b : r.bogies)
+    std::printf("    bogie %d %s: max residual %.2e, %d iterations, continuation %s\n", b.bogie, to_string(b.status),
+                b.max_residual, b.iterations, b.continuation_used ? "yes" : "no");
+  for (const WheelsetQuasiStaticReport& w : r.wheelsets)
+    std::printf("    ws %d: y %+7.3f mm psi %+7.3f mrad  Y/Q L %+.2f R %+.2f  max angle L %.0f R %.0f deg\n", w.wheelset,
+                w.pose.lateral_m * 1e3, w.pose.yaw_rad * 1e3, w.wheel[0].y_over_q, w.wheel[1].y_over_q,
+                w.wheel[0].max_contact_angle_rad * 180.0 / M_PI, w.wheel[1].max_contact_angle_rad * 180.0 / M_PI);
+}
+
 }  // namespace
 
 void RegisterCurvingCommand(CLI::App& app) {
@@ -45,11 +67,14 @@ void RegisterCurvingCommand(CLI::App& app) {
   struct Args {
     std::string scenario, model, provider;
     int track_class = -1;
+    bool equilibrium = false;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--class", a->track_class, "track class index (default: all)");
   sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+  sub->add_flag("--equilibrium", a->equilibrium,
+                "also print the quasi-static solve itself: status and residual per bogie, flange-contact shift");
   sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred (default: the scenario's)");
   sub->callback([a]() {
     Scenario sc = LoadScenario(a->scenario);
@@ -73,6 +98,7 @@ void RegisterCurvingCommand(CLI::App& app) {
       std::printf("class %d %s: R %.0f m, cant %.0f mm, V %.1f km/h, share %.4f, provider %s%s\n", c, tc.name.c_str(),
                   tc.curve_radius_m, tc.cant_m * 1e3, tc.speed_m_s * 3.6, tc.share, to_string(sc.kinematics.provider),
                   fallbacks->load() > before ? " (fell back to the kinematic estimate)" : "");
+      if (a->equilibrium && TrackClassCurvature(tc) != 0.0) PrintEquilibrium(sc, g, tc, curving_model);
       PrintSamples(sc, g, s, model);
     }
   });
