@@ -153,6 +153,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.failed_contacts = wear.failed_contacts;
       rec.approximate_contacts = wear.approximate_contacts;
       rec.hertz_fallback_contacts = wear.hertz_fallback_contacts;
+      rec.patches_by_model = wear.patches_by_model;
       rec.kinematics_fallbacks = fallbacks->load() - fallbacks_before;
       rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
       rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};

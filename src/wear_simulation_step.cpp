@@ -17,6 +17,7 @@ struct SampleSlot {
   std::array<WearSample, 2> wheel;
   std::array<bool, 2> used{false, false};
   int failed = 0, approximate = 0, hertz_fallbacks = 0, patches = 0, slipping_cells = 0;
+  std::array<int, kContactModelCount> patches_by_model{};
   double off_grid_m2 = 0.0;
   std::string error;
 };
@@ -92,6 +93,7 @@ void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& tra
         patch.cells.push_back(w);
       }
       ++slot->patches;
+      ++slot->patches_by_model[static_cast<int>(p.model)];
       slot->slipping_cells += static_cast<int>(patch.cells.size());
       if (!patch.cells.empty()) ws.patches.push_back(std::move(patch));
     }
@@ -161,6 +163,7 @@ StepWear ComputeStepWear(const WheelsetTrackGeometry& geometry, const std::vecto
       out.approximate_contacts += s.approximate;
       out.hertz_fallback_contacts += s.hertz_fallbacks;
       out.patches += s.patches;
+      for (int m = 0; m < kContactModelCount; ++m) out.patches_by_model[m] += s.patches_by_model[m];
       out.slipping_cells += s.slipping_cells;
       out.wheel_area_off_grid_m2 += s.off_grid_m2;
       for (int k = 0; k < 2; ++k) {

@@ -66,6 +66,14 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
       EXPECT_EQ(s.depth_cap_m, sc.update.cap_m);                             // no step needed a smaller cap
       EXPECT_NEAR(s.max_depth_m, sc.update.cap_m, 0.01 * sc.update.cap_m);  // largest depth = cap within 1 %
       EXPECT_GT(s.step_km, 0.0);
+      // every wear patch counted under the model that solved it: this model, or Hertz for the wheels that fell
+      // back to it (StepWearOptions::hertz_fallback)
+      for (int k = 0; k < kContactModelCount; ++k) {
+        const ContactModel counted = static_cast<ContactModel>(k);
+        if (counted == m) EXPECT_GT(s.patches_by_model[k], 0) << to_string(m);
+        else if (counted != ContactModel::Hertz || s.hertz_fallback_contacts == 0)
+          EXPECT_EQ(s.patches_by_model[k], 0) << to_string(m) << " counted as " << to_string(counted);
+      }
       km += s.step_km;
       EXPECT_NEAR(s.km, km, 1e-9 * km);
       failed += s.failed_contacts;

@@ -5,6 +5,7 @@
 namespace conforma {
 
 enum class ContactModel { Hertz, Kp, Kpec, Conformal, Reference, Auto };
+constexpr int kContactModelCount = 6;
 const char* to_string(ContactModel model);
 // "hertz", "kp", "kpec", "conformal", "reference", "auto"; InputError naming the value otherwise.
 ContactModel ParseContactModel(const std::string& name);

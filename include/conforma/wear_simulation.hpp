@@ -62,6 +62,9 @@ struct StepWear {
   int approximate_contacts = 0;            // NotConverged wheels within load_acceptance (used)
   int hertz_fallback_contacts = 0;         // wheels solved with the Hertz model instead (hertz_fallback)
   int patches = 0, slipping_cells = 0;
+  // Patches of the wear samples by the model that solved them (PatchReport::model; with `auto` the chosen one,
+  // with the Hertz fallback hertz), indexed by static_cast<int>(ContactModel).
+  std::array<int, kContactModelCount> patches_by_model{};
   double wheel_area_off_grid_m2 = 0.0;     // cells that could not be mapped to the wheel arc length
 };
 
@@ -134,6 +137,7 @@ struct WearStepRecord {
   int samples = 0, failed_contacts = 0, approximate_contacts = 0, hertz_fallback_contacts = 0;
   int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
   double depth_cap_m = 0.0;          // cap used (the scenario's, or halved by invalid_step_halvings)
+  std::array<int, kContactModelCount> patches_by_model{};  // see StepWear
 };
 
 enum class WearSimulationStatus { Completed, InvalidProfile, NoWear };
