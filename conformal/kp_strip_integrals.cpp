@@ -22,29 +22,7 @@ constexpr double kGauss8Node[4] = {0.1834346424956498, 0.5255324099163290, 0.796
 constexpr double kGauss8Weight[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
                                      0.1012285362903763};
 
-// Integral of f over [a, b] with the n-point rule (n = 2, 4, 8).
-template <class F>
-double Gauss(const F& f, double a, double b, int points) {
-  const double mid = 0.5 * (a + b);
-  const double half = 0.5 * (b - a);
-  const double* node = kGauss8Node;
-  const double* weight = kGauss8Weight;
-  int pairs = 4;
-  if (points == 2) {
-    node = kGauss2Node;
-    weight = kGauss2Weight;
-    pairs = 1;
-  } else if (points == 4) {
-    node = kGauss4Node;
-    weight = kGauss4Weight;
-    pairs = 2;
-  }
-  double sum = 0.0;
-  for (int i = 0; i < pairs; ++i) sum += weight[i] * (f(mid - half * node[i]) + f(mid + half * node[i]));
-  return sum * half;
-}
-
-// The nodes of Gauss(f, a, b, points) in its evaluation order (x[2i] = mid - half node_i, x[2i+1] = mid + half
+// The n-point rule (n = 2, 4, 8) on [a, b]: its nodes in evaluation order (x[2i] = mid - half node_i, x[2i+1] = mid + half
 // node_i) and the sum it forms from the values there: the same arithmetic, with f evaluated as a batch.
 struct GaussRule {
   const double* node = kGauss8Node;
@@ -75,6 +53,16 @@ struct GaussRule {
     return sum * half;
   }
 };
+
+// Integral of f over [a, b] with the n-point rule (n = 2, 4, 8).
+template <class F>
+double Gauss(const F& f, double a, double b, int points) {
+  const GaussRule rule(a, b, points);
+  double x[8], values[8];
+  rule.Nodes(x);
+  for (int i = 0; i < rule.count(); ++i) values[i] = f(x[i]);
+  return rule.Sum(values);
+}
 
 // Integral of f over [t_start, t_end] with panels growing geometrically away from t_start (where f varies on the
 // scale first_panel), 8-point Gauss per panel.
