@@ -110,15 +110,13 @@ Profile BuiltInOrFileWheel(const Reader& r, const std::string& name) {
   return LoadProfile(r.path(name), o);
 }
 
-// Contact model by name (the same names as ParseContactModel of the pipeline, which the core cannot link to).
+// Contact model by name (ParseContactModel), the error naming the key.
 ContactModel ModelFromName(const Reader& r, const std::string& name, const std::string& where = "contact_model") {
-  if (name == "hertz") return ContactModel::Hertz;
-  if (name == "kp") return ContactModel::Kp;
-  if (name == "kpec") return ContactModel::Kpec;
-  if (name == "conformal") return ContactModel::Conformal;
-  if (name == "reference") return ContactModel::Reference;
-  if (name == "auto") return ContactModel::Auto;
-  r.fail(where, "unknown contact model '" + name + "' (hertz, kp, kpec, conformal, auto, reference)");
+  try {
+    return ParseContactModel(name);
+  } catch (const InputError& e) {
+    r.fail(where, e.what());
+  }
 }
 
 WearLaw LawFromName(const Reader& r, const std::string& name) {
