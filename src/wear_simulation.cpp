@@ -76,10 +76,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   auto fallbacks = std::make_shared<std::atomic<int>>(0);
   const KinematicsFunction kinematics =
       kinematics_in ? kinematics_in
-                    : MakeScenarioKinematics(scenario,
-                                             scenario.kinematics.contact_model_set ? scenario.kinematics.contact_model
-                                                                                   : options.model,
-                                             contact, fallbacks);
+                    : MakeScenarioKinematics(scenario, CurvingContactModel(scenario, options.model), contact, fallbacks);
 
   StepWearOptions step_options;
   step_options.contact.model = options.model;

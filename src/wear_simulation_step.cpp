@@ -212,6 +212,17 @@ KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrack
   return s;
 }
 
+QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactModel model) {
+  QuasiStaticOptions qo;
+  qo.contact.model = model;
+  qo.contact.material = scenario.material;
+  qo.tangent_amplitude_m = scenario.kinematics.tangent_amplitude_m;
+  qo.tangent_phases = scenario.kinematics.tangent_phases;
+  qo.cant_base_m = scenario.kinematics.cant_base_m;
+  qo.free_axle_rotation = scenario.kinematics.free_axle_rotation;
+  return qo;
+}
+
 KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
                                           std::shared_ptr<std::atomic<int>> fallbacks) {
   if (scenario.kinematics.provider == KinematicsProvider::Centred) {
@@ -222,13 +233,7 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
       return KinematicCurvingEstimate(scenario, g, tc);
     };
   }
-  QuasiStaticOptions qo;
-  qo.contact.model = model;
-  qo.contact.material = scenario.material;
-  qo.tangent_amplitude_m = scenario.kinematics.tangent_amplitude_m;
-  qo.tangent_phases = scenario.kinematics.tangent_phases;
-  qo.cant_base_m = scenario.kinematics.cant_base_m;
-  qo.free_axle_rotation = scenario.kinematics.free_axle_rotation;
+  const QuasiStaticOptions qo = ScenarioQuasiStaticOptions(scenario, model);
   // The standard pipeline goes through a WheelContactCache, one per class solve (one geometry, profiles fixed): the
   // equilibrium solver's forward differences in the axle speed repeat poses and its trust-region steps repeat whole
   // evaluations (42 % and 25 % of the calls on the default scenario); the cache returns bit-identical results.

@@ -70,9 +70,11 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
       // back to it (StepWearOptions::hertz_fallback)
       for (int k = 0; k < kContactModelCount; ++k) {
         const ContactModel counted = static_cast<ContactModel>(k);
-        if (counted == m) EXPECT_GT(s.patches_by_model[k], 0) << to_string(m);
-        else if (counted != ContactModel::Hertz || s.hertz_fallback_contacts == 0)
+        if (counted == m) {
+          EXPECT_GT(s.patches_by_model[k], 0) << to_string(m);
+        } else if (counted != ContactModel::Hertz || s.hertz_fallback_contacts == 0) {
           EXPECT_EQ(s.patches_by_model[k], 0) << to_string(m) << " counted as " << to_string(counted);
+        }
       }
       km += s.step_km;
       EXPECT_NEAR(s.km, km, 1e-9 * km);

@@ -25,6 +25,7 @@
 
 #include "conforma/geometry.hpp"
 #include "conforma/kinematics.hpp"
+#include "conforma/kinematics_quasistatic.hpp"
 #include "conforma/profile_update.hpp"
 #include "conforma/rail_update.hpp"
 #include "conforma/scenario.hpp"
@@ -91,6 +92,13 @@ KinematicsSeries KinematicCurvingEstimate(const Scenario& scenario, const Wheels
 // (0.1 mm scan, up to 20 mm) before the smallest-gap rigid contact jumps to the flange (contact angle >
 // flange_angle_rad); signed (negative for c > 0).
 double FlangeContactShift(const WheelsetTrackGeometry& geometry, double curvature_sign, double flange_angle_rad = 0.5);
+// Options of the scenario's quasi-static curving solve with `model` in the loop (tangent-track samples, cant base,
+// axle rotation from the scenario's kinematics).
+QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactModel model);
+// The contact model of the curving solve: the scenario's kinematics.contact_model if set, else the wear model.
+inline ContactModel CurvingContactModel(const Scenario& scenario, ContactModel wear_model) {
+  return scenario.kinematics.contact_model_set ? scenario.kinematics.contact_model : wear_model;
+}
 // The scenario's provider. Quasi-static: a class whose solution is NoContact, or NotConverged with a wheelset beyond
 // flange contact + 3 mm (flange climbing: the least-squares point of a discontinuous problem), uses
 // KinematicCurvingEstimate instead; `fallbacks` (optional, thread-safe counter) counts those classes.

@@ -40,14 +40,7 @@ void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const Kine
 
 // The quasi-static solve with the options the wear loop uses (MakeScenarioKinematics), before any fallback.
 void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackClass& tc, ContactModel model) {
-  QuasiStaticOptions qo;
-  qo.contact.model = model;
-  qo.contact.material = sc.material;
-  qo.tangent_amplitude_m = sc.kinematics.tangent_amplitude_m;
-  qo.tangent_phases = sc.kinematics.tangent_phases;
-  qo.cant_base_m = sc.kinematics.cant_base_m;
-  qo.free_axle_rotation = sc.kinematics.free_axle_rotation;
-  const QuasiStaticResult r = SolveQuasiStaticCurving(sc.vehicle, g, tc, qo);
+  const QuasiStaticResult r = SolveQuasiStaticCurving(sc.vehicle, g, tc, ScenarioQuasiStaticOptions(sc, model));
   const double c = TrackClassCurvature(tc);
   std::printf("  equilibrium %s, a_nc %.3f m/s^2, flange-contact shift %+.3f mm\n", to_string(r.status),
               r.unbalanced_acceleration_m_s2, FlangeContactShift(g, c >= 0.0 ? 1.0 : -1.0) * 1e3);
@@ -87,8 +80,7 @@ void RegisterCurvingCommand(CLI::App& app) {
     if (a->track_class >= nc) throw InputError("--class: index " + std::to_string(a->track_class) + " >= " + std::to_string(nc));
     const WheelsetTrackGeometry g(sc.MakeTrackSetup());
     auto fallbacks = std::make_shared<std::atomic<int>>(0);
-    // the curving solve's model: the scenario's kinematics.contact_model if set (as the wear loop does)
-    const ContactModel curving_model = sc.kinematics.contact_model_set ? sc.kinematics.contact_model : model;
+    const ContactModel curving_model = CurvingContactModel(sc, model);
     const KinematicsFunction kin = MakeScenarioKinematics(sc, curving_model, &SolveWheelContact, fallbacks);
     for (int c = 0; c < nc; ++c) {
       if (a->track_class >= 0 && c != a->track_class) continue;
