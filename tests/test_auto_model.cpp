@@ -17,24 +17,16 @@
 #include "conforma/standard_profiles.hpp"
 #include "conforma/wear_simulation.hpp"
 #include "conforma/wheel_contact.hpp"
+#include "pipeline_test_geometry.hpp"
 #include "kp_test_patches.hpp"
 
 using namespace conforma;
 
 namespace {
 
-// New S1002 on 60E1 at 1:40 (the shared geometry of the pipeline tests).
-const WheelsetTrackGeometry& Geometry() {
-  static const WheelsetTrackGeometry g(MakeSymmetricTrack(MakeS1002(), MakeRail(RailSection::R60E1, 0.0),
-                                                          rail_inclination_1in40()));
-  return g;
-}
-WheelsetVelocity Rolling() { return {2.0, 0.0, 0.0, 2.0 / 0.46}; }
-WheelsetPose Pose(double y_mm, double yaw_mrad = 0.0) {
-  const EquilibriumResult e = Geometry().SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3);
-  EXPECT_EQ(e.status, EquilibriumStatus::Converged);
-  return e.pose;
-}
+const WheelsetTrackGeometry& Geometry() { return test::PipelineGeometry(); }
+using test::Pose;
+using test::Rolling;
 
 // given_creepages: the same uniform creepages for every model (compares the contact models, not the creepage
 // computation: the conformal model takes per-strip kinematic creepages, the others the reference point's)

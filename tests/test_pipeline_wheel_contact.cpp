@@ -7,21 +7,14 @@
 #include "conforma/error.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/wheel_contact.hpp"
+#include "pipeline_test_geometry.hpp"
 
 using namespace conforma;
 
 namespace {
-const WheelsetTrackGeometry& Geometry() {
-  static const WheelsetTrackGeometry g(MakeSymmetricTrack(MakeS1002(), MakeRail(RailSection::R60E1, 0.0),
-                                                          rail_inclination_1in40()));
-  return g;
-}
-WheelsetVelocity Rolling() { return {2.0, 0.0, 0.0, 2.0 / 0.46}; }
-WheelsetPose Pose(double y_mm, double yaw_mrad) {
-  const EquilibriumResult e = Geometry().SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3);
-  EXPECT_EQ(e.status, EquilibriumStatus::Converged);
-  return e.pose;
-}
+const WheelsetTrackGeometry& Geometry() { return test::PipelineGeometry(); }
+using test::Pose;
+using test::Rolling;
 const ContactModel kModels[] = {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal};
 }  // namespace
 
