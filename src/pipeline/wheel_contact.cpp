@@ -107,6 +107,12 @@ PatchFrame FrameOf(const PatchGeometry& patch) {
   return {Eigen::Vector3d(0.0, n.x(), n.y()), Eigen::Vector3d(0.0, n.y(), -n.x())};
 }
 
+// Frame of a Hertz patch at a rigid contact point: rail normal (-sin delta, cos delta) in (eta, z).
+PatchFrame FrameOfContactAngle(double contact_angle_rad) {
+  const double sd = std::sin(contact_angle_rad), cd = std::cos(contact_angle_rad);
+  return {Eigen::Vector3d(0.0, -sd, cd), Eigen::Vector3d(0.0, cd, sd)};
+}
+
 // The KP options of `model` (a KP model; anything else gives unused planar options).
 KpOptions KpOptionsFor(const WheelContactOptions& o, ContactModel model) {
   if (model != ContactModel::Kp && model != ContactModel::Kpec && model != ContactModel::Conformal)
@@ -120,8 +126,16 @@ KpOptions KpOptionsFor(const WheelContactOptions& o, ContactModel model) {
 NormalSolution SolveHertzPatch(const RigidContactPoint& point, double approach_m, const Material& material) {
   NormalSolution out;
   if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
-  const HertzResult h = SolveHertzForApproach(point.hertz_A_per_m, point.hertz_B_per_m, approach_m, material);
-  out.status = to_string(h.status);
+  // Near-conformal points (flange root against the gauge corner) have a relative lateral curvature B <= 0,
+  // where Hertz has no solution. Dropping such a point would make the wheel's forces jump as the point's B
+  // crosses zero; instead B is raised to kMinLateralCurvatureRatio * A (semi-axis ratio b/a ~ 3.6) and the
+  // patch is flagged "hertz_regularised". The conformal models treat these patches properly.
+  constexpr double kMinLateralCurvatureRatio = 0.1;
+  const double B_min = kMinLateralCurvatureRatio * point.hertz_A_per_m;
+  const bool regularised = point.hertz_A_per_m > 0.0 && point.hertz_B_per_m < B_min;
+  const HertzResult h = SolveHertzForApproach(point.hertz_A_per_m, regularised ? B_min : point.hertz_B_per_m,
+                                              approach_m, material);
+  out.status = regularised && h.status == HertzStatus::Ok ? "hertz_regularised" : to_string(h.status);
   if (h.status != HertzStatus::Ok) return out;
   out.in_contact = true;
   out.hertz = h;
@@ -268,22 +282,58 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
                             : FindContactCandidates(geometry, side, pose, candidate_options);
   if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return stage;
   report.pose = candidates.pose;
-  const size_t n = candidates.candidates.size();
-
-  // Hertz (and auto, which may choose Hertz): the rigid contact point (smallest gap) inside each region.
+  // Hertz (and auto, which may choose Hertz): the rigid contact points (gap minima) inside each region.
   std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
-  hertz_points.resize(n);
   if (options.model == ContactModel::Hertz || options.model == ContactModel::Auto) {
-    const WheelContactResult rigid = geometry.RigidContact(side, candidates.pose);
-    for (size_t j = 0; j < n; ++j) {
-      const ContactCandidate& c = candidates.candidates[j];
-      hertz_points[j] = c.reference;
-      double best = 1e300;
-      for (const RigidContactPoint& p : rigid.points)
-        if (p.rail_s_m >= c.region_start_s_m && p.rail_s_m <= c.region_end_s_m && p.gap_m < best)
-          best = p.gap_m, hertz_points[j] = p;
+    // Multi-Hertz (physics-reference §1): one ellipse per rigid gap minimum of the wheel at first touch, each
+    // with its own approach; the interpenetration regions only bracket the push-down. Taking one point per
+    // region at the pushed pose instead made the wheel's forces jump whenever two regions merged (flange face
+    // and flange root, tread and flange) or a pushed minimum slid into the conformal flange root, which
+    // stalled the quasi-static curving solve. A minimum enters (RigidContact's 2 mm window) with a positive gap,
+    // i.e. without force, so the forces stay continuous in the pose. `auto` keeps one patch per region and
+    // takes the region's deepest of these points when it chooses Hertz.
+    WheelsetPose touching = pose;
+    double touch_gap = 0.0, touch_y = 0.0;
+    if (geometry.MinimumVerticalGap(side, pose, &touch_gap, &touch_y)) touching.vertical_m -= touch_gap;
+    const double push = touching.vertical_m - candidates.pose.vertical_m;  // candidates' pose below first touch
+    std::vector<RigidContactPoint> points;  // gaps along the normal at the candidates' pose
+    for (const RigidContactPoint& p : geometry.RigidContact(side, touching).points) {  // smallest gap first
+      bool duplicate = false;  // two coarse minima refined to the same point
+      for (const RigidContactPoint& q : points) duplicate |= std::fabs(q.rail_s_m - p.rail_s_m) < 0.05e-3;
+      if (duplicate) continue;
+      points.push_back(p);
+      points.back().gap_m = p.gap_m - push * std::cos(p.contact_angle_rad);
     }
+    // the region holding a point, or the nearest one
+    auto region_of = [&](const RigidContactPoint& p) {
+      size_t best = 0;
+      double best_distance = 1e300;
+      for (size_t j = 0; j < candidates.candidates.size(); ++j) {
+        const ContactCandidate& c = candidates.candidates[j];
+        const double d = std::max({0.0, c.region_start_s_m - p.rail_s_m, p.rail_s_m - c.region_end_s_m});
+        if (d < best_distance) best_distance = d, best = j;
+      }
+      return best;
+    };
+    // along the rail (gauge side first), as the regions
+    std::sort(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.rail_s_m < y.rail_s_m; });
+    if (options.model == ContactModel::Hertz && !points.empty()) {
+      std::vector<ContactCandidate> split;  // only the region's bookkeeping is used for a Hertz patch
+      for (const RigidContactPoint& p : points) split.push_back(candidates.candidates[region_of(p)]);
+      candidates.candidates = std::move(split);
+      hertz_points = points;
+    } else {
+      for (const ContactCandidate& c : candidates.candidates) hertz_points.push_back(c.reference);
+      std::vector<double> deepest(candidates.candidates.size(), 1e300);
+      for (const RigidContactPoint& p : points) {
+        const size_t j = region_of(p);
+        if (p.gap_m < deepest[j]) hertz_points[j] = p, deepest[j] = p.gap_m;
+      }
+    }
+  } else {
+    hertz_points.resize(candidates.candidates.size());
   }
+  const size_t n = candidates.candidates.size();
   // The model of each patch: the chosen one, or per patch from the undeformed geometry at the candidates' pose
   // (auto, model_selection.hpp; the approach there is the Hertz push-down in load control).
   std::vector<ContactModel>& patch_model = stage.patch_model;
@@ -301,7 +351,9 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   }
   std::vector<PatchFrame>& frames = stage.frames;
   frames.resize(n);
-  for (size_t j = 0; j < n; ++j) frames[j] = FrameOf(candidates.candidates[j].patch);
+  for (size_t j = 0; j < n; ++j)
+    frames[j] = patch_model[j] == ContactModel::Hertz ? FrameOfContactAngle(hertz_points[j].contact_angle_rad)
+                                                       : FrameOf(candidates.candidates[j].patch);
   std::vector<KpOptions> kp_options(n);
   for (size_t j = 0; j < n; ++j) kp_options[j] = KpOptionsFor(options, patch_model[j]);
 
@@ -391,8 +443,8 @@ WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTr
     p.alpha_c_deg = s.alpha_c_deg;
     p.is_conformal = s.is_conformal;
     p.contact_angle_rad = hertz ? point.contact_angle_rad : c.patch.contact_angle_rad;
-    p.y_contact_rail_m = c.patch.reference_point_m.x();
-    p.z_contact_rail_m = c.patch.reference_point_m.y();
+    p.y_contact_rail_m = hertz ? point.rail_profile_m.x() : c.patch.reference_point_m.x();
+    p.z_contact_rail_m = hertz ? point.rail_profile_m.y() : c.patch.reference_point_m.y();
     p.y_contact_wheel_m = point.wheel_profile_m.x();
     p.reference_s_on_rail_m = hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m;
     p.rolling_radius_m = point.rolling_radius_m;
