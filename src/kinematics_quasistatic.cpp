@@ -32,6 +32,7 @@ void QuasiStaticOptions::validate() const {
   require_positive(residual_tolerance, "residual_tolerance");
   if (continuation_steps < 0) throw InputError("option 'continuation_steps' must be >= 0");
   require_positive(flange_contact_angle_rad, "flange_contact_angle_rad");
+  require_non_negative(derailment_margin_m, "derailment_margin_m");
   require_positive(difference_step, "difference_step");
 }
 
@@ -54,6 +55,8 @@ struct BogieContext {
   std::array<double, 2> Q{{0.0, 0.0}};  // [Left, Right]
   double half_wheelbase = 1.25, kx = 0.0, ky = 0.0, bx = 1.0, k_sec_yaw = 0.0;
   double m_w = 0.0, m_b_plus_c = 0.0, carbody_yaw = 0.0;
+  // Admissible wheelset shifts: up to derailment_margin_m beyond the flange-contact shift on either side.
+  double y_min = -std::numeric_limits<double>::infinity(), y_max = std::numeric_limits<double>::infinity();
   int contact_evaluations = 0;
 };
 
@@ -167,7 +170,8 @@ class BogieCost : public ceres::SizedCostFunction<kUnknowns, kUnknowns> {
 };
 
 struct AttemptResult {
-  bool converged = false;
+  bool converged = false;   // residual reached at an admissible (not derailed) state
+  bool admissible = false;  // every wheelset within [y_min, y_max]
   double max_residual = std::numeric_limits<double>::infinity();
   int iterations = 0;
 };
@@ -212,8 +216,16 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
     out.max_residual = 0.0;
     for (double v : r) out.max_residual = std::max(out.max_residual, std::fabs(v));
   }
-  out.converged = out.max_residual <= ctx.options->residual_tolerance;
+  out.admissible = true;
+  for (int j = 0; j < 2; ++j) out.admissible &= p[3 * j] * 1e-3 >= ctx.y_min && p[3 * j] * 1e-3 <= ctx.y_max;
+  out.converged = out.admissible && out.max_residual <= ctx.options->residual_tolerance;
   return out;
+}
+
+// An admissible attempt beats a derailed one; otherwise the smaller residual wins.
+bool Better(const AttemptResult& x, const AttemptResult& y) {
+  if (x.admissible != y.admissible) return x.admissible;
+  return x.max_residual < y.max_residual;
 }
 
 // Radial-steering start: lateral shift towards the outer rail where the rigid rolling-radius difference gives
@@ -251,6 +263,36 @@ void InitialGuess(const BogieContext& ctx, double* p) {
   p[4] = 1e3 * (ctx.c * a);
   p[6] = 1e3 * (y_guess + 0.5 * ctx.c * a * a);
   p[7] = 0.0;
+}
+
+// Lateral shift (signed, towards the rail on side `dir` = -1 right / +1 left) at which the flange of that side
+// becomes the smallest rigid gap of the centred-yaw wheelset (scan in 0.1 mm steps, up to 20 mm).
+double FlangeShift(const BogieContext& ctx, double dir) {
+  const Side side = dir < 0.0 ? Side::Right : Side::Left;
+  WheelsetPose guess;
+  for (int k = 1; k <= 200; ++k) {
+    const double y = dir * 0.1e-3 * k;
+    const EquilibriumResult eq = ctx.geometry->SolveRigidEquilibrium(y, 0.0, guess);
+    if (eq.status != EquilibriumStatus::Converged) continue;
+    guess = eq.pose;
+    const auto& pts = eq.contact.wheel[side_index(side)].points;
+    if (!pts.empty() && pts.front().contact_angle_rad > ctx.options->flange_contact_angle_rad) return y;
+  }
+  return dir * 20e-3;
+}
+
+// A start with the wheelsets at given lateral shifts (leading y0, trailing y1), parallel to the frame
+// (no suspension deflection): psi_b = (y0 - y1) / (2 a), y_b = (y0 + y1) / 2 + c a^2 / 2, psi_j = psi_b - c x_j.
+void WheelsetShiftGuess(const BogieContext& ctx, double y0, double y1, double* p) {
+  std::fill(p, p + kUnknowns, 0.0);
+  const double a = ctx.half_wheelbase;
+  const double psib = (y0 - y1) / (2.0 * a);
+  p[0] = 1e3 * y0;
+  p[3] = 1e3 * y1;
+  p[1] = 1e3 * (psib - ctx.c * a);
+  p[4] = 1e3 * (psib + ctx.c * a);
+  p[6] = 1e3 * (0.5 * (y0 + y1) + 0.5 * ctx.c * a * a);
+  p[7] = 1e3 * psib;
 }
 
 }  // namespace
@@ -307,6 +349,9 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   base.k_sec_yaw = vehicle.secondary_yaw_stiffness_Nm_rad;
   base.m_w = vehicle.wheelset_mass_kg;
   base.m_b_plus_c = vehicle.bogie_frame_mass_kg + vehicle.carbody_mass_per_bogie_kg;
+  const double y_right = FlangeShift(base, -1.0), y_left = FlangeShift(base, 1.0);
+  base.y_min = y_right - options.derailment_margin_m;
+  base.y_max = y_left + options.derailment_margin_m;
 
   // Bogies with the same carbody yaw have the same equilibrium: solve each distinct case once.
   std::map<double, std::pair<BogieQuasiStaticReport, std::array<double, kUnknowns>>> solved;
@@ -345,10 +390,30 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
           a = SolveBogie(ctx, p.data());
           rep.iterations += a.iterations;
         }
-        if (!(a.max_residual <= direct_result.max_residual)) p = direct, a = direct_result;  // keep the better one
+        if (Better(direct_result, a)) p = direct, a = direct_result;  // keep the better one
+        ctx.c = c;
+        ctx.a_nc = base.a_nc;
+        ctx.carbody_yaw = carbody_yaw;
+      }
+      // Further starts in the flange regimes of a stiff bogie in a sharp curve, where the two starts above can
+      // stall in a local minimum of the residual (the flange forces rise by ~2 Q0 within 0.05 mm): leading
+      // wheelset at the outer flange with the trailing one at the inner flange, centred, or at the outer flange.
+      if (!a.converged && options.multi_start && c != 0.0) {
+        const double out = c > 0.0 ? -1.0 : 1.0;
+        const double y_out = out < 0.0 ? y_right : y_left, y_in = out < 0.0 ? y_left : y_right;
+        for (const double y1 : {y_in, 0.0, y_out}) {
+          std::array<double, kUnknowns> q{};
+          WheelsetShiftGuess(ctx, y_out, y1, q.data());
+          const AttemptResult attempt = SolveBogie(ctx, q.data());
+          rep.iterations += attempt.iterations;
+          ++rep.extra_starts;
+          if (Better(attempt, a)) p = q, a = attempt;
+          if (a.converged) break;
+        }
       }
       rep.max_residual = a.max_residual;
       rep.contact_evaluations = ctx.contact_evaluations;
+      rep.derailed = !a.admissible;
       rep.status = a.converged ? QuasiStaticStatus::Converged
                    : std::isfinite(a.max_residual) ? QuasiStaticStatus::NotConverged
                                                     : QuasiStaticStatus::NoContact;
@@ -375,6 +440,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
     double r[kUnknowns];
     Suspension s{};
     BogieResiduals(ctx, p.data(), f, r, &s);
+    for (int k = 0; k < kUnknowns; ++k) result.bogies.back().residuals[k] = r[k];
     for (int j = 0; j < 2; ++j) {
       WheelsetQuasiStaticReport w;
       w.wheelset = 2 * b + j;

@@ -32,7 +32,8 @@
 //   Initial guess: radial-steering estimate (wheelsets parallel to the frame, frame on the chord, y where the
 //   rolling radius difference Delta r(y) of the rigid equilibrium gives pure rolling, 2 b0 r0 / R, clipped at
 //   flange contact). If the residual is not reached, a continuation in c = 1/R from the tangent solution; the
-//   better of the two attempts is kept.
+//   better of the two attempts is kept; if neither converged, up to three more starts in the flange regimes
+//   (QuasiStaticOptions::multi_start) and the best attempt overall is kept.
 //   LIMITATION: the contact forces are discontinuous in (y, psi) where the contact-point set changes
 //   discretely: a Hertz contact point jumping between two rigid minima (S1002/60E1 at 1:40 near |y| = 0.22 mm),
 //   or two interpenetration regions merging into one patch (S1002/50E4 at 1:20 near y = -4.63 mm: the second
@@ -46,6 +47,7 @@
 // k = 2 pi / L_K, L_K = 2 pi sqrt(r0 b0 / lambda) with the equivalent conicity lambda = -Delta r(-A) / (2 A) of
 // the rigid equilibrium, at tangent_phases equally spaced phases theta (theta = 0 is the centred wheelset) with
 // equal weights 1 / tangent_phases (the time average over one period). A = 0 gives the single centred sample.
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -74,6 +76,12 @@ struct QuasiStaticOptions {
   int max_iterations = 60;                 // LM iterations per attempt
   double residual_tolerance = 1e-5;        // max |scaled residual| accepted as converged
   int continuation_steps = 4;              // steps in c when the direct solve fails (0: none)
+  // When both fail: starts with the leading wheelset at the outer flange and the trailing one at the inner
+  // flange, centred, or at the outer flange (the best attempt is kept).
+  bool multi_start = true;
+  // A solution with a wheelset more than this beyond its flange-contact shift (the flange of that side becomes
+  // the smallest rigid gap) has climbed the flange: it is never Converged, and any admissible attempt beats it.
+  double derailment_margin_m = 3e-3;
   double flange_contact_angle_rad = 0.5;   // a patch steeper than this is a flange contact
   // Forward-difference steps of the scaled unknowns (mm, mrad, 1e-3 relative axle speed).
   double difference_step = 1e-3;
@@ -115,7 +123,12 @@ struct BogieQuasiStaticReport {
   int iterations = 0;                     // LM iterations (all attempts)
   int contact_evaluations = 0;            // SolveWheelContact calls
   double max_residual = 0.0;              // max |scaled residual| at the solution
+  // The 8 scaled residuals at the solution: per wheelset j = 0, 1 lateral force / Q0, yaw moment / (Q0 b0),
+  // axle torque / (Q0 r0); then the frame's lateral force / Q0 and yaw moment / (Q0 b0).
+  std::array<double, 8> residuals{};
   bool continuation_used = false;
+  int extra_starts = 0;                   // multi-start attempts made
+  bool derailed = false;                  // the kept attempt has a wheelset beyond derailment_margin_m
 };
 
 struct QuasiStaticResult {

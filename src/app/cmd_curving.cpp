@@ -47,6 +47,10 @@ void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const 
   for (const BogieQuasiStaticReport& b : r.bogies)
     std::printf("    bogie %d %s: max residual %.2e, %d iterations, continuation %s\n", b.bogie, to_string(b.status),
                 b.max_residual, b.iterations, b.continuation_used ? "yes" : "no");
+  for (const BogieQuasiStaticReport& b : r.bogies)
+    std::printf("    bogie %d residuals: ws0 %+.1e %+.1e %+.1e  ws1 %+.1e %+.1e %+.1e  frame %+.1e %+.1e\n", b.bogie,
+                b.residuals[0], b.residuals[1], b.residuals[2], b.residuals[3], b.residuals[4], b.residuals[5],
+                b.residuals[6], b.residuals[7]);
   for (const WheelsetQuasiStaticReport& w : r.wheelsets)
     std::printf("    ws %d: y %+7.3f mm psi %+7.3f mrad  Y/Q L %+.2f R %+.2f  max angle L %.0f R %.0f deg\n", w.wheelset,
                 w.pose.lateral_m * 1e3, w.pose.yaw_rad * 1e3, w.wheel[0].y_over_q, w.wheel[1].y_over_q,

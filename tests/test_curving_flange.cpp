@@ -1,0 +1,101 @@
+// Flange contact in the curving solve: the Hertz wheel forces stay continuous as the flange comes into contact
+// (multi-Hertz, wheel_contact.cpp), and the quasi-static solve of a stiff bogie in a sharp curve finds the
+// flange-contact equilibrium (multi-start, derailed attempts rejected; kinematics_quasistatic.hpp).
+// Set-up: the Aosta scenario (ALn 501, S1002 on 60E1 at 1:20, r0 = 430 mm, friction 0.4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "conforma/kinematics_quasistatic.hpp"
+#include "conforma/scenario.hpp"
+#include "conforma/wear_simulation.hpp"
+#include "conforma/wheel_contact.hpp"
+
+namespace conforma {
+namespace {
+
+const Scenario& Aosta() {
+  static const Scenario sc = LoadScenario(CONFORMA_SOURCE_DIR "/scenarios/aosta_aln501.yaml");
+  return sc;
+}
+
+const WheelsetTrackGeometry& Geometry() {
+  static const WheelsetTrackGeometry g(Aosta().MakeTrackSetup());
+  return g;
+}
+
+// Lateral force (track frame, + towards the left rail) of both wheels at the rigid equilibrium of (y, psi),
+// static wheel loads, curve R 150 m at 55 km/h.
+double WheelsetLateralForce(double y_m, double psi_rad, double* max_right_angle_rad) {
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(y_m, psi_rad);
+  EXPECT_EQ(eq.status, EquilibriumStatus::Converged);
+  WheelContactOptions o;
+  o.model = ContactModel::Hertz;
+  o.material = Aosta().material;
+  o.friction_coefficient = Aosta().friction_coefficient;
+  o.vertical_load_N = Aosta().vehicle.static_wheel_load_N(9.81);
+  WheelsetVelocity v;
+  v.forward_speed_m_s = 55.0 / 3.6;
+  v.yaw_rate_rad_s = v.forward_speed_m_s / 150.0;
+  v.axle_angular_velocity_rad_s = v.forward_speed_m_s / Aosta().vehicle.nominal_wheel_radius_m;
+  double Y = 0.0;
+  *max_right_angle_rad = 0.0;
+  for (Side side : {Side::Left, Side::Right}) {
+    const WheelContactReport r = SolveWheelContact(Geometry(), side, eq.pose, v, o);
+    EXPECT_EQ(r.status, WheelContactStatus::Ok);
+    Y += side_sign(side) * r.lateral_force_N;
+    if (side == Side::Right)
+      for (const PatchReport& p : r.patches) *max_right_angle_rad = std::max(*max_right_angle_rad, p.contact_angle_rad);
+  }
+  return Y;
+}
+
+TEST(CurvingFlange, HertzLateralForceRisesMonotonicallyIntoFlangeContact) {
+  // Leading wheelset at an angle of attack of -8.7 mrad moved towards the right (outer) rail through the flange
+  // root (~25 deg) onto the flange face (70 deg, lead ~10 mm). The rigid contact moves continuously; the wheel
+  // forces must follow. One Hertz point per interpenetration region made Y drop by 0.85 Q0 within 5 um here
+  // (the flange point was lost when its region merged with the flange root's, or when its pushed point had
+  // B <= 0) and stalled the curving solve.
+  const double Q0 = Aosta().vehicle.static_wheel_load_N(9.81);
+  double previous = 0.0, angle = 0.0, max_angle = 0.0;
+  for (int k = 0; k <= 50; ++k) {
+    const double y = -6.20e-3 - 5e-6 * k;
+    const double Y = WheelsetLateralForce(y, -8.7e-3, &angle) / Q0;
+    max_angle = std::max(max_angle, angle);
+    if (k > 0) {
+      EXPECT_GE(Y, previous - 0.02) << "y = " << y * 1e3 << " mm";  // pushed harder towards the flange
+    }
+    previous = Y;
+  }
+  EXPECT_GT(max_angle, 69.0 * M_PI / 180.0);  // the flange face was reached
+  EXPECT_GT(previous, 1.8);                   // and carries the load: Y / Q0 ~ tan(70 deg) minus the creep forces
+}
+
+TEST(CurvingFlange, StiffBogieInSharpCurvesConvergesAtTheFlange) {
+  // R 150 m and R 200 m (classes 1 and 8, 21 % of the line): the direct and continuation starts stalled here
+  // (residual 0.2-0.4 Q0) before the multi-start; an attempt beyond the flange (|y| 17-65 mm) must never win.
+  const QuasiStaticOptions o = ScenarioQuasiStaticOptions(Aosta(), ContactModel::Hertz);
+  const double flange = std::fabs(FlangeContactShift(Geometry(), 1.0));
+  for (int index : {1, 8}) {
+    const TrackClass& tc = Aosta().classes[index];
+    const QuasiStaticResult r = SolveQuasiStaticCurving(Aosta().vehicle, Geometry(), tc, o);
+    ASSERT_EQ(r.status, QuasiStaticStatus::Converged) << tc.name;
+    for (const BogieQuasiStaticReport& b : r.bogies) {
+      EXPECT_FALSE(b.derailed) << tc.name;
+      for (double res : b.residuals) EXPECT_LE(std::fabs(res), o.residual_tolerance) << tc.name;
+    }
+    for (const WheelsetQuasiStaticReport& w : r.wheelsets)
+      EXPECT_LE(std::fabs(w.pose.lateral_m), flange + o.derailment_margin_m) << tc.name << " wheelset " << w.wheelset;
+    // The leading wheelset of each bogie runs on the outer (right) flange, below Nadal's climbing limit
+    // (tan 70 deg - mu) / (1 + mu tan 70 deg) = 1.12 at mu = 0.4.
+    for (int j : {0, 2}) {
+      const WheelQuasiStaticReport& outer = r.wheelsets[j].wheel[side_index(Side::Right)];
+      EXPECT_TRUE(outer.flange_contact) << tc.name << " wheelset " << j;
+      EXPECT_GT(outer.y_over_q, 0.0) << tc.name;
+      EXPECT_LT(outer.y_over_q, 1.12) << tc.name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace conforma
