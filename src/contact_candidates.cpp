@@ -143,7 +143,12 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
       merged.push_back(r);
     }
   }
-  for (const Region& r : merged) out.candidates.push_back(build_patch(g, side, f, pose, r.eta_a, r.eta_b, r.seed, o));
+  for (const Region& r : merged) {
+    ContactCandidate c = build_patch(g, side, f, pose, r.eta_a, r.eta_b, r.seed, o);
+    // a region whose strips the silhouette cannot reach along the rail normals (a flange pressed deep into the
+    // gauge face, elastic flange) gives no patch geometry: left out rather than passed on empty
+    if (c.patch.s_m.size() >= 2) out.candidates.push_back(std::move(c));
+  }
   std::sort(out.candidates.begin(), out.candidates.end(),
             [](const auto& p, const auto& q) { return p.region_start_s_m < q.region_start_s_m; });
   if (!out.candidates.empty()) out.status = CandidateStatus::Ok;
@@ -157,19 +162,22 @@ CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Sid
   material.validate();
   WheelsetPose pose = pose_in;
   double gap, y_contact;
-  if (!g.MinimumVerticalGap(side, pose, &gap, &y_contact)) {
+  if (!g.MinimumVerticalGap(side, pose, &gap, &y_contact, o.max_touching_contact_angle_rad)) {
     CandidateResult none;
     none.pose = pose;
     return none;
   }
   pose.vertical_m -= gap;  // touching
+  const bool elastic_flange = o.max_touching_contact_angle_rad < WheelsetTrackGeometry::kAllContactAngles;
   const WheelContactResult rigid = g.RigidContact(side, pose);
   struct Point { double vertical_gap, cos_delta, A, B; };
   std::vector<Point> pts;
   for (const auto& c : rigid.points) {
     // B <= 0 (conformal): the Hertz estimate of the approach uses a small positive B instead
     const double B = std::max(c.hertz_B_per_m, 1e-3 * c.hertz_A_per_m);
-    pts.push_back({std::max(0.0, c.vertical_gap_m), std::cos(c.contact_angle_rad), c.hertz_A_per_m, B});
+    // (a flange pressed against the rail with the elastic-flange reference: negative vertical gap)
+    pts.push_back({elastic_flange ? c.vertical_gap_m : std::max(0.0, c.vertical_gap_m), std::cos(c.contact_angle_rad),
+                   c.hertz_A_per_m, B});
   }
   // Hertz: N = C_H delta^(3/2) with C_H fixed by A, B and the material (hertz.hpp); one solve per point
   std::vector<double> stiffness(pts.size(), 0.0);
@@ -189,13 +197,16 @@ CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Sid
     }
     return total;
   };
-  double lo = 0.0, hi = 1e-4;
-  while (vertical_force(hi, nullptr) < vertical_load_N && hi < 0.05) hi *= 2.0;
-  for (int it = 0; it < 100 && (hi - lo) > o.load_tolerance * hi; ++it) {
+  // below every point's vertical gap nothing touches: the push-down lies above (negative: a lift)
+  double lo = 0.0;
+  for (const Point& p : pts) lo = std::min(lo, p.vertical_gap);
+  double step = 1e-4, hi = lo + step;
+  while (vertical_force(hi, nullptr) < vertical_load_N && step < 0.05) step *= 2.0, hi = lo + step;
+  for (int it = 0; it < 100 && (hi - lo) > o.load_tolerance * std::max(std::fabs(hi), std::fabs(lo)); ++it) {
     const double mid = 0.5 * (lo + hi);
     if (vertical_force(mid, nullptr) < vertical_load_N) lo = mid; else hi = mid;
   }
-  const double dz = vertical_load_N > 0.0 ? 0.5 * (lo + hi) : 0.0;
+  const double dz = vertical_load_N > 0.0 ? 0.5 * (lo + hi) : std::min(0.0, lo);
   std::vector<double> forces;
   vertical_force(dz, &forces);
   require_positive(o.penetration_factor, "CandidateOptions.penetration_factor");

@@ -26,6 +26,44 @@ double WheelsetTrackGeometry::VerticalGapAt(Side side, const Frame& f, double y_
   return p(2) - zr;
 }
 
+// Vertical gap at the rail point where the gauge corner's contact angle reaches `angle` (the first such point
+// from the rail head towards the gauge side), with the silhouette's y_w and eta there. False when the rail
+// never gets that steep or the silhouette does not reach the point.
+bool WheelsetTrackGeometry::LimitAngleGap(Side side, const Frame& f, double angle, double* gap, double* y_w,
+                                          double* eta) const {
+  const GraphTable& rt = RailTable(side);
+  const double slope = std::tan(angle);
+  // rail head top: the highest node; the gauge side is towards smaller eta (positive slope)
+  const size_t top = static_cast<size_t>(std::max_element(rt.z.begin(), rt.z.end()) - rt.z.begin());
+  double eta_b = std::numeric_limits<double>::quiet_NaN();
+  for (size_t i = top; i > 0; --i) {
+    if (rt.dz[i - 1] >= slope && rt.dz[i] < slope) {
+      const double t = (slope - rt.dz[i]) / (rt.dz[i - 1] - rt.dz[i]);
+      eta_b = rt.y0 + rt.h * (static_cast<double>(i) - t);
+      break;
+    }
+  }
+  if (!std::isfinite(eta_b)) return false;
+  // silhouette point facing eta_b: eta(y_w) ~ centre + wheel origin + y_w (+ small roll and yaw terms), secant
+  double y0 = eta_b - f.centre(1) - wheel_origin_eta_, e0 = 0.0;
+  double g0 = VerticalGapAt(side, f, y0, &e0);
+  if (!std::isfinite(g0)) return false;
+  double y1 = y0 - (e0 - eta_b), e1 = 0.0;
+  for (int it = 0; it < 20; ++it) {
+    const double g1 = VerticalGapAt(side, f, y1, &e1);
+    if (!std::isfinite(g1)) return false;
+    if (std::abs(e1 - eta_b) < 1e-12 || e1 == e0) {
+      *gap = g1;
+      *y_w = y1;
+      *eta = e1;
+      return std::abs(e1 - eta_b) < 1e-9;
+    }
+    const double y2 = y1 - (e1 - eta_b) * (y1 - y0) / (e1 - e0);
+    y0 = y1, e0 = e1, y1 = y2;
+  }
+  return false;
+}
+
 // Local minima of the vertical gap z_wheel(eta) - z_rail(eta) along the wheel silhouette.
 static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f,
                             double window, std::vector<VerticalMinimum>* out) {
@@ -119,13 +157,34 @@ std::vector<WheelsetTrackGeometry::VerticalGapMinimum> WheelsetTrackGeometry::Ve
 }
 
 bool WheelsetTrackGeometry::MinimumVerticalGap(Side side, const WheelsetPose& pose, double* gap_m,
-                                               double* track_y_m) const {
+                                               double* track_y_m, double max_contact_angle_rad) const {
   const Frame f = SideFrame(side, pose);
   std::vector<VerticalMinimum> minima;
-  vertical_minima(*this, side, f, 0.0, &minima);
+  const bool elastic_flange = max_contact_angle_rad < kAllContactAngles;
+  // with the angle filter every minimum is refined: the one that counts need not be the deepest
+  vertical_minima(*this, side, f, elastic_flange ? std::numeric_limits<double>::infinity() : 0.0, &minima);
   if (minima.empty()) return false;
-  const auto best = std::min_element(minima.begin(), minima.end(),
-                                     [](const auto& a, const auto& b) { return a.gap < b.gap; });
+  auto deeper = [](const auto& a, const auto& b) { return a.gap < b.gap; };
+  auto best = std::min_element(minima.begin(), minima.end(), deeper);
+  if (elastic_flange) {
+    // Smallest vertical gap over the part of the rail with a contact angle up to the limit: its local minima
+    // there and its boundary, where the gauge corner reaches the limit angle. The boundary keeps the minimum
+    // continuous in the pose when a minimum of the allowed part merges into the flange's region.
+    auto best_touching = minima.end();
+    for (auto m = minima.begin(); m != minima.end(); ++m) {
+      double zr, mr;
+      if (!RailHeight(side, m->eta, &zr, &mr) || std::atan(mr) > max_contact_angle_rad) continue;
+      if (best_touching == minima.end() || m->gap < best_touching->gap) best_touching = m;
+    }
+    VerticalMinimum boundary;
+    const bool has_boundary = LimitAngleGap(side, f, max_contact_angle_rad, &boundary.gap, &boundary.y_w, &boundary.eta);
+    if (best_touching != minima.end() && (!has_boundary || best_touching->gap <= boundary.gap)) {
+      best = best_touching;
+    } else if (has_boundary) {
+      minima.push_back(boundary);
+      best = minima.end() - 1;
+    }
+  }
   *gap_m = best->gap;
   *track_y_m = side_sign(side) * best->eta;
   return true;

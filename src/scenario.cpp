@@ -285,7 +285,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     throw InputError(source + ": YAML: " + e.what());
   }
   r.check_keys(root, "top level",
-               {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "wear_law",
+               {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "elastic_flange_deg", "wear_law",
                 "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv"});
   Scenario s;
   s.source = source;
@@ -345,6 +345,11 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   s.wear.wheel_material = s.material;
   s.wear.rail_material = s.material;
   if (root["friction"]) s.friction_coefficient = r.number(root["friction"], "friction");
+  if (root["elastic_flange_deg"]) {
+    const double deg = r.number(root["elastic_flange_deg"], "elastic_flange_deg");
+    if (!(deg > 0.0 && deg < 90.0)) r.fail("elastic_flange_deg", "must be between 0 and 90 degrees");
+    s.elastic_flange_angle_rad = deg * M_PI / 180.0;
+  }
   try {
     if (root["wear_law"]) {
       s.wear.wheel_law = LawFromName(r, r.text(root["wear_law"], "wear_law"));

@@ -29,11 +29,11 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
     WheelsetPose p = pose;
     p.roll_rad = phi;
     double gl, gr;
-    *ok = MinimumVerticalGap(Side::Left, p, &gl, &y_contact);
+    *ok = MinimumVerticalGap(Side::Left, p, &gl, &y_contact, options.max_touching_contact_angle_rad);
     if (!*ok) return 0.0;
     p.vertical_m -= gl;
     *z_star = p.vertical_m;
-    *ok = MinimumVerticalGap(Side::Right, p, &gr, &y_contact);
+    *ok = MinimumVerticalGap(Side::Right, p, &gr, &y_contact, options.max_touching_contact_angle_rad);
     return gr;
   };
   bool ok;
@@ -44,7 +44,8 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
     // which made Delta r(-y) differ from -Delta r(y) for a symmetric wheelset by up to 3 mm at the flange.
     double gap[2];
     for (int s = 0; s < 2; ++s) {
-      ok = MinimumVerticalGap(s == 0 ? Side::Left : Side::Right, pose, &gap[s], &y_contact);
+      ok = MinimumVerticalGap(s == 0 ? Side::Left : Side::Right, pose, &gap[s], &y_contact,
+                              options.max_touching_contact_angle_rad);
       if (!ok) {
         out.pose = pose;
         return out;

@@ -1,7 +1,8 @@
 // Flange contact in the curving solve: the Hertz wheel forces stay continuous as the flange comes into contact
 // (multi-Hertz, wheel_contact.cpp), and the quasi-static solve of a stiff bogie in a sharp curve finds the
 // flange-contact equilibrium (multi-start, derailed attempts rejected; kinematics_quasistatic.hpp).
-// Set-up: the Aosta scenario (ALn 501, S1002 on 60E1 at 1:20, r0 = 430 mm, friction 0.4).
+// Set-up: the Aosta scenario (ALn 501, S1002 on 60E1 at 1:20, r0 = 430 mm, its friction, elastic flange at 60 deg
+// in the curving solve; the first test's wheel forces use a rigid or an elastic flange as stated).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,11 +26,17 @@ const WheelsetTrackGeometry& Geometry() {
 }
 
 // Lateral force (track frame, + towards the left rail) of both wheels at the rigid equilibrium of (y, psi),
-// static wheel loads, curve R 150 m at 55 km/h.
-double WheelsetLateralForce(double y_m, double psi_rad, double* max_right_angle_rad) {
-  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(y_m, psi_rad);
-  EXPECT_EQ(eq.status, EquilibriumStatus::Converged);
+// static wheel loads, curve R 150 m at 55 km/h. elastic_flange_rad: WheelContactOptions::max_touching_contact_
+// angle_rad (and the same rule for the equilibrium); right_tread_N: vertical force of the right wheel's patches
+// below 0.5 rad.
+double WheelsetLateralForce(double y_m, double psi_rad, double* max_right_angle_rad, double elastic_flange_rad = 1e300,
+                            double* right_tread_N = nullptr, double* right_vertical_N = nullptr) {
+  EquilibriumOptions eo;
+  eo.max_touching_contact_angle_rad = elastic_flange_rad;
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(y_m, psi_rad, WheelsetPose{}, eo);
+  EXPECT_EQ(eq.status, EquilibriumStatus::Converged) << "y = " << y_m * 1e3 << " mm";
   WheelContactOptions o;
+  o.max_touching_contact_angle_rad = elastic_flange_rad;
   o.model = ContactModel::Hertz;
   o.material = Aosta().material;
   o.friction_coefficient = Aosta().friction_coefficient;
@@ -44,8 +51,13 @@ double WheelsetLateralForce(double y_m, double psi_rad, double* max_right_angle_
     const WheelContactReport r = SolveWheelContact(Geometry(), side, eq.pose, v, o);
     EXPECT_EQ(r.status, WheelContactStatus::Ok);
     Y += side_sign(side) * r.lateral_force_N;
-    if (side == Side::Right)
-      for (const PatchReport& p : r.patches) *max_right_angle_rad = std::max(*max_right_angle_rad, p.contact_angle_rad);
+    if (side != Side::Right) continue;
+    if (right_tread_N) *right_tread_N = 0.0;
+    if (right_vertical_N) *right_vertical_N = r.pressure_vertical_force_N;
+    for (const PatchReport& p : r.patches) {
+      *max_right_angle_rad = std::max(*max_right_angle_rad, p.contact_angle_rad);
+      if (right_tread_N && p.contact_angle_rad < 0.5) *right_tread_N += p.vertical_force_N;
+    }
   }
   return Y;
 }
@@ -71,6 +83,36 @@ TEST(CurvingFlange, HertzLateralForceRisesMonotonicallyIntoFlangeContact) {
   EXPECT_GT(previous, 1.8);                   // and carries the load: Y / Q0 ~ tan(70 deg) minus the creep forces
 }
 
+TEST(CurvingFlange, ElasticFlangeCarriesLateralForceWhileTheTreadStillCarriesLoad) {
+  // 0.05 mm past flange contact (y = -6.40 mm, angle of attack -8.7 mrad): with the rigid flange the wheel has
+  // already lifted onto its flange (all load at 70 deg, Y/Q0 at its plateau ~2.1), with the elastic flange the
+  // flange is pressed into the gauge corner and the tread still carries part of the load; both carry exactly
+  // the wheel load (load control) and the elastic forces rise monotonically into the flange.
+  const double Q0 = Aosta().vehicle.static_wheel_load_N(9.81);
+  const double elastic = 60.0 * M_PI / 180.0;
+  double angle = 0.0, tread = 0.0, vertical = 0.0;
+  const double rigid_Y = WheelsetLateralForce(-6.40e-3, -8.7e-3, &angle, 1e300, &tread, &vertical) / Q0;
+  EXPECT_EQ(tread, 0.0);
+  EXPECT_NEAR(vertical, Q0, 1e-5 * Q0);
+  EXPECT_GT(rigid_Y, 2.0);
+  const double elastic_Y = WheelsetLateralForce(-6.40e-3, -8.7e-3, &angle, elastic, &tread, &vertical) / Q0;
+  EXPECT_GT(angle, 69.0 * M_PI / 180.0);  // the flange face carries
+  EXPECT_GT(tread, 0.05 * Q0);            // and so does the tread
+  EXPECT_NEAR(vertical, Q0, 1e-5 * Q0);
+  EXPECT_GT(elastic_Y, 0.3);
+  EXPECT_LT(elastic_Y, rigid_Y);
+  double previous = 0.0;
+  for (int k = 0; k <= 40; ++k) {
+    const double y = -6.20e-3 - 1e-5 * k;
+    const double Y = WheelsetLateralForce(y, -8.7e-3, &angle, elastic) / Q0;
+    if (k > 0) {
+      EXPECT_GE(Y, previous - 0.02) << "y = " << y * 1e3 << " mm";
+    }
+    previous = Y;
+  }
+  EXPECT_GT(previous, 2.0);  // 0.4 mm past contact: the flange carries the whole load
+}
+
 TEST(CurvingFlange, StiffBogieInSharpCurvesConvergesAtTheFlange) {
   // R 150 m and R 200 m (classes 1 and 8, 21 % of the line): the direct and continuation starts stalled here
   // (residual 0.2-0.4 Q0) before the multi-start; an attempt beyond the flange (|y| 17-65 mm) must never win.
@@ -87,12 +129,14 @@ TEST(CurvingFlange, StiffBogieInSharpCurvesConvergesAtTheFlange) {
     for (const WheelsetQuasiStaticReport& w : r.wheelsets)
       EXPECT_LE(std::fabs(w.pose.lateral_m), flange + o.derailment_margin_m) << tc.name << " wheelset " << w.wheelset;
     // The leading wheelset of each bogie runs on the outer (right) flange, below Nadal's climbing limit
-    // (tan 70 deg - mu) / (1 + mu tan 70 deg) = 1.12 at mu = 0.4.
+    // (tan 70 deg - mu) / (1 + mu tan 70 deg) (1.34 at mu = 0.3).
+    const double mu = tc.friction_coefficient, t70 = std::tan(70.0 * M_PI / 180.0);
+    const double nadal = (t70 - mu) / (1.0 + mu * t70);
     for (int j : {0, 2}) {
       const WheelQuasiStaticReport& outer = r.wheelsets[j].wheel[side_index(Side::Right)];
       EXPECT_TRUE(outer.flange_contact) << tc.name << " wheelset " << j;
       EXPECT_GT(outer.y_over_q, 0.0) << tc.name;
-      EXPECT_LT(outer.y_over_q, 1.12) << tc.name;
+      EXPECT_LT(outer.y_over_q, nadal) << tc.name;
     }
   }
 }

@@ -33,6 +33,10 @@ struct CandidateOptions {
   // Regions separated by less than this rail arc length are combined into one patch (CONTACT's D_COMB,
   // 4 mm there). 0 keeps every interpenetration region separate.
   double combine_distance_m = 0.0;
+  // Load-given mode, elastic flange: the wheel's reference (touching) position ignores gap minima steeper than
+  // this (WheelsetTrackGeometry::MinimumVerticalGap), so a flange pressed against the rail interpenetrates
+  // and the load control finds the vertical position with the flange force included. Default: all count.
+  double max_touching_contact_angle_rad = 1e300;
 };
 
 enum class CandidateStatus { Ok, NoContact /* no interpenetration */, NoOverlap /* wheel not over the rail */ };

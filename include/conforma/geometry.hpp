@@ -116,6 +116,9 @@ struct EquilibriumOptions {
   // for the EN 15302 benchmark Delta r (tests/test_conicity_en15302.cpp). true: the rigid wheelset rolls
   // about the axle centre, so the contact-level lateral shift differs from lateral_m by about r0 * roll.
   bool include_roll = true;
+  // Elastic flange (MinimumVerticalGap): the wheels touch where the rail's contact angle is at most this; a
+  // steeper flange contact may interpenetrate. Default: every contact point counts (rigid flange).
+  double max_touching_contact_angle_rad = 1e300;
 };
 enum class EquilibriumStatus { Converged, NotConverged, NoContact };
 const char* to_string(EquilibriumStatus status);
@@ -146,7 +149,15 @@ class WheelsetTrackGeometry {
   WheelsetContactResult RigidContacts(const WheelsetPose& pose) const;
   // Smallest vertical separation of one wheel (cheap: coarse scan + Brent), and the track-frame y of that
   // point. Returns false when the wheel does not face the rail head.
-  bool MinimumVerticalGap(Side side, const WheelsetPose& pose, double* gap_m, double* track_y_m) const;
+  // max_contact_angle_rad (elastic flange): only local minima where the rail's contact angle is at most this
+  // count (all of them when none does), so a flange pressed against the rail may interpenetrate; the elastic
+  // contact then carries its force instead of the wheel climbing rigidly onto it.
+  bool MinimumVerticalGap(Side side, const WheelsetPose& pose, double* gap_m, double* track_y_m,
+                          double max_contact_angle_rad = kAllContactAngles) const;
+  static constexpr double kAllContactAngles = 1e300;
+  struct Frame;
+  // Vertical gap where the rail's gauge corner reaches contact angle `angle` (elastic-flange boundary).
+  bool LimitAngleGap(Side side, const Frame& frame, double angle, double* gap, double* y_w, double* eta) const;
   // Vertical position and roll so that both wheels touch their rails (rigid), for a given lateral shift and
   // yaw. `guess` supplies starting values of vertical_m and roll_rad (continuation along a sweep).
   EquilibriumResult SolveRigidEquilibrium(double lateral_m, double yaw_rad, const WheelsetPose& guess = {},

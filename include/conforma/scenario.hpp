@@ -16,6 +16,8 @@
 //       with the inclination too (give rail_inclination: 0 for files that are already canted).
 //   material: { shear_modulus_Pa, poisson_ratio, density_kg_m3 }
 //   friction: 0.3                       (default friction of the classes)
+//   elastic_flange_deg: 60              (optional: contacts steeper than this are elastic flange contacts that may
+//                                        interpenetrate at a wheel's reference position; absent: rigid flange)
 //   wear_law: usfd | <wear-law file>    (wear_law.hpp; the same law for wheel and rail unless rail_wear_law given)
 //   rail_wear_law: usfd | <file>
 //   contact_model: conformal            (hertz | kp | kpec | conformal; the command line may override)
@@ -80,6 +82,9 @@ struct Scenario {
   Profile wheel, rail;                // rail uninclined (mounted with rail_inclination_rad)
   Material material;
   double friction_coefficient = 0.3;
+  // elastic_flange_deg: contact points steeper than this may interpenetrate at a wheel's reference position
+  // (WheelContactOptions::max_touching_contact_angle_rad), in the curving solve and the wear step. Absent: rigid.
+  double elastic_flange_angle_rad = 1e300;
   WearModel wear;
   ContactModel model = ContactModel::Conformal;
   ScenarioUpdate update;

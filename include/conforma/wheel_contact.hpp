@@ -41,6 +41,11 @@ struct WheelContactOptions {
   int kp_strips = 31;                  // strips across the contact of the KP solvers
   int bem_x_elements = 64;             // reference BEM elements along x (strips: the candidate's ds)
   double candidate_strip_width_m = 0.1e-3;
+  // Load control, elastic flange: the wheel's reference (touching) position ignores gap minima whose rail
+  // contact angle exceeds this, so a flange pressed against the rail interpenetrates and carries its force
+  // elastically instead of lifting the wheel rigidly onto it (a worn, steep flange acts as a wall that the
+  // rigid model can only pass by climbing). Default: every contact point counts (rigid flange).
+  double max_touching_contact_angle_rad = 1e300;
   double conformity_threshold_deg = 18.0;
   // `conformal` model: virtual-penetration rule. true (default): CONTACT's variable eps (ConformalKpecOptions);
   // false: Kik-Piotrowski's constant eps = 0.55 (ConformalKpOptions). See kik_piotrowski.hpp.

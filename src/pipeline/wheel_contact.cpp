@@ -273,6 +273,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   // 1. Candidates: at the Hertz push-down for the load (load control) or at the given pose.
   CandidateOptions candidate_options;
   candidate_options.strip_width_m = options.candidate_strip_width_m;
+  candidate_options.max_touching_contact_angle_rad = options.max_touching_contact_angle_rad;
   const bool load_control = options.vertical_load_N >= 0.0;
   stage.finished = true;
   if (load_control && options.vertical_load_N == 0.0) return stage;  // unloaded wheel: no contact
@@ -294,7 +295,8 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
     // takes the region's deepest of these points when it chooses Hertz.
     WheelsetPose touching = pose;
     double touch_gap = 0.0, touch_y = 0.0;
-    if (geometry.MinimumVerticalGap(side, pose, &touch_gap, &touch_y)) touching.vertical_m -= touch_gap;
+    if (geometry.MinimumVerticalGap(side, pose, &touch_gap, &touch_y, options.max_touching_contact_angle_rad))
+      touching.vertical_m -= touch_gap;
     const double push = touching.vertical_m - candidates.pose.vertical_m;  // candidates' pose below first touch
     std::vector<RigidContactPoint> points;  // gaps along the normal at the candidates' pose
     for (const RigidContactPoint& p : geometry.RigidContact(side, touching).points) {  // smallest gap first
