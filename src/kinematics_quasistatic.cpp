@@ -33,6 +33,7 @@ void QuasiStaticOptions::validate() const {
   if (continuation_steps < 0) throw InputError("option 'continuation_steps' must be >= 0");
   require_positive(flange_contact_angle_rad, "flange_contact_angle_rad");
   require_non_negative(derailment_margin_m, "derailment_margin_m");
+  require_non_negative(climbing_slope, "climbing_slope");
   require_positive(difference_step, "difference_step");
 }
 
@@ -73,7 +74,9 @@ struct WheelsetForces {
 // M_z = x_p F_y - (y_p - y) F_x + sigma m_z n_z (a moment about z is mirrored in the right side frame).
 WheelsetForces EvaluateWheelset(BogieContext& ctx, double y_m, double psi_rad, double w) {
   WheelsetForces f;
-  const EquilibriumResult eq = ctx.geometry->SolveRigidEquilibrium(y_m, psi_rad);
+  EquilibriumOptions eo;  // the same touching rule as the contact's load control (elastic flange or not)
+  eo.max_touching_contact_angle_rad = ctx.contact_options.max_touching_contact_angle_rad;
+  const EquilibriumResult eq = ctx.geometry->SolveRigidEquilibrium(y_m, psi_rad, WheelsetPose{}, eo);
   if (eq.status != EquilibriumStatus::Converged) return f;
   f.pose = eq.pose;
   f.velocity.forward_speed_m_s = ctx.V;
@@ -217,7 +220,24 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
     for (double v : r) out.max_residual = std::max(out.max_residual, std::fabs(v));
   }
   out.admissible = true;
-  for (int j = 0; j < 2; ++j) out.admissible &= p[3 * j] * 1e-3 >= ctx.y_min && p[3 * j] * 1e-3 <= ctx.y_max;
+  for (int j = 0; j < 2; ++j) {
+    out.admissible &= p[3 * j] * 1e-3 >= ctx.y_min && p[3 * j] * 1e-3 <= ctx.y_max;
+    // Flange climbing: at a flange-contact state whose lateral contact force falls as the wheelset moves on
+    // towards the flange (dY/dy > 0 in the track frame, central difference), the equilibrium is unstable: the
+    // wheel is riding up its flange. The climbing_slope threshold is in Q0 per mm.
+    const WheelsetForces f = EvaluateWheelset(ctx, 1e-3 * p[3 * j], 1e-3 * p[3 * j + 1], p[3 * j + 2]);
+    if (!f.ok) continue;
+    bool flange = false;
+    for (const WheelContactReport& report : f.report)
+      for (const PatchReport& patch : report.patches) flange |= patch.contact_angle_rad > ctx.options->flange_contact_angle_rad;
+    if (!flange) continue;
+    const double h = 0.02;  // mm
+    const WheelsetForces plus = EvaluateWheelset(ctx, 1e-3 * (p[3 * j] + h), 1e-3 * p[3 * j + 1], p[3 * j + 2]);
+    const WheelsetForces minus = EvaluateWheelset(ctx, 1e-3 * (p[3 * j] - h), 1e-3 * p[3 * j + 1], p[3 * j + 2]);
+    if (!plus.ok || !minus.ok) continue;
+    const double slope = (plus.lateral_N - minus.lateral_N) / (2.0 * h * ctx.Q0);  // Q0 per mm
+    if (slope > ctx.options->climbing_slope) out.admissible = false;
+  }
   out.converged = out.admissible && out.max_residual <= ctx.options->residual_tolerance;
   return out;
 }

@@ -2,6 +2,8 @@
 // -> combination of the classes (wear_simulation.hpp; paper 001 eqs. 24-27, paper 003 §6 steps 1-3).
 #include <cmath>
 #include <exception>
+#include <map>
+#include <mutex>
 #include <string>
 
 #include "conforma/error.hpp"
@@ -216,6 +218,7 @@ QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactM
   QuasiStaticOptions qo;
   qo.contact.model = model;
   qo.contact.material = scenario.material;
+  qo.contact.max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
   qo.tangent_amplitude_m = scenario.kinematics.tangent_amplitude_m;
   qo.tangent_phases = scenario.kinematics.tangent_phases;
   qo.cant_base_m = scenario.kinematics.cant_base_m;
@@ -241,7 +244,13 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
                                                   const WheelsetVelocity&, const WheelContactOptions&);
   const PipelineFunction* target = contact.target<PipelineFunction>();
   const bool pipeline = target != nullptr && *target == &SolveWheelContact;
-  return [qo, scenario, contact, fallbacks, pipeline](const WheelsetTrackGeometry& g, const TrackClass& tc, int) {
+  struct AcceptedSolutions {  // last accepted series per class index (each entry written by its class only)
+    std::mutex mutex;
+    std::map<int, KinematicsSeries> series;
+  };
+  auto accepted = std::make_shared<AcceptedSolutions>();
+  return [qo, scenario, contact, fallbacks, pipeline, accepted](const WheelsetTrackGeometry& g, const TrackClass& tc,
+                                                                int class_index) {
     WheelContactCache cache;
     const WheelContactFunction f = [&contact, &cache, pipeline](const WheelsetTrackGeometry& gg, Side sd,
                                                                 const WheelsetPose& p, const WheelsetVelocity& v,
@@ -250,14 +259,16 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
     };
     QuasiStaticResult r = SolveQuasiStaticCurving(scenario.vehicle, g, tc, qo, f);
     bool accept = r.status != QuasiStaticStatus::NoContact && !r.series.samples.empty();
-    if (accept && r.status == QuasiStaticStatus::NotConverged) {
-      const double c = TrackClassCurvature(tc);
-      const double limit = std::abs(FlangeContactShift(g, c >= 0.0 ? 1.0 : -1.0)) + 3e-3;
-      for (const KinematicsSample& s : r.series.samples)
-        if (std::abs(s.pose.lateral_m) > limit) accept = false;
+    for (const BogieQuasiStaticReport& b : r.bogies)
+      if (b.derailed || !(b.max_residual <= kAcceptedCurvingResidual)) accept = false;
+    std::lock_guard<std::mutex> lock(accepted->mutex);
+    if (accept) {
+      accepted->series[class_index] = r.series;
+      return r.series;
     }
-    if (accept) return r.series;
     if (fallbacks) ++*fallbacks;
+    const auto previous = accepted->series.find(class_index);
+    if (previous != accepted->series.end()) return previous->second;
     return KinematicCurvingEstimate(scenario, g, tc);
   };
 }

@@ -34,11 +34,20 @@
 //   flange contact). If the residual is not reached, a continuation in c = 1/R from the tangent solution; the
 //   better of the two attempts is kept; if neither converged, up to three more starts in the flange regimes
 //   (QuasiStaticOptions::multi_start) and the best attempt overall is kept.
-//   LIMITATION: the contact forces are discontinuous in (y, psi) where the contact-point set changes
-//   discretely: a Hertz contact point jumping between two rigid minima (S1002/60E1 at 1:40 near |y| = 0.22 mm),
-//   or two interpenetration regions merging into one patch (S1002/50E4 at 1:20 near y = -4.63 mm: the second
-//   region's ~7 kN disappear at once). An equilibrium lying on such a jump has no exact solution: the solver
-//   then returns the least-squares point with status NotConverged and its max_residual (typically 1e-2..3e-1).
+//   Admissible solutions: every wheelset within derailment_margin_m of its flange-contact shift, and no wheelset
+//   in flange contact whose lateral contact force falls as it moves on towards the flange (climbing_slope: the
+//   wheel rides up its flange, an unstable equilibrium). An inadmissible attempt is never Converged
+//   (BogieQuasiStaticReport::derailed when it is the best one left).
+//   RIGID OR ELASTIC FLANGE: with the default rigid flange, the wheelset's vertical position and roll make the
+//   smallest gap of each wheel zero, so a flange face steeper than ~80 deg under the angle of attack (worn
+//   S1002 after a few hundred km) is a wall the wheelset can only pass by jumping onto it: no flange force is
+//   available before the wall and no equilibrium exists. contact.max_touching_contact_angle_rad (elastic flange)
+//   makes only the contact points up to that angle define the touching position; the flange then
+//   interpenetrates and its elastic force follows (the scenario key elastic_flange_deg).
+//   LIMITATION: the contact forces can still jump in (y, psi) where a rigid gap minimum is born with a negative
+//   gap (a minimum appearing inside a region already in contact). An equilibrium lying on such a jump has no
+//   exact solution: the solver then returns the least-squares point with status NotConverged and its
+//   max_residual.
 //
 // TANGENT TRACK (c = 0): the equilibrium is solved as above, from tangent_start_offset_m (centred by symmetry for
 // symmetric profiles). The
@@ -82,6 +91,10 @@ struct QuasiStaticOptions {
   // A solution with a wheelset more than this beyond its flange-contact shift (the flange of that side becomes
   // the smallest rigid gap) has climbed the flange: it is never Converged, and any admissible attempt beats it.
   double derailment_margin_m = 3e-3;
+  // ... and so is a flange-contact state whose wheelset lateral contact force falls as the wheelset moves on
+  // towards the flange faster than this (in Q0 per mm): the wheel is riding up its flange, an unstable
+  // equilibrium (the rising flange force of a stable one grows by ~10-50 Q0 per mm).
+  double climbing_slope = 0.05;
   double flange_contact_angle_rad = 0.5;   // a patch steeper than this is a flange contact
   // Forward-difference steps of the scaled unknowns (mm, mrad, 1e-3 relative axle speed).
   double difference_step = 1e-3;

@@ -99,9 +99,13 @@ QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactM
 inline ContactModel CurvingContactModel(const Scenario& scenario, ContactModel wear_model) {
   return scenario.kinematics.contact_model_set ? scenario.kinematics.contact_model : wear_model;
 }
-// The scenario's provider. Quasi-static: a class whose solution is NoContact, or NotConverged with a wheelset beyond
-// flange contact + 3 mm (flange climbing: the least-squares point of a discontinuous problem), uses
-// KinematicCurvingEstimate instead; `fallbacks` (optional, thread-safe counter) counts those classes.
+// The scenario's provider. Quasi-static: a class whose solution is NoContact, derailed (a wheelset beyond flange
+// contact + derailment margin, kinematics_quasistatic.hpp), or NotConverged with a residual above
+// kAcceptedCurvingResidual, falls back to the last accepted solution of the same class (from an earlier wear
+// step of this function: the kinematics frozen over a step, as a multibody code updated every few steps would
+// give), or to KinematicCurvingEstimate when there is none; `fallbacks` (optional, thread-safe counter) counts
+// those classes. The function keeps that per-class memory: one function per run.
+constexpr double kAcceptedCurvingResidual = 0.05;  // max |scaled residual| (forces / Q0) of an accepted solve
 KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
                                           std::shared_ptr<std::atomic<int>> fallbacks = nullptr);
 
@@ -145,6 +149,7 @@ struct WearStepRecord {
   int samples = 0, failed_contacts = 0, approximate_contacts = 0, hertz_fallback_contacts = 0;
   int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
   double depth_cap_m = 0.0;          // cap used (the scenario's, or halved by invalid_step_halvings)
+  double overhang_cut_area_m2 = 0.0; // area cut from a flange worn past vertical (ProfileUpdateResult)
   std::array<int, kContactModelCount> patches_by_model{};  // see StepWear
 };
 
