@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -40,6 +41,24 @@ Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth,
   fit.sample_spacing_m = output_spacing_m > 0.0 ? output_spacing_m : profile.spacing();
   fit.function_of_y = false;  // keep the arc-length order of the old profile
   return Profile::FromPoints(std::move(points), profile.kind(), fit, context);
+}
+
+// RMS distance of the spline refitted through a cut profile to the cut points [m]
+constexpr double kOverhangCutRoundingRms = 5e-6;
+
+double CutOverhangs(std::vector<Eigen::Vector2d>* points) {
+  std::vector<Eigen::Vector2d>& p = *points;
+  double area = 0.0, running_min = std::numeric_limits<double>::infinity();
+  for (size_t k = p.size(); k-- > 0;) {
+    if (p[k].x() > running_min) {
+      // horizontal strip between the old and the new point, over the segment's height (trapezoid in z)
+      const double dz = k + 1 < p.size() ? std::abs(p[k + 1].y() - p[k].y()) : 0.0;
+      area += (p[k].x() - running_min) * dz;
+      p[k].x() = running_min;
+    }
+    running_min = std::min(running_min, p[k].x());
+  }
+  return area;
 }
 
 namespace {
@@ -150,6 +169,22 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
     return r;
   }
   r.validity = CheckProfileValidity(updated, profile, o.validity);
+  if (!r.validity.valid && o.cut_overhangs && r.validity.y_folds_before == 0 &&
+      r.validity.y_folds_after > r.validity.y_folds_before) {
+    std::vector<Eigen::Vector2d> points = updated.samples();
+    r.overhang_cut_area_m2 = CutOverhangs(&points);
+    ProfileFitOptions fit;
+    fit.smoothing_rms_m = kOverhangCutRoundingRms;  // rounds the corners of the cut (a kink otherwise)
+    fit.sample_spacing_m = updated.spacing();
+    fit.function_of_y = false;
+    try {
+      updated = Profile::FromPoints(std::move(points), profile.kind(), fit, step);
+      r.validity = CheckProfileValidity(updated, profile, o.validity);
+    } catch (const InputError& e) {
+      r.validity.valid = false;
+      r.validity.reason = std::string("after cutting the overhang: ") + e.what();
+    }
+  }
   if (!r.validity.valid) {
     r.status = ProfileUpdateStatus::InvalidProfile;
     r.message = step + ": updated profile is invalid: " + r.validity.reason;

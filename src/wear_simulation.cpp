@@ -81,6 +81,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   StepWearOptions step_options;
   step_options.contact.model = options.model;
   step_options.contact.material = scenario.material;
+  step_options.contact.max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
   step_options.contact.fastsim_elements = options.fastsim_elements;
   step_options.contact.kp_strips = options.kp_strips;
   step_options.contact.candidate_strip_width_m = options.candidate_strip_width_m;
@@ -156,6 +157,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
       rec.validity = up.validity;
       rec.depth_cap_m = uo.max_depth_per_step_m;
+      rec.overhang_cut_area_m2 = up.overhang_cut_area_m2;
       if (up.status != ProfileUpdateStatus::Updated) {
         result.status = up.status == ProfileUpdateStatus::NoWear ? WearSimulationStatus::NoWear
                                                                    : WearSimulationStatus::InvalidProfile;

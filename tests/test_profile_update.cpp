@@ -244,3 +244,33 @@ TEST(ProfileUpdate, S1002TwentyStepsStayValid) {
   EXPECT_NEAR(*wheel.height_at(0.055), *original.height_at(0.055), 1e-6);
   EXPECT_GT(total_distance, 0.0);
 }
+
+namespace conforma {
+namespace {
+
+TEST(ProfileUpdate, OverhangCutRemovesOnlyTheLipAndReportsItsArea) {
+  // A face descending in z with y increasing, except a lip: y = 2.0 and 1.5 above a recess at 1.2 (mm).
+  // The reverse running minimum moves the lip back to y = 1.2: cut areas (2.0 - 1.2) * 1 + (1.5 - 1.2) * 1 mm^2.
+  std::vector<Eigen::Vector2d> p;
+  const double y[] = {0.0, 1.0, 2.0, 1.5, 1.2, 3.0, 4.0};
+  for (int k = 0; k < 7; ++k) p.emplace_back(1e-3 * y[k], 1e-3 * (10.0 - k));
+  const std::vector<Eigen::Vector2d> before = p;
+  const double area = CutOverhangs(&p);
+  EXPECT_NEAR(area, 1.1e-6, 1e-18);
+  for (size_t k = 0; k + 1 < p.size(); ++k) EXPECT_LE(p[k].x(), p[k + 1].x());  // single-valued in y now
+  for (size_t k = 0; k < p.size(); ++k) {
+    EXPECT_LE(p[k].x(), before[k].x());       // material removed only (towards -y)
+    EXPECT_EQ(p[k].y(), before[k].y());       // heights kept
+  }
+  EXPECT_NEAR(p[2].x(), 1.2e-3, 1e-15);
+  EXPECT_NEAR(p[3].x(), 1.2e-3, 1e-15);
+  // a curve without folds is left exactly as it is
+  std::vector<Eigen::Vector2d> monotone = before;
+  monotone[2].x() = 1.1e-3, monotone[3].x() = 1.15e-3;
+  const std::vector<Eigen::Vector2d> copy = monotone;
+  EXPECT_EQ(CutOverhangs(&monotone), 0.0);
+  for (size_t k = 0; k < copy.size(); ++k) EXPECT_EQ(monotone[k], copy[k]);
+}
+
+}  // namespace
+}  // namespace conforma

@@ -11,7 +11,9 @@
 //      threshold of paper 003 §6).
 //   2. Removal along the local outward normal: P_new(s) = P(s) - d(s) n(s) (eqs. 18-19), then
 //      re-parametrisation by arc length (Profile::FromPoints, input order = arc-length order).
-//   3. Validity checks of the new profile (no self-intersection, no new folds in y, curvature bound).
+//   3. Validity checks of the new profile (no self-intersection, no new folds in y, curvature bound). A wheel
+//      whose flange face is worn past vertical (a new fold in y) gets the overhanging lip cut back
+//      (CutOverhangs, ProfileUpdateOptions::cut_overhangs; the cut area is reported) and is checked again.
 #include <limits>
 #include <string>
 
@@ -50,6 +52,12 @@ DepthSmoothingResult SmoothDepthMassConserving(const WearDistribution& depth, co
 Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth, double output_spacing_m = 0.0,
                           const std::string& context = "profile update");
 
+// Points of a curve that should be single-valued in y, ordered so that y does not decrease: every point whose y
+// exceeds that of a later point is moved back to the smallest later y (reverse running minimum), i.e. material
+// is only removed (material lies towards -y of a face that y increases along). Returns the area between the
+// input and the output polylines (the material cut away) [m^2].
+double CutOverhangs(std::vector<Eigen::Vector2d>* points);
+
 // ---------------------------------------------------------------- validity
 struct ProfileValidityOptions {
   // Kink criterion: |curvature| must stay below this [1/m] (1/(1 mm)) wherever the previous profile was
@@ -75,6 +83,10 @@ struct ProfileUpdateOptions {
   DepthSmoothingOptions smoothing;
   ProfileValidityOptions validity;
   double output_spacing_m = 0.0;  // arc-length spacing of the new profile; 0 = that of the old one
+  // A profile that was single-valued in y (no folds) and folds after the removal (a flange face worn past
+  // vertical: the lip above overhangs the worn band below) gets the lip cut back to the vertical through the
+  // band (CutOverhangs): contact would wear it off at once. The cut area is reported; false: invalid instead.
+  bool cut_overhangs = true;
   int step_index = 0;             // only for messages ("wear step 3: ...")
 };
 
@@ -90,6 +102,7 @@ struct ProfileUpdateResult {
   double distance_step_m = 0.0;  // distance the step represents = distance_represented * scale_factor
   double max_depth_m = 0.0;      // max of removed_depth (= cap unless max_distance_step_m binds)
   double removed_area_m2 = 0.0;  // integral of removed_depth ds
+  double overhang_cut_area_m2 = 0.0;  // extra area removed by cutting overhangs (ProfileUpdateOptions::cut_overhangs)
   DepthSmoothingResult smoothing;  // diagnostics of step 1 (before scaling)
   ProfileValidity validity;
 };

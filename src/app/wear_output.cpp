@@ -67,10 +67,10 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
   if (!out) throw InputError(dir + "/steps.csv: cannot write");
   out << "rail_step,step,km,step_km,max_depth_mm,sd_mm,sh_mm,qr_mm,tread_wear_mm,flange_wear_mm,wall_s,"
          "max_curvature_1_m,samples,failed_contacts,approximate_contacts,hertz_fallback_contacts,kinematics_fallbacks,"
-         "depth_cap_mm,patches_hertz,patches_kp,patches_kpec,patches_conformal\n";
+         "depth_cap_mm,patches_hertz,patches_kp,patches_kpec,patches_conformal,overhang_cut_mm2\n";
   out << std::setprecision(8);
   const WheelDimensions& d0 = r.initial_dimensions;
-  out << "0,0,0,0,0," << d0.sd_m * 1e3 << "," << d0.sh_m * 1e3 << "," << d0.qr_m * 1e3 << ",0,0,0,0,0,0,0,0,0,0,0,0,0,0\n";
+  out << "0,0,0,0,0," << d0.sd_m * 1e3 << "," << d0.sh_m * 1e3 << "," << d0.qr_m * 1e3 << ",0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n";
   for (const WearStepRecord& s : r.steps) {
     out << s.rail_step << "," << s.step << "," << s.km << "," << s.step_km << "," << s.max_depth_m * 1e3 << ","
         << s.dimensions.sd_m * 1e3 << "," << s.dimensions.sh_m * 1e3 << "," << s.dimensions.qr_m * 1e3 << ","
@@ -79,7 +79,7 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
         << s.depth_cap_m * 1e3;
     for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal})
       out << "," << s.patches_by_model[static_cast<int>(m)];
-    out << "\n";
+    out << "," << s.overhang_cut_area_m2 * 1e6 << "\n";
   }
   for (size_t k = 0; k < r.rails.size(); ++k) {
     SaveBoth(r.rails[k][0], dir + "/rail_left_" + Num3(static_cast<int>(k + 1)));
