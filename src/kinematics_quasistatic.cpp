@@ -10,6 +10,7 @@
 #include <ceres/ceres.h>
 
 #include "conforma/error.hpp"
+#include "conforma/wear_simulation.hpp"
 
 namespace conforma {
 
@@ -285,22 +286,6 @@ void InitialGuess(const BogieContext& ctx, double* p) {
   p[7] = 0.0;
 }
 
-// Lateral shift (signed, towards the rail on side `dir` = -1 right / +1 left) at which the flange of that side
-// becomes the smallest rigid gap of the centred-yaw wheelset (scan in 0.1 mm steps, up to 20 mm).
-double FlangeShift(const BogieContext& ctx, double dir) {
-  const Side side = dir < 0.0 ? Side::Right : Side::Left;
-  WheelsetPose guess;
-  for (int k = 1; k <= 200; ++k) {
-    const double y = dir * 0.1e-3 * k;
-    const EquilibriumResult eq = ctx.geometry->SolveRigidEquilibrium(y, 0.0, guess);
-    if (eq.status != EquilibriumStatus::Converged) continue;
-    guess = eq.pose;
-    const auto& pts = eq.contact.wheel[side_index(side)].points;
-    if (!pts.empty() && pts.front().contact_angle_rad > ctx.options->flange_contact_angle_rad) return y;
-  }
-  return dir * 20e-3;
-}
-
 // A start with the wheelsets at given lateral shifts (leading y0, trailing y1), parallel to the frame
 // (no suspension deflection): psi_b = (y0 - y1) / (2 a), y_b = (y0 + y1) / 2 + c a^2 / 2, psi_j = psi_b - c x_j.
 void WheelsetShiftGuess(const BogieContext& ctx, double y0, double y1, double* p) {
@@ -369,7 +354,9 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   base.k_sec_yaw = vehicle.secondary_yaw_stiffness_Nm_rad;
   base.m_w = vehicle.wheelset_mass_kg;
   base.m_b_plus_c = vehicle.bogie_frame_mass_kg + vehicle.carbody_mass_per_bogie_kg;
-  const double y_right = FlangeShift(base, -1.0), y_left = FlangeShift(base, 1.0);
+  // flange-contact shifts towards the right (curvature > 0: outer) and the left rail (wear_simulation.hpp)
+  const double y_right = FlangeContactShift(geometry, 1.0, options.flange_contact_angle_rad);
+  const double y_left = FlangeContactShift(geometry, -1.0, options.flange_contact_angle_rad);
   base.y_min = y_right - options.derailment_margin_m;
   base.y_max = y_left + options.derailment_margin_m;
 
