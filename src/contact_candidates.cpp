@@ -168,8 +168,9 @@ CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Sid
     return none;
   }
   pose.vertical_m -= gap;  // touching
+  const WheelsetPose touching = pose;
   const bool elastic_flange = o.max_touching_contact_angle_rad < WheelsetTrackGeometry::kAllContactAngles;
-  const WheelContactResult rigid = g.RigidContact(side, pose);
+  WheelContactResult rigid = g.RigidContact(side, pose);
   struct Point { double vertical_gap, cos_delta, A, B; };
   std::vector<Point> pts;
   for (const auto& c : rigid.points) {
@@ -217,6 +218,9 @@ CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Sid
     for (auto& c : out.candidates)
       if (rigid.points[i].rail_s_m >= c.region_start_s_m - 1e-6 && rigid.points[i].rail_s_m <= c.region_end_s_m + 1e-6)
         c.normal_force_estimate_N += forces[i];
+  out.has_touching = true;
+  out.touching_pose = touching;
+  out.touching_contact = std::move(rigid);
   return out;
 }
 

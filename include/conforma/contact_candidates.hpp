@@ -53,6 +53,11 @@ struct CandidateResult {
   CandidateStatus status = CandidateStatus::NoOverlap;
   WheelsetPose pose;                         // the pose the regions were taken at
   std::vector<ContactCandidate> candidates;  // ordered along the rail (gauge side first)
+  // Load-given mode only (has_touching): the wheel at first touch, where the Hertz push-down starts, and its
+  // rigid contact points there.
+  bool has_touching = false;
+  WheelsetPose touching_pose;
+  WheelContactResult touching_contact;
 };
 
 // Regions at the given pose (interpenetration of the rigid profiles).

@@ -293,13 +293,20 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
     // stalled the quasi-static curving solve. A minimum enters (RigidContact's 2 mm window) with a positive gap,
     // i.e. without force, so the forces stay continuous in the pose. `auto` keeps one patch per region and
     // takes the region's deepest of these points when it chooses Hertz.
-    WheelsetPose touching = pose;
-    double touch_gap = 0.0, touch_y = 0.0;
-    if (geometry.MinimumVerticalGap(side, pose, &touch_gap, &touch_y, options.max_touching_contact_angle_rad))
-      touching.vertical_m -= touch_gap;
+    // first touch: from the load-given candidate search, or found here (approach mode)
+    WheelsetPose touching = candidates.touching_pose;
+    WheelContactResult touching_contact;
+    if (!candidates.has_touching) {
+      touching = pose;
+      double touch_gap = 0.0, touch_y = 0.0;
+      if (geometry.MinimumVerticalGap(side, pose, &touch_gap, &touch_y, options.max_touching_contact_angle_rad))
+        touching.vertical_m -= touch_gap;
+      touching_contact = geometry.RigidContact(side, touching);
+    }
+    const WheelContactResult& at_touch = candidates.has_touching ? candidates.touching_contact : touching_contact;
     const double push = touching.vertical_m - candidates.pose.vertical_m;  // candidates' pose below first touch
     std::vector<RigidContactPoint> points;  // gaps along the normal at the candidates' pose
-    for (const RigidContactPoint& p : geometry.RigidContact(side, touching).points) {  // smallest gap first
+    for (const RigidContactPoint& p : at_touch.points) {  // smallest gap first
       bool duplicate = false;  // two coarse minima refined to the same point
       for (const RigidContactPoint& q : points) duplicate |= std::fabs(q.rail_s_m - p.rail_s_m) < 0.05e-3;
       if (duplicate) continue;
