@@ -215,8 +215,12 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
   ceres::Solve(so, &problem, &summary);
   AttemptResult out;
   out.iterations = static_cast<int>(summary.iterations.size());
-  double r[kUnknowns];
-  if (cost.Evaluate(&p, r, nullptr)) {
+  // the wheelsets' forces at the solution: for the residual and the climbing check below
+  WheelsetForces f[2];
+  for (int j = 0; j < 2; ++j) f[j] = EvaluateWheelset(ctx, 1e-3 * p[3 * j], 1e-3 * p[3 * j + 1], p[3 * j + 2]);
+  if (f[0].ok && f[1].ok) {
+    double r[kUnknowns];
+    BogieResiduals(ctx, p, f, r, nullptr);
     out.max_residual = 0.0;
     for (double v : r) out.max_residual = std::max(out.max_residual, std::fabs(v));
   }
@@ -226,10 +230,9 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
     // Flange climbing: at a flange-contact state whose lateral contact force falls as the wheelset moves on
     // towards the flange (dY/dy > 0 in the track frame, central difference), the equilibrium is unstable: the
     // wheel is riding up its flange. The climbing_slope threshold is in Q0 per mm.
-    const WheelsetForces f = EvaluateWheelset(ctx, 1e-3 * p[3 * j], 1e-3 * p[3 * j + 1], p[3 * j + 2]);
-    if (!f.ok) continue;
+    if (!f[j].ok) continue;
     bool flange = false;
-    for (const WheelContactReport& report : f.report)
+    for (const WheelContactReport& report : f[j].report)
       for (const PatchReport& patch : report.patches) flange |= patch.contact_angle_rad > ctx.options->flange_contact_angle_rad;
     if (!flange) continue;
     const double h = 0.02;  // mm
@@ -247,6 +250,20 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
 bool Better(const AttemptResult& x, const AttemptResult& y) {
   if (x.admissible != y.admissible) return x.admissible;
   return x.max_residual < y.max_residual;
+}
+
+// A start with the wheelsets at given lateral shifts (leading y0, trailing y1), parallel to the frame
+// (no suspension deflection): psi_b = (y0 - y1) / (2 a), y_b = (y0 + y1) / 2 + c a^2 / 2, psi_j = psi_b - c x_j.
+void WheelsetShiftGuess(const BogieContext& ctx, double y0, double y1, double* p) {
+  std::fill(p, p + kUnknowns, 0.0);
+  const double a = ctx.half_wheelbase;
+  const double psib = (y0 - y1) / (2.0 * a);
+  p[0] = 1e3 * y0;
+  p[3] = 1e3 * y1;
+  p[1] = 1e3 * (psib - ctx.c * a);
+  p[4] = 1e3 * (psib + ctx.c * a);
+  p[6] = 1e3 * (0.5 * (y0 + y1) + 0.5 * ctx.c * a * a);
+  p[7] = 1e3 * psib;
 }
 
 // Radial-steering start: lateral shift towards the outer rail where the rigid rolling-radius difference gives
@@ -278,27 +295,9 @@ void InitialGuess(const BogieContext& ctx, double* p) {
     prev_dr = dr;
     if (flange) break;
   }
-  const double a = ctx.half_wheelbase;
-  p[0] = p[3] = 1e3 * y_guess;
-  p[1] = 1e3 * (-ctx.c * a);   // parallel to the frame: psi_j = psi_b - c x_j
-  p[4] = 1e3 * (ctx.c * a);
-  p[6] = 1e3 * (y_guess + 0.5 * ctx.c * a * a);
-  p[7] = 0.0;
+  WheelsetShiftGuess(ctx, y_guess, y_guess, p);
 }
 
-// A start with the wheelsets at given lateral shifts (leading y0, trailing y1), parallel to the frame
-// (no suspension deflection): psi_b = (y0 - y1) / (2 a), y_b = (y0 + y1) / 2 + c a^2 / 2, psi_j = psi_b - c x_j.
-void WheelsetShiftGuess(const BogieContext& ctx, double y0, double y1, double* p) {
-  std::fill(p, p + kUnknowns, 0.0);
-  const double a = ctx.half_wheelbase;
-  const double psib = (y0 - y1) / (2.0 * a);
-  p[0] = 1e3 * y0;
-  p[3] = 1e3 * y1;
-  p[1] = 1e3 * (psib - ctx.c * a);
-  p[4] = 1e3 * (psib + ctx.c * a);
-  p[6] = 1e3 * (0.5 * (y0 + y1) + 0.5 * ctx.c * a * a);
-  p[7] = 1e3 * psib;
-}
 
 }  // namespace
 
