@@ -19,6 +19,20 @@ const char* to_string(ProfileUpdateStatus status) {
   return "?";
 }
 
+namespace {
+
+// A profile through points in the arc-length order of the profile they came from (not sorted by y).
+Profile RefitInArcLengthOrder(std::vector<Eigen::Vector2d> points, ProfileKind kind, double spacing_m,
+                              double smoothing_rms_m, const std::string& context) {
+  ProfileFitOptions fit;
+  fit.smoothing_rms_m = smoothing_rms_m;
+  fit.sample_spacing_m = spacing_m;
+  fit.function_of_y = false;
+  return Profile::FromPoints(std::move(points), kind, fit, context);
+}
+
+}  // namespace
+
 // paper 003 eqs. 18-19, paper 001 eq. 30: P_new(s) = P(s) - d(s) n(s), then arc-length re-parametrisation
 Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth, double output_spacing_m,
                           const std::string& context) {
@@ -36,11 +50,8 @@ Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth,
     if (!std::isfinite(d)) throw InputError(context + ": depth at node " + std::to_string(i) + " is not finite");
     points[i] = profile.position(s) - d * profile.normal(s);
   }
-  ProfileFitOptions fit;
-  fit.smoothing_rms_m = 0.0;
-  fit.sample_spacing_m = output_spacing_m > 0.0 ? output_spacing_m : profile.spacing();
-  fit.function_of_y = false;  // keep the arc-length order of the old profile
-  return Profile::FromPoints(std::move(points), profile.kind(), fit, context);
+  return RefitInArcLengthOrder(std::move(points), profile.kind(),
+                               output_spacing_m > 0.0 ? output_spacing_m : profile.spacing(), 0.0, context);
 }
 
 // RMS distance of the spline refitted through a cut profile to the cut points [m]
@@ -173,12 +184,8 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
       r.validity.y_folds_after > r.validity.y_folds_before) {
     std::vector<Eigen::Vector2d> points = updated.samples();
     r.overhang_cut_area_m2 = CutOverhangs(&points);
-    ProfileFitOptions fit;
-    fit.smoothing_rms_m = kOverhangCutRoundingRms;  // rounds the corners of the cut (a kink otherwise)
-    fit.sample_spacing_m = updated.spacing();
-    fit.function_of_y = false;
-    try {
-      updated = Profile::FromPoints(std::move(points), profile.kind(), fit, step);
+    try {  // the rounding keeps the corners of the cut from being kinks
+      updated = RefitInArcLengthOrder(std::move(points), profile.kind(), updated.spacing(), kOverhangCutRoundingRms, step);
       r.validity = CheckProfileValidity(updated, profile, o.validity);
     } catch (const InputError& e) {
       r.validity.valid = false;

@@ -12,6 +12,18 @@
 
 namespace conforma {
 
+WearCell WearCellOf(const ContactCell& c, double wheel_s_m) {
+  WearCell w;
+  w.traction_Pa = Eigen::Vector2d(c.traction_x_Pa, c.traction_s_Pa);
+  w.slip = Eigen::Vector2d(c.slip_x, c.slip_s);
+  w.pressure_Pa = c.pressure_Pa;
+  w.area_m2 = c.area_m2;
+  w.length_x_m = c.length_x_m;
+  w.wheel_s_m = wheel_s_m;
+  w.rail_s_m = c.rail_s_m;
+  return w;
+}
+
 namespace {
 
 // Wear samples of the two wheels of one kinematics sample.
@@ -84,15 +96,7 @@ void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& tra
           slot->off_grid_m2 += c.area_m2;
           continue;
         }
-        WearCell w;
-        w.traction_Pa = Eigen::Vector2d(c.traction_x_Pa, c.traction_s_Pa);
-        w.slip = Eigen::Vector2d(c.slip_x, c.slip_s);
-        w.pressure_Pa = c.pressure_Pa;
-        w.area_m2 = c.area_m2;
-        w.length_x_m = c.length_x_m;
-        w.wheel_s_m = *s_w;
-        w.rail_s_m = c.rail_s_m;
-        patch.cells.push_back(w);
+        patch.cells.push_back(WearCellOf(c, *s_w));
       }
       ++slot->patches;
       ++slot->patches_by_model[static_cast<int>(p.model)];

@@ -310,15 +310,7 @@ void ExpectSkippingIsExact(const WearModel& wear, ContactModel model) {
       adhesion_cells += c.slip_x == 0.0 && c.slip_s == 0.0;
       const std::optional<double> s_w = g.setup().wheel[0].s_at(c.wheel_y_m);
       if (!s_w) continue;
-      WearCell w;
-      w.traction_Pa = Eigen::Vector2d(c.traction_x_Pa, c.traction_s_Pa);
-      w.slip = Eigen::Vector2d(c.slip_x, c.slip_s);
-      w.pressure_Pa = c.pressure_Pa;
-      w.area_m2 = c.area_m2;
-      w.length_x_m = c.length_x_m;
-      w.wheel_s_m = *s_w;
-      w.rail_s_m = c.rail_s_m;
-      patch.cells.push_back(w);
+      patch.cells.push_back(WearCellOf(c, *s_w));
     }
     ws.patches.push_back(patch);
   }

@@ -282,14 +282,18 @@ std::string MeasuredFromSteps(const WearSimulationResult& r) {
   return m.str();
 }
 
-TEST(ValidateEndToEnd, OwnStepOutputAsMeasuredGivesZeroError) {
-  TempDir tmp;
-  const Scenario sc = ParseScenario(TinyScenarioYaml(), kMetro, CONFORMA_SOURCE_DIR "/scenarios");
+// Two Hertz wear steps of a scenario (no distance limit): the runs the end-to-end tests compare with themselves.
+WearSimulationResult TwoHertzSteps(const Scenario& sc) {
   WearSimulationOptions o;
   o.model = ContactModel::Hertz;
   o.steps = 2;
   o.total_km = 0.0;
-  const WearSimulationResult r = RunWearSimulation(sc, o);
+  return RunWearSimulation(sc, o);
+}
+
+TEST(ValidateEndToEnd, OwnStepOutputAsMeasuredGivesZeroError) {
+  TempDir tmp;
+  const WearSimulationResult r = TwoHertzSteps(ParseScenario(TinyScenarioYaml(), kMetro, CONFORMA_SOURCE_DIR "/scenarios"));
   ASSERT_EQ(r.steps.size(), 2u) << r.message;
 
   // (a) dimensions: the file holds the step values at the step km -> zero error at every point
@@ -345,12 +349,7 @@ TEST(ValidateEndToEnd, OwnStepOutputAsMeasuredGivesZeroError) {
 TEST(ValidateEndToEnd, CommandLineSmoke) {
   TempDir tmp;
   const std::string yaml = tmp.write("tiny.yaml", TinyScenarioYaml());
-  const Scenario sc = LoadScenario(yaml);
-  WearSimulationOptions o;
-  o.model = ContactModel::Hertz;
-  o.steps = 2;
-  o.total_km = 0.0;
-  const WearSimulationResult r = RunWearSimulation(sc, o);
+  const WearSimulationResult r = TwoHertzSteps(LoadScenario(yaml));
   ASSERT_EQ(r.steps.size(), 2u) << r.message;
   const std::string measured = tmp.write("own.csv", MeasuredFromSteps(r));
   const std::string prw = tmp.path("step2.prw");

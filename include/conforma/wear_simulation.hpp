@@ -69,6 +69,9 @@ struct StepWear {
   double wheel_area_off_grid_m2 = 0.0;     // cells that could not be mapped to the wheel arc length
 };
 
+// The wear computation's view of a solved contact cell, at wheel-profile arc length wheel_s_m.
+WearCell WearCellOf(const ContactCell& cell, double wheel_s_m);
+
 // series[c] are the samples of class c (weights of a wheelset within a class sum to 1). Throws InputError for
 // inconsistent input; contact failures are counted.
 StepWear ComputeStepWear(const WheelsetTrackGeometry& geometry, const std::vector<TrackClass>& classes,
