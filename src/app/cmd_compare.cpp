@@ -1,7 +1,6 @@
 // conforma compare --scenario F --out DIR [--models hertz,kp,conformal] [--steps N]: the wear loop with several
 // contact models side by side; DIR/<model>/ as `conforma wear` writes it, DIR/report.md and PNG plots
 // (scripts/plot_compare.py, matplotlib).
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -111,17 +110,7 @@ void RegisterCompareCommand(CLI::App& app) {
       o.model = ParseContactModel(m);
       o.steps = a->steps;
       o.total_km = 0.0;  // compare on the number of steps (each removes the cap)
-      const std::string dir = a->out + "/" + m;
-      BeginWearOutput(dir);
-      const int total = a->steps;
-      o.on_step = [dir, total, m](const WearStepRecord& s) {
-        WriteWearStep(dir, s);
-        PrintProgress(m, s, total);
-      };
-      const auto t0 = std::chrono::steady_clock::now();
-      run.result = RunWearSimulation(sc, o);
-      run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      FinishWearOutput(dir, run.result);
+      run.result = RunWearWithOutput(sc, o, a->out + "/" + m, m, a->steps, &run.wall_s);
       const double km = run.result.steps.empty() ? 0.0 : run.result.steps.back().km;
       std::printf("%s: %zu steps, %.1f km, %.1f s, %s\n", m.c_str(), run.result.steps.size(), km, run.wall_s,
                   to_string(run.result.status));

@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -369,15 +368,7 @@ void RegisterValidateCommand(CLI::App& app) {
       o.steps = steps;
       o.total_km = target_km;
       const std::string dir = a->out + "/" + m;
-      BeginWearOutput(dir);
-      o.on_step = [dir, steps, m](const WearStepRecord& s) {
-        WriteWearStep(dir, s);
-        PrintProgress(m, s, steps);
-      };
-      const auto t0 = std::chrono::steady_clock::now();
-      run.result = RunWearSimulation(sc, o);
-      run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      FinishWearOutput(dir, run.result);
+      run.result = RunWearWithOutput(sc, o, dir, m, steps, &run.wall_s);
       const SimulatedDimensionSeries series = DimensionSeriesOf(run.result);
       for (const MeasuredDimensions& f : files) {
         run.dimensions.push_back(CompareDimensions(series, f));

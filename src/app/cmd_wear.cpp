@@ -1,5 +1,4 @@
 // conforma wear --scenario F [--model M] --out DIR: the wear loop of a scenario (wear_simulation.hpp).
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -32,15 +31,8 @@ void RegisterWearCommand(CLI::App& app) {
     o.total_km = a->km;
     const int total = a->steps >= 0 ? a->steps : sc.update.steps;
     const std::string label = to_string(o.model);
-    BeginWearOutput(a->out);
-    o.on_step = [a, total, label](const WearStepRecord& s) {
-      WriteWearStep(a->out, s);
-      PrintProgress(label, s, total);
-    };
-    const auto t0 = std::chrono::steady_clock::now();
-    const WearSimulationResult r = RunWearSimulation(sc, o);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    FinishWearOutput(a->out, r);
+    double wall = 0.0;
+    const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall);
     const double km = r.steps.empty() ? 0.0 : r.steps.back().km;
     std::printf("%s: model %s, %zu steps, %.1f km, status %s, %.1f s -> %s/steps.csv\n", sc.name.c_str(), label.c_str(),
                 r.steps.size(), km, to_string(r.status), wall, a->out.c_str());

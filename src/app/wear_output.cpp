@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -87,6 +88,20 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
   }
   std::ofstream st(dir + "/status.txt");
   st << to_string(r.status) << "\n" << r.message << "\n";
+}
+
+WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
+                                       const std::string& label, int steps_total, double* wall_s) {
+  BeginWearOutput(dir);
+  options.on_step = [dir, label, steps_total](const WearStepRecord& s) {
+    WriteWearStep(dir, s);
+    PrintProgress(label, s, steps_total);
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  WearSimulationResult result = RunWearSimulation(scenario, options);
+  *wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  FinishWearOutput(dir, result);
+  return result;
 }
 
 void PrintProgress(const std::string& label, const WearStepRecord& s, int steps_total) {

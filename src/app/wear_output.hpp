@@ -15,5 +15,8 @@ void WriteWearStep(const std::string& dir, const WearStepRecord& step);
 void FinishWearOutput(const std::string& dir, const WearSimulationResult& result);
 // "\r[model] step j/n  km ..." on stderr when it is a terminal.
 void PrintProgress(const std::string& label, const WearStepRecord& step, int steps_total);
+// One run with all of the above in dir (progress labelled `label`, out of steps_total); its wall time in *wall_s.
+WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
+                                       const std::string& label, int steps_total, double* wall_s);
 
 }  // namespace conforma::cli
