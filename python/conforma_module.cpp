@@ -13,7 +13,7 @@
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
-#include "conforma/validation_manchester.hpp"
+#include "conforma/validation/validation_manchester.hpp"
 #include "conforma/wheel_contact.hpp"
 #include "conforma/wheel_dimensions.hpp"
 #include "interop.hpp"

@@ -2,6 +2,8 @@
 // is solved by Hertz and reproduces the hertz model bit for bit, a flange-root / groove patch by the conformal model,
 // a non-elliptic tread patch by KPEC; the choice is deterministic; zero creepage skips the tangential solve with
 // exactly zero forces (what FASTSIM gives there); leaving the non-wearing cells out of the wear step changes nothing.
+// test-links: validation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,7 +11,7 @@
 #include <optional>
 #include <thread>
 
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/error.hpp"
 #include "conforma/fastsim.hpp"
 #include "conforma/model_selection.hpp"
@@ -18,7 +20,7 @@
 #include "conforma/wear_simulation.hpp"
 #include "conforma/wheel_contact.hpp"
 #include "pipeline_test_geometry.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 using namespace conforma;
 

@@ -1,5 +1,7 @@
 // Reference BEM normal solver: Hertz (a/b = 0.2 ... 5), sphere on a plane (CONTACT reference), symmetry,
 // conservation, complementarity, FFT = direct summation, load/approach consistency, statuses and input errors.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

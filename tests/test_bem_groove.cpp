@@ -13,6 +13,8 @@
 // The longitudinal curvature is A = cos(theta_w) / (2 r) with the wheel rolling radius
 // r = 420 mm - R_r + t cos(theta) at the wheel point t (distance from the groove centre), theta_w the angle
 // of the wheel's own normal there (patch.hpp, Meusnier).
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,13 +1,15 @@
 // `conforma bench` machinery (benchmark_cases.hpp): the per-model patch solve against analytic solutions, the
 // reference BEM against Hertz, grid convergence of the tangential problem, and the fixed case set on shared data.
+// test-links: validation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/hertz.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

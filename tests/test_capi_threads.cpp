@@ -1,6 +1,8 @@
 // The C API (capi/conforma_c.h): several threads evaluating wheelset poses on ONE shared model handle give results
 // bit-identical to a serial run; the track-frame totals agree with the contact-frame patch forces; errors come
 // back as codes and texts, never as exceptions.
+// test-links: pipeline  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,6 @@
 // Conformity index, paper 003 eq. 13.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,7 @@
 #include "conforma/conformity.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kik_piotrowski.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

@@ -1,6 +1,8 @@
 // EN 15302 equivalent-conicity benchmark (shared data profiles/en15302): Delta r(y) of the nine wheel/rail
 // combinations E1..E9 against the reference functions dr_ce_E<n>.dat, and the equivalent conicity against
 // the reference tolerance band ben_E<n>.dat at every listed amplitude (runner: validation/en15302_conicity.cpp).
+// test-links: validation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +15,7 @@
 #include "conforma/conicity.hpp"
 #include "conforma/geometry.hpp"
 #include "conforma/error.hpp"
-#include "conforma/validation_en15302.hpp"
+#include "conforma/validation/validation_en15302.hpp"
 
 using namespace conforma;
 

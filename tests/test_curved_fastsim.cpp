@@ -1,5 +1,7 @@
 // Curved-patch FASTSIM (paper 003 eqs. 9-12): reduction to classic FASTSIM on a flat ellipse, Kalker's linear
 // theory through the SDEC flexibilities, full slip, the CONTACT reference case, frame rotation.
+// test-links: fastsim_ext  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

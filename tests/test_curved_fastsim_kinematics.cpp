@@ -1,5 +1,7 @@
 // Local rigid slip on a curved patch (local_creepage.hpp): rigid-body kinematics vs the reference-creepage mode on a
 // wheel rolling in a circular groove; the spin produced by the turning normal.
+// test-links: fastsim_ext  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,7 @@
 #include "conforma/curved_fastsim.hpp"
 #include "conforma/load_control.hpp"
 #include "conforma/local_creepage.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 using namespace conforma;
 

@@ -1,6 +1,8 @@
 // The wear loop's curving provider (MakeScenarioKinematics, wear_simulation.hpp): an accepted quasi-static solve is
 // returned and remembered per class; a class whose solve is not accepted reuses its last accepted solution, or the
 // kinematic estimate when it has none; every such class is counted.
+// test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <atomic>

@@ -3,6 +3,8 @@
 // flange-contact equilibrium (multi-start, derailed attempts rejected; kinematics_quasistatic.hpp).
 // Set-up: the Aosta scenario (ALn 501, S1002 on 60E1 at 1:20, r0 = 430 mm, its friction, elastic flange at 60 deg
 // in the curving solve; the first test's wheel forces use a rigid or an elastic flange as stated).
+// test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

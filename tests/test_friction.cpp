@@ -1,5 +1,7 @@
 // Friction laws f1a, f1b, f2 and the slope reduction k (paper 002 §2.2-2.3), variable-friction FASTSIM
 // (paper 002 §2.1), twin-disc creep curves (§3.2) and the identification of the law and k from a creep curve (§4).
+// test-links: fastsim_ext  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -2,6 +2,8 @@
 // supported format (Simpack .prw/.prr, MiniProf .ban/.whl new and old style, plain columns) are written to a
 // temporary folder and loaded. Each must either load into a finite profile or throw InputError; any other
 // exception, a crash or a non-finite profile fails. Deterministic (fixed seed).
+// test-links: profiles  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>

@@ -1,6 +1,8 @@
 // Wheel-rail contact geometry (geometry.hpp, contact_candidates.hpp, creepage.hpp): analytic shapes, a
 // brute-force check of the silhouette search with yaw, mirror symmetry of the two sides, two-point contact
 // candidates at the flange root, creepage limits and a randomized robustness sweep on S1002 / 60E1.
+// test-links: geometry  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,7 @@
 // Influence coefficients: closed forms against numerical quadrature of the point kernels, known values,
 // symmetries and the Blanco-Lorenzo correction structure (physics-reference §4.2-4.3, §10.2).
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

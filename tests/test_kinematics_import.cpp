@@ -1,5 +1,7 @@
 // Kinematics CSV import/export (kinematics_import.hpp): bit-identical round trip, free column order and extra
 // columns, default weights, errors naming the column / file:line.
+// test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

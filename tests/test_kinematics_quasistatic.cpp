@@ -2,6 +2,8 @@
 // of the angle of attack in curves, mirror symmetry of left/right curves, vehicle lateral equilibrium recomputed
 // from the contact forces at the solved samples, tread running on a large radius at balanced speed.
 // S1002 on 50E4 at 1:20 (the paper-003 metro track), Hertz + FASTSIM.
+// test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,7 @@
 // Conformal KP (Blanco-Lorenzo) reduces exactly to planar KP on flat patches; strip influence integrals agree
 // with the BEM helper's independent rectangle coefficients (influence.hpp).
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,8 @@
 // Conformal KP on CONTACT's deep conformal groove (shared data reference/contact_groove_li.csv, data README):
 // wheel circle R = 10 mm in grooves R = 10.25 ... 10.02 mm, fn_bar = 10 kN, G = 80 GPa, nu = 0.28,
 // rolling radius 420 mm. Compared with the Blanco-Lorenzo rows of CONTACT.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,7 +13,7 @@
 
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

@@ -1,4 +1,6 @@
 // KP and KPEC on Hertzian gaps against the exact Hertz solution (physics-reference §1.2, §3.2 table, §3.3).
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -6,7 +8,7 @@
 #include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

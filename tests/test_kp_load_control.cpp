@@ -1,11 +1,13 @@
 // Load control of the KP solvers: several patches of one wheel sharing one rigid approach.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "conforma/error.hpp"
 #include "conforma/load_control.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

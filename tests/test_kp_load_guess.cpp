@@ -1,13 +1,15 @@
 // Load control's first guess (LoadControlOptions::hertz_initial_guess) changes only the path of the iteration:
 // with and without it the KP load control converges to the same approach (a Hertzian, a groove and a two-patch
 // wheel, every KP model), and on a Hertzian patch the guess is already within a few per cent of the KPEC answer.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
 #include "conforma/load_control.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

@@ -1,6 +1,8 @@
 // The KP solvers refuse a PatchGeometry with a non-finite value, naming the field and the strip, whatever the
 // position of the bad value (the fast finiteness pass of kp_patch_interpolant.cpp must not miss any), and solve
 // the same patch unchanged when every value is finite; load control (which prepares each patch once) too.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,7 @@
 #include "conforma/error.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

@@ -2,6 +2,8 @@
 // integrals, kp_strip_integrals.cpp) against (a) high-precision values (mpmath, 40 digits, tanh-sinh quadrature split
 // at the point x = 0) and (b) the solver's former graded Gauss quadrature over a range of strip geometries, and the
 // strip influence integral built on it against the same integral with the quadrature inside.
+// test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

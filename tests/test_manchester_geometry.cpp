@@ -8,6 +8,8 @@
 // y to the RIGHT, z down): y_ours = -y_ws, yaw_ours = -yaw, roll_ours = roll_ws (both raise the left wheel
 // for > 0), rail-profile y_ours = -y_cp_rail (CONTACT's left-rail y points to the gauge side), contact angle
 // delta_ours = delta_cp (+ towards the gauge side), creepages identical (creepage.hpp convention).
+// test-links: geometry  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

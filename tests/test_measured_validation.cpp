@@ -1,6 +1,8 @@
 // Validation against measured wheels (measured_validation.hpp): the MD061 file as shipped, clear errors for malformed
 // files, interpolation between wear steps, the profile normal distance on an exactly offset curve, and an end-to-end
 // run whose "measured" data are the simulation's own output (zero error), through the library and the CLI.
+// test-links: app  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -16,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "conforma/error.hpp"
-#include "conforma/measured_validation.hpp"
+#include "conforma/validation/measured_validation.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/scenario.hpp"
 #include "conforma/standard_profiles.hpp"

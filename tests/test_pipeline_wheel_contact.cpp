@@ -1,5 +1,7 @@
 // The wheel-contact pipeline (wheel_contact.hpp): mirror symmetry of the two wheels, load mode vs approach mode,
 // conservation of the per-cell fields, zero creepage, no contact and bad input.
+// test-links: pipeline  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

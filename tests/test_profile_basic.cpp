@@ -1,4 +1,6 @@
 // Arc-length parametrisation, normals and curvature of the Profile curve against a circle (exact geometry).
+// test-links: profiles  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,7 @@
 // Profile file readers and writers: every shared test-bank file loads or is refused with a clear message,
 // orientation conventions (MiniProf vs Simpack copies of the same rail), round trips, malformed-input errors.
+// test-links: profiles  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

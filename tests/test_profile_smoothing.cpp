@@ -1,5 +1,7 @@
 // Robust fitting: S1002 sampled with Gaussian noise, shuffled and with duplicated points is recovered by the
 // smoothing spline (CHOLMOD); zero smoothing interpolates the points unchanged.
+// test-links: profiles  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <algorithm>

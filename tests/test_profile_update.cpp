@@ -1,5 +1,7 @@
 // Profile update: mass-conserving smoothing, scaling to the cap, removal along the normal,
 // re-parametrisation and validity (paper 003 §6 eqs. 18-19, paper 001 §6.2 eqs. 28-30).
+// test-links: wear  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

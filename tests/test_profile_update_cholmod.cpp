@@ -1,5 +1,7 @@
 // The CHOLMOD wrapper used by the mass-conserving smoothing: solves against a dense Eigen reference,
 // reports a matrix that is not positive definite.
+// test-links: base  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

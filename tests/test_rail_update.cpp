@@ -1,4 +1,6 @@
 // Rail update by averaging virtual rail profiles (paper 003 §6, Fig. 11).
+// test-links: wear  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,4 +1,6 @@
 // Scenario files (scenario.hpp): the two shipped scenarios, unknown keys and bad values named with the file.
+// test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,7 @@
 // SDEC reduction (paper 003 §4.2): elliptic patches give the ellipse, KPEC on a Hertzian gap gives Hertz a, b,
 // a double half-ellipse keeps its asymmetry; the KP SDEC drives FASTSIM on the real KP patch.
+// test-links: fastsim_ext  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,7 @@
 #include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/sdec.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 using namespace conforma;
 

@@ -1,11 +1,13 @@
 // Stress suite, fast CI subset (stress.hpp; the long run is `conforma stress --cases 100000`): ~2000 random
 // situations over new, worn and noisy profiles, grooves and degenerate patches without NaN/inf, crash or force
 // jump; issue 3's wheelset check on a subset; identical results for 1 and 2 OpenMP threads.
+// test-links: validation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
-#include "conforma/stress.hpp"
+#include "conforma/validation/stress.hpp"
 
 namespace conforma {
 namespace {

@@ -1,11 +1,13 @@
 // Conformity-threshold study (threshold.hpp): the fit on synthetic data with a known threshold, conformal equal
 // to planar on a flat patch, and the difference growing with the conformity of CONTACT's grooves.
+// test-links: validation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "conforma/threshold.hpp"
-#include "kp_test_patches.hpp"
+#include "conforma/validation/threshold.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 namespace {

@@ -1,12 +1,14 @@
 // Manchester benchmark A-2.2 (left wheel, 21 cases) through the whole pipeline against CONTACT's results:
 // load control, maximum pressure per model, creep forces with the file's creepages (issue 3 item 5, issue 4 item 6).
+// test-links: validation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "conforma/validation_manchester.hpp"
+#include "conforma/validation/validation_manchester.hpp"
 
 using namespace conforma;
 

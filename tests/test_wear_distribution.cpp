@@ -1,5 +1,7 @@
 // Wear distributions: longitudinal integration, circumference spreading, time/contact-point/class sums
 // (paper 001 §6.2 eqs. 23-27, paper 003 §6 steps 1-3).
+// test-links: wear  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

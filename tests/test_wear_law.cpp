@@ -1,5 +1,7 @@
 // Wear laws: USFD regimes and units (paper 003 eqs. 14-17, physics-reference §8.1), Archard maps
 // (paper 000 Tables 2-3, physics-reference §8.2), wear-law files.
+// test-links: wear  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 
 #include <cmath>

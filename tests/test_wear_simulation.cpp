@@ -1,5 +1,7 @@
 // Wear loop (wear_simulation.hpp): valid profiles after several steps for every model, the cap, the same result for
 // any thread count, and an exported + re-imported kinematics file giving the same wear as the direct run.
+// test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
 #include <gtest/gtest.h>
 #include <omp.h>
 

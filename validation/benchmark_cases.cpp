@@ -3,14 +3,14 @@
 #include <cmath>
 #include <cstdio>
 
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/contact_candidates.hpp"
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
-#include "conforma/validation_manchester.hpp"
+#include "conforma/validation/validation_manchester.hpp"
 // The analytic groove patch shared with the KP and BEM groove tests (one construction, not a copy).
-#include "../tests/kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 
 namespace conforma {
 

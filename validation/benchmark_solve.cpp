@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "conforma/bem_reference.hpp"
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/curved_fastsim.hpp"
 #include "conforma/error.hpp"
 #include "conforma/friction_law.hpp"

@@ -1,5 +1,5 @@
 // EN 15302 benchmark runner (validation_en15302.hpp).
-#include "conforma/validation_en15302.hpp"
+#include "conforma/validation/validation_en15302.hpp"
 
 #include <cmath>
 #include <fstream>

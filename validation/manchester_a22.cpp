@@ -5,7 +5,7 @@
 
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
-#include "conforma/validation_manchester.hpp"
+#include "conforma/validation/validation_manchester.hpp"
 
 namespace conforma {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "conforma/error.hpp"
-#include "conforma/measured_validation.hpp"
+#include "conforma/validation/measured_validation.hpp"
 
 namespace conforma {
 

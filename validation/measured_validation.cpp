@@ -1,6 +1,6 @@
 // Measured wheel reference dimensions against km: reading, interpolation of the simulated series between wear steps,
 // per-point errors and their RMS (measured_validation.hpp).
-#include "conforma/measured_validation.hpp"
+#include "conforma/validation/measured_validation.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -7,9 +7,9 @@
 #include <cstring>
 #include <random>
 
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/error.hpp"
-#include "conforma/stress.hpp"
+#include "conforma/validation/stress.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma {

@@ -4,7 +4,7 @@
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
-#include "conforma/stress.hpp"
+#include "conforma/validation/stress.hpp"
 
 namespace conforma {
 

@@ -5,7 +5,7 @@
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
-#include "conforma/threshold.hpp"
+#include "conforma/validation/threshold.hpp"
 
 namespace conforma {
 

@@ -6,7 +6,7 @@
 #include <Eigen/Dense>
 
 #include "conforma/error.hpp"
-#include "conforma/threshold.hpp"
+#include "conforma/validation/threshold.hpp"
 
 namespace conforma {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "conforma/error.hpp"
-#include "conforma/threshold.hpp"
+#include "conforma/validation/threshold.hpp"
 
 namespace conforma {
 

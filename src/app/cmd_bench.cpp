@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/error.hpp"
 
 namespace conforma::cli {

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "conforma/validation_manchester.hpp"
+#include "conforma/validation/validation_manchester.hpp"
 
 namespace conforma::cli {
 

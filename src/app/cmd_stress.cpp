@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "conforma/stress.hpp"
+#include "conforma/validation/stress.hpp"
 
 namespace conforma::cli {
 

@@ -10,7 +10,7 @@
 
 #include "commands.hpp"
 #include "conforma/error.hpp"
-#include "conforma/threshold.hpp"
+#include "conforma/validation/threshold.hpp"
 
 namespace conforma::cli {
 

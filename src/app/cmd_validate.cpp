@@ -21,7 +21,7 @@
 #include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
-#include "conforma/measured_validation.hpp"
+#include "conforma/validation/measured_validation.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/scenario.hpp"
 #include "conforma/wear_simulation.hpp"

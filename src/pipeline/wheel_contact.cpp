@@ -17,7 +17,7 @@
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/local_creepage.hpp"
 #include "conforma/model_selection.hpp"
-#include "pipeline/wheel_motion.hpp"
+#include "wheel_motion.hpp"
 
 namespace conforma {
 

@@ -1,4 +1,4 @@
-#include "pipeline/wheel_motion.hpp"
+#include "wheel_motion.hpp"
 
 namespace conforma {
 

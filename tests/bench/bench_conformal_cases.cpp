@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/load_control.hpp"
 #include "conforma/wheel_contact.hpp"
 

@@ -2,7 +2,7 @@
 // approach given and load given. Cases: a Hertzian tread patch (a/b = 1.33) and the R 10.05 mm conformal groove.
 #include <benchmark/benchmark.h>
 
-#include "../kp_test_patches.hpp"
+#include "conforma/validation/analytic_patches.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "conforma/benchmark_cases.hpp"
+#include "conforma/validation/benchmark_cases.hpp"
 
 namespace conforma {
 

@@ -5,7 +5,7 @@
 //               at the same normal force along the reference normal (fn_bar);
 //   tangential: the conformal model (conformal KP + curved FASTSIM) on a finer grid than any benchmarked one.
 // Cases: Manchester sweep (left wheel, every interpenetration region at the 10 kN Hertz push-down, creepages
-// of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of tests/kp_test_patches.hpp),
+// of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of conforma/validation/analytic_patches.hpp),
 // the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral shifts, and a flange-root two-patch
 // contact of S1002 / 60E1 at 1:40 (both patches).
 //
