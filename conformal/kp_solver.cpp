@@ -22,6 +22,7 @@ const char* to_string(KpStatus status) {
     case KpStatus::ContactAtPatchBoundary: return "contact_at_patch_boundary";
     case KpStatus::NoEquivalentEllipse: return "no_equivalent_ellipse";
     case KpStatus::InfluenceNotPositive: return "influence_not_positive";
+    case KpStatus::LoadNotReached: return "load_not_reached";
   }
   return "unknown";
 }

@@ -207,9 +207,9 @@ TEST(AutoModel, GrooveBenchCaseIsSolvedByTheConformalModelExactly) {
   const BenchCase groove = MakeGrooveBenchCases({10.05e-3}).front();
   PatchSolveOptions o;
   o.model = ContactModel::Auto;
-  const PatchSolution a = SolveBenchPatch(groove, o);
+  const BenchPatchResult a = SolveBenchCase(groove, o);
   o.model = ContactModel::Conformal;
-  const PatchSolution c = SolveBenchPatch(groove, o);
+  const BenchPatchResult c = SolveBenchCase(groove, o);
   ASSERT_TRUE(a.in_contact);
   EXPECT_EQ(a.pmax_Pa, c.pmax_Pa);
   EXPECT_EQ(a.area_m2, c.area_m2);

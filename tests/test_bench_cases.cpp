@@ -35,7 +35,7 @@ TEST(BenchCases, EveryModelReproducesHertzOnAnEllipticPatch) {
   for (ContactModel m : {ContactModel::Hertz, ContactModel::Kpec, ContactModel::Conformal}) {
     PatchSolveOptions o;
     o.model = m;
-    const PatchSolution s = SolveBenchPatch(c, o);
+    const BenchPatchResult s = SolveBenchCase(c, o);
     ASSERT_TRUE(s.in_contact) << to_string(m);
     EXPECT_NEAR(s.fn_N, c.normal_load_N, 1e-5 * c.normal_load_N) << to_string(m);
     // Hertz, KPEC and the conformal model (KPEC's variable virtual penetration, exact for elliptic patches,
@@ -75,7 +75,7 @@ TEST(BenchCases, WearIndexIsTractionTimesSlipAndFullSlipGivesMuN) {
       PatchSolveOptions o;
       o.model = m;
       o.fastsim_elements = elements[k];
-      const PatchSolution s = SolveBenchPatch(c, o);
+      const BenchPatchResult s = SolveBenchCase(c, o);
       EXPECT_NEAR(std::hypot(s.fx_N, s.fy_N) / (c.friction_coefficient * s.fn_N), 1.0, 1e-3) << to_string(m);
       error[k] = 1.0 - s.wear_index_N / (c.friction_coefficient * s.fn_N * 0.05);
       EXPECT_GT(error[k], 0.0) << to_string(m);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "conforma/curved_fastsim.hpp"
+#include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
 #include "conforma/local_creepage.hpp"
 #include "conforma/validation/analytic_patches.hpp"
@@ -95,7 +96,7 @@ TEST(CurvedFastsimConformal, GrooveSymmetryAndFullSlip) {
   Material material;
   const double r0 = 0.420, V = 20.0;
   const PatchGeometry patch = kp_test::GroovePatch(10.0e-3, 10.5e-3, r0, 12.0e-3, 241);
-  LoadControlOptions load;
+  KpLoadOptions load;
   load.kp = ConformalKpOptions(material);
   const KpResult kp = SolveKikPiotrowskiForLoad(patch, 1.0e4, load);
   ASSERT_EQ(kp.status, KpStatus::Ok);

@@ -51,9 +51,9 @@ TEST(KpConformal, EqualsPlanarKpOnFlatPatchesRandomCases) {
   for (int trial = 0; trial < 40; ++trial) {
     const PatchGeometry patch = RandomPatch(rng, 0.0);
     const double load = 1.0e3 + 1.0e5 * unit(rng);
-    LoadControlOptions planar_options;
+    KpLoadOptions planar_options;
     planar_options.kp = trial % 3 == 0 ? KpecOptions(material) : PlanarKpOptions(material);
-    LoadControlOptions conformal_options = planar_options;
+    KpLoadOptions conformal_options = planar_options;
     conformal_options.kp.influence = KpInfluence::BlancoLorenzo;
     conformal_options.kp.coupling = trial % 2 ? ConformalCoupling::PaperSingleBody : ConformalCoupling::CombinedBodies;
     const KpResult planar = SolveKikPiotrowskiForLoad(patch, load, planar_options);

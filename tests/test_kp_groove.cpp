@@ -60,7 +60,7 @@ Material GrooveMaterial() {
 
 KpResult SolveGroove(double groove_radius_mm, const KpOptions& kp) {
   const PatchGeometry patch = kp_test::GroovePatch(10.0e-3, groove_radius_mm * 1e-3, 0.420, 12.0e-3, 241);
-  LoadControlOptions options;
+  KpLoadOptions options;
   options.kp = kp;
   return SolveKikPiotrowskiForLoad(patch, 1.0e4, options);
 }

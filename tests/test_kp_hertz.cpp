@@ -27,7 +27,7 @@ Case Solve(double ratio, double load_N) {
   out.ratio = ratio;
   out.hertz = SolveHertzForLoad(curv.A, curv.B, load_N, material);
   const PatchGeometry patch = kp_test::HertzianPatch(curv.A, curv.B, 1.6 * out.hertz.b_m, 81);
-  LoadControlOptions options;
+  KpLoadOptions options;
   options.kp = PlanarKpOptions(material);
   out.kp = SolveKikPiotrowskiForLoad(patch, load_N, options);
   options.kp = KpecOptions(material);

@@ -1,11 +1,13 @@
-// Load control of the KP solvers: several patches of one wheel sharing one rigid approach.
+// Load control of the KP solvers: the one load control (load_control.hpp) and the KP load-given mode.
 // test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "conforma/error.hpp"
+#include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
 #include "conforma/validation/analytic_patches.hpp"
 
@@ -22,30 +24,36 @@ TEST(KpLoadControl, QuadraticGapGivesLoadProportionalToApproachToThePowerOneAndA
   EXPECT_NEAR(two.pmax_Pa / one.pmax_Pa, std::sqrt(2.0), 1e-9);
 }
 
-TEST(KpLoadControl, TwoPatchesShareOneApproach) {
+// The one load control (load_control.hpp) on an analytic carried load N = C (g + push)^1.5: the root is exact.
+TEST(KpLoadControl, OneLoadControlFindsTheAnalyticPush) {
+  const double C = 4.0e11, g = 2.0e-5, load = 8.0e4;
+  int evaluations = 0;
+  auto carried = [&](double push) {
+    ++evaluations;
+    const double x = std::max(g + push, 0.0);
+    return C * x * std::sqrt(x);
+  };
+  const LoadControlResult r = SolveLoadControl(carried, load, g, 1e-12);
+  ASSERT_EQ(r.status, LoadControlStatus::Ok);
+  EXPECT_NEAR(g + r.push_m, std::pow(load / C, 2.0 / 3.0), 1e-12 * g);
+  EXPECT_LE(std::fabs(r.residual_N), 1e-12 * load);
+  // a load the contact cannot carry (saturating N) is a status, not a number
+  auto saturating = [&](double push) { return 0.5 * load * std::tanh(1e5 * std::max(push, 0.0)); };
+  EXPECT_EQ(SolveLoadControl(saturating, load, g, 1e-10).status, LoadControlStatus::NoBracket);
+}
+
+// Load given on one KP patch reaches the load and is the approach-given solution at its approach.
+TEST(KpLoadControl, LoadGivenIsTheApproachGivenSolutionAtItsApproach) {
   Material material;
-  const PatchGeometry tread = kp_test::HertzianPatch(0.8, 1.6, 0.012, 81);
-  const PatchGeometry flange = kp_test::HertzianPatch(1.2, 8.0, 0.006, 61);
-  const double offset = 2.0e-5;
-  std::vector<WheelPatch> patches = {{&tread, 0.0, 1.0}, {&flange, offset, 0.6}};
-  LoadControlOptions options;
+  const PatchGeometry patch = kp_test::HertzianPatch(0.8, 1.6, 0.012, 81);
+  KpLoadOptions options;
   options.kp = PlanarKpOptions(material);
-  const WheelNormalResult wheel = SolveWheelForLoad(patches, 80.0e3, options);
-  ASSERT_EQ(wheel.status, LoadControlStatus::Ok);
-  EXPECT_NEAR(wheel.load_N, 80.0e3, 1e-6 * 80.0e3);
-  EXPECT_NEAR(wheel.patches[0].fn_N + 0.6 * wheel.patches[1].fn_N, 80.0e3, 1e-6 * 80.0e3);
-  EXPECT_GT(wheel.patches[1].fn_N, 0.0);
-  EXPECT_NEAR(wheel.patches[0].approach_m - wheel.patches[1].approach_m, offset, 1e-15);
-  // Approach-given mode at the found approach reproduces the same forces.
-  const WheelNormalResult again = SolveWheelForApproach(patches, wheel.approach_m, options.kp);
-  EXPECT_NEAR(again.load_N, wheel.load_N, 1e-9 * wheel.load_N);
-  // A light load does not reach the second patch.
-  const WheelNormalResult light = SolveWheelForLoad(patches, 1.0e3, options);
-  ASSERT_EQ(light.status, LoadControlStatus::Ok);
-  EXPECT_LT(light.approach_m, offset);
-  EXPECT_EQ(light.patches[1].status, KpStatus::NoContact);
-  EXPECT_EQ(light.patches[1].fn_N, 0.0);
-  EXPECT_NEAR(light.patches[0].fn_N, 1.0e3, 1e-6 * 1.0e3);
+  const KpResult by_load = SolveKikPiotrowskiForLoad(patch, 80.0e3, options);
+  ASSERT_EQ(by_load.status, KpStatus::Ok);
+  EXPECT_NEAR(by_load.fn_N, 80.0e3, options.relative_tolerance * 80.0e3);
+  const KpResult again = SolveKikPiotrowskiForApproach(patch, by_load.approach_m, options.kp);
+  EXPECT_EQ(again.fn_N, by_load.fn_N);
+  EXPECT_EQ(again.pmax_Pa, by_load.pmax_Pa);
 }
 
 TEST(KpLoadControl, LoadGrowsMonotonicallyWithApproach) {
@@ -62,7 +70,7 @@ TEST(KpLoadControl, LoadGrowsMonotonicallyWithApproach) {
 TEST(KpLoadControl, ZeroLoadAndBadInput) {
   Material material;
   const PatchGeometry patch = kp_test::HertzianPatch(0.8, 1.6, 0.012, 81);
-  LoadControlOptions options;
+  KpLoadOptions options;
   options.kp = PlanarKpOptions(material);
   const KpResult none = SolveKikPiotrowskiForLoad(patch, 0.0, options);
   EXPECT_EQ(none.status, KpStatus::NoContact);

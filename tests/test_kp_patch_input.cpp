@@ -41,7 +41,7 @@ TEST(KpPatchInput, EveryNonFiniteValueIsNamed) {
                     std::string::npos)
               << error.what();
         }
-        LoadControlOptions load_options;
+        KpLoadOptions load_options;
         load_options.kp = options;
         EXPECT_THROW(SolveKikPiotrowskiForLoad(patch, 1e4, load_options), InputError) << field << " " << index;
       }

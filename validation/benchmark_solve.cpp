@@ -11,7 +11,7 @@
 #include "conforma/friction_law.hpp"
 #include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
-#include "conforma/load_control.hpp"
+#include "conforma/patch_solver.hpp"
 #include "conforma/model_selection.hpp"
 
 namespace conforma {
@@ -30,114 +30,100 @@ std::vector<BenchGrid> DefaultBenchGrids() { return {{11, 10}, {21, 20}, {31, 30
 
 namespace {
 
-KpOptions KpOptionsFor(const PatchSolveOptions& o, const Material& material) {
-  return KpOptionsForModel(o.model, material, o.variable_epsilon, o.kp_strips);
+// The pipeline's options for a bench solve (the defaults of WheelContactOptions, the case's material and friction).
+WheelContactOptions ContactOptionsFor(const BenchCase& c, const PatchSolveOptions& o) {
+  WheelContactOptions w;
+  w.model = o.model;
+  w.material = c.material;
+  w.friction_coefficient = c.friction_coefficient;
+  w.kp_strips = o.kp_strips;
+  w.fastsim_elements = o.fastsim_elements;
+  w.load_tolerance = o.load_tolerance;
+  w.conformal_variable_penetration = o.variable_epsilon;
+  return w;
 }
 
-PatchSolution SolveHertzModel(const BenchCase& c, const PatchSolveOptions& o) {
-  PatchSolution out;
-  const HertzResult h = o.approach_m > 0.0
-                            ? SolveHertzForApproach(c.hertz_A_per_m, c.hertz_B_per_m, o.approach_m, c.material)
-                            : SolveHertzForLoad(c.hertz_A_per_m, c.hertz_B_per_m, c.normal_load_N, c.material);
-  out.normal_status = to_string(h.status);
-  if (h.status != HertzStatus::Ok) return out;
-  out.in_contact = true;
-  out.pmax_Pa = h.p0_Pa;
-  out.area_m2 = M_PI * h.a_m * h.b_m;
-  out.fn_N = h.normal_force_N;
-  out.approach_m = h.approach_m;
-  if (!o.solve_tangential) return out;
-  FastsimHertzInput in;
-  in.a_m = h.a_m;
-  in.b_m = h.b_m;
-  in.normal_force_N = h.normal_force_N;
-  in.creepages = c.creepages;
-  in.friction_coefficient = c.friction_coefficient;
-  in.material = c.material;
-  in.nx = in.ny = o.fastsim_elements;
-  in.rolling_speed_m_per_s = 1.0;  // frictional power per unit speed = wear index
-  const FastsimResult t = SolveFastsimHertz(in, FastsimOptions{});
-  out.tangential_status = to_string(t.status);
-  out.fx_N = t.fx_N;
-  out.fy_N = t.fy_N;
-  out.wear_index_N = t.frictional_power_W;
-  return out;
-}
-
-// `auto`: the model chosen for the case's patch (model_selection.hpp) at its rigid approach, or, for a patch built
-// touching (rigid_approach_m = 0, e.g. the analytic grooves), at the Hertz approach for the case's load.
-ContactModel ResolveModel(const BenchCase& c, const PatchSolveOptions& o) {
-  if (o.model != ContactModel::Auto) return o.model;
+// The case's patch: its curved patch and its rigid point (the Hertz curvatures at the smallest gap).
+RigidContactPoint HertzPointOf(const BenchCase& c) {
   RigidContactPoint point;
   point.hertz_A_per_m = c.hertz_A_per_m;
   point.hertz_B_per_m = c.hertz_B_per_m;
-  double approach = c.patch.rigid_approach_m;
-  if (!(approach > 0.0)) {
-    const HertzResult h = SolveHertzForLoad(c.hertz_A_per_m, c.hertz_B_per_m, c.normal_load_N, c.material);
-    approach = h.status == HertzStatus::Ok ? h.approach_m : 0.0;
-  }
-  return SelectContactModel(c.patch, approach, &point).model;
+  return point;
+}
+
+// Hertz approach of the case's load at its curvatures, or 0 without a Hertz solution.
+double HertzApproach(const BenchCase& c) {
+  const HertzResult h = SolveHertzForLoad(c.hertz_A_per_m, c.hertz_B_per_m, c.normal_load_N, c.material);
+  return h.status == HertzStatus::Ok ? h.approach_m : 0.0;
+}
+
+// `auto` chooses at the patch's rigid approach, or, for a patch built touching (rigid_approach_m = 0, e.g. the
+// analytic grooves), at the Hertz approach for the case's load.
+double SelectionApproach(const BenchCase& c) {
+  return c.patch.rigid_approach_m > 0.0 ? c.patch.rigid_approach_m : HertzApproach(c);
 }
 
 }  // namespace
 
 PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& options) {
   options.validate();
-  PatchSolveOptions o = options;
-  o.model = ResolveModel(c, options);  // auto: the per-patch choice, then that model's solve
-  if (o.model == ContactModel::Hertz) return SolveHertzModel(c, o);
-  PatchSolution out;
-  LoadControlOptions lo;
-  lo.kp = KpOptionsFor(o, c.material);
-  lo.relative_tolerance = o.load_tolerance;
-  const KpResult kp = o.approach_m > 0.0 ? SolveKikPiotrowskiForApproach(c.patch, o.approach_m, lo.kp)
-                                         : SolveKikPiotrowskiForLoad(c.patch, c.normal_load_N, lo);
-  out.normal_status = to_string(kp.status);
-  if ((kp.status != KpStatus::Ok && kp.status != KpStatus::ContactAtPatchBoundary) || !(kp.fn_N > 0.0)) return out;
+  const RigidContactPoint point = HertzPointOf(c);
+  PatchProblem problem;
+  problem.model = options.model;
+  problem.input = PatchInput{&c.patch, &point};
+  problem.approach_m = options.approach_m;
+  problem.normal_load_N = c.normal_load_N;
+  // the load control starts at the Hertz approach (or the rigid approach where Hertz has no solution)
+  const double hertz_approach = HertzApproach(c);
+  problem.first_guess_approach_m = hertz_approach > 0.0 ? hertz_approach : std::max(c.patch.rigid_approach_m, 1e-5);
+  problem.selection_approach_m = SelectionApproach(c);
+  problem.creepages.reference = c.creepages;
+  problem.rolling_speed_m_per_s = 1.0;  // frictional power per unit speed = wear index
+  problem.solve_tangential = options.solve_tangential;
+  return SolvePatch(problem, ContactOptionsFor(c, options));
+}
+
+BenchPatchResult SummariseBenchPatch(const PatchSolution& s) {
+  BenchPatchResult out;
+  out.model = s.model;
+  out.normal_status = s.normal.status;
+  out.tangential_status = s.tangential.status;
+  const bool kp = s.model != ContactModel::Hertz;
+  if (!s.normal.in_contact || (kp && !(s.normal.kp.fn_N > 0.0))) return out;
   out.in_contact = true;
-  out.pmax_Pa = kp.pmax_Pa;
-  out.area_m2 = kp.area_m2;
-  out.fn_N = kp.fn_N;
-  out.approach_m = kp.approach_m;
-  out.alpha_c_deg = kp.alpha_c_deg;
-  if (!o.solve_tangential) return out;
-  CurvedFastsimOptions co;
-  co.elements_per_strip = o.fastsim_elements;
-  co.load_N = kp.fn_surface_N;
-  CurvedFastsimResult t;
-  if (o.model == ContactModel::Conformal) {
-    CurvedFastsimInput in;
-    in.strip_creepages = {c.creepages};
-    in.friction = FrictionLaw::Constant(c.friction_coefficient);
-    in.material = c.material;
-    in.rolling_speed_m_per_s = 1.0;
-    t = SolveCurvedFastsim(kp, in, co);
+  out.pmax_Pa = s.normal.pmax_Pa;
+  out.area_m2 = s.normal.area_m2;
+  out.fn_N = kp ? s.normal.kp.fn_N : s.normal.fn_N;
+  out.approach_m = s.approach_m;
+  out.alpha_c_deg = s.normal.alpha_c_deg;
+  if (!s.tangential.solved) return out;
+  out.fx_N = s.tangential.fx_N;
+  out.fy_N = s.tangential.fy_N;
+  if (!kp) {
+    out.wear_index_N = s.tangential.frictional_power_W;  // at unit rolling speed
   } else {
-    t = SolveFastsimOnKpPatch(kp, c.creepages, FrictionLaw::Constant(c.friction_coefficient), c.material, co);
+    // sum |p . s| dA (the KP-patch FASTSIM reports the frictional power only with a rolling speed; compute it here
+    // from the field so that both variants are the same sum)
+    double wear = 0.0;
+    const FastsimResult& f = s.tangential.field;
+    for (size_t e = 0; e < f.area_m2.size(); ++e)
+      wear += std::fabs(f.px_Pa[e] * f.sx[e] + f.py_Pa[e] * f.sy[e]) * f.area_m2[e];
+    out.wear_index_N = wear;
   }
-  out.tangential_status = to_string(t.status);
-  out.fx_N = t.force_reference_N.x();
-  out.fy_N = t.force_reference_N.y();
-  // sum |p . s| dA (the KP-patch FASTSIM reports the frictional power only with a rolling speed; compute it here
-  // from the field so that both variants are the same sum)
-  double wear = 0.0;
-  const FastsimResult& f = t.field;
-  for (size_t e = 0; e < f.area_m2.size(); ++e) wear += std::fabs(f.px_Pa[e] * f.sx[e] + f.py_Pa[e] * f.sy[e]) * f.area_m2[e];
-  out.wear_index_N = wear;
   return out;
+}
+
+BenchPatchResult SolveBenchCase(const BenchCase& c, const PatchSolveOptions& options) {
+  return SummariseBenchPatch(SolveBenchPatch(c, options));
 }
 
 double NormalForceAtApproach(const BenchCase& c, const PatchSolveOptions& options, double approach_m) {
   options.validate();
-  PatchSolveOptions o = options;
-  o.model = ResolveModel(c, options);
   if (!(approach_m > 0.0)) return 0.0;
-  if (o.model == ContactModel::Hertz) {
-    const HertzResult h = SolveHertzForApproach(c.hertz_A_per_m, c.hertz_B_per_m, approach_m, c.material);
-    return h.status == HertzStatus::Ok ? h.normal_force_N : 0.0;
-  }
-  const KpResult kp = SolveKikPiotrowskiForApproach(c.patch, approach_m, KpOptionsFor(o, c.material));
-  return kp.fn_N;
+  PatchSolveOptions o = options;
+  o.approach_m = approach_m;
+  o.solve_tangential = false;
+  return SolveBenchCase(c, o).fn_N;
 }
 
 BemReferenceSolution SolveBenchReference(const BenchCase& c, int bem_x_elements) {
@@ -193,7 +179,7 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
     ref_options.kp_strips = options.tangential_reference.kp_strips;
     ref_options.fastsim_elements = options.tangential_reference.fastsim_elements;
     ref_options.load_tolerance = 1e-10;
-    const PatchSolution tangential = SolveBenchPatch(c, ref_options);
+    const BenchPatchResult tangential = SolveBenchCase(c, ref_options);
     const double ft_ref = std::max(std::hypot(tangential.fx_N, tangential.fy_N), 1e-9 * c.normal_load_N);
     struct Variant {
       ContactModel model;
@@ -210,16 +196,16 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         o.variable_epsilon = v.variable_epsilon;
         o.kp_strips = grid.kp_strips;
         o.fastsim_elements = grid.fastsim_elements;
-        PatchSolution s;
+        BenchPatchResult s;
         BenchRow row;
-        row.time_us = MedianTimeUs([&] { s = SolveBenchPatch(c, o); }, options);
+        row.time_us = MedianTimeUs([&] { s = SolveBenchCase(c, o); }, options);
         if (s.in_contact && s.approach_m > 0.0) {
           PatchSolveOptions a = o;
           a.approach_m = s.approach_m;
-          PatchSolution sa;
-          row.time_approach_us = MedianTimeUs([&] { sa = SolveBenchPatch(c, a); }, options);
+          BenchPatchResult sa;
+          row.time_approach_us = MedianTimeUs([&] { sa = SolveBenchCase(c, a); }, options);
           a.solve_tangential = false;
-          row.time_normal_us = MedianTimeUs([&] { sa = SolveBenchPatch(c, a); }, options);
+          row.time_normal_us = MedianTimeUs([&] { sa = SolveBenchCase(c, a); }, options);
         }
         row.model = v.name;
         row.grid = grid.label();
@@ -232,7 +218,7 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         row.err_fx = (s.fx_N - tangential.fx_N) / ft_ref;
         row.err_fy = (s.fy_N - tangential.fy_N) / ft_ref;
         row.err_wear = Relative(s.wear_index_N, tangential.wear_index_N);
-        const ContactModel solved = ResolveModel(c, o);  // auto: the chosen model, appended to the status
+        const ContactModel solved = s.model;  // auto: the chosen model, appended to the status
         if (v.model == ContactModel::Auto) row.status += std::string("/") + to_string(solved);
         row.alpha_c_deg = solved == ContactModel::Hertz ? tangential.alpha_c_deg : s.alpha_c_deg;
         rows.push_back(row);

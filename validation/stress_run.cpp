@@ -42,7 +42,7 @@ void AddReport(const WheelContactReport& r, ResultHash* h) {
   }
 }
 
-void AddSolution(const PatchSolution& s, ResultHash* h) {
+void AddSolution(const BenchPatchResult& s, ResultHash* h) {
   for (double v : {s.pmax_Pa, s.area_m2, s.fn_N, s.fx_N, s.fy_N, s.wear_index_N, s.approach_m, s.alpha_c_deg})
     h->add(v);
 }
@@ -232,7 +232,7 @@ void RunPatchCase(long i, std::mt19937_64& rng, CaseOutcome* out) {
                 degenerate ? (" kind " + std::to_string(kind)).c_str() : "", to_string(o.model), c.normal_load_N);
   ResultHash h;
   try {
-    const PatchSolution s = SolveBenchPatch(c, o);
+    const BenchPatchResult s = SolveBenchCase(c, o);
     AddSolution(s, &h);
     out->patches += s.in_contact;
     out->no_contact |= !s.in_contact;

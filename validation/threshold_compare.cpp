@@ -37,7 +37,7 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
   o.fastsim_elements = options.fastsim_elements;
   o.variable_epsilon = options.variable_epsilon;
   o.model = ContactModel::Conformal;
-  const PatchSolution c = SolveBenchPatch(situation, o);
+  const BenchPatchResult c = SolveBenchCase(situation, o);
   // The planar KP-type model with the SAME virtual-penetration rule as the conformal model (KPEC for the default
   // variable eps, KP for eps = 0.55), so that the difference isolates the conformity (curved surface + Blanco
   // influence) and not the penetration rule.
@@ -45,7 +45,7 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
             : o.variable_epsilon                       ? ContactModel::Kpec
                                                        : ContactModel::Kp;
   ThresholdPoint t;
-  PatchSolution p;
+  BenchPatchResult p;
   if (options.against == PlanarComparison::FlattenedKp) {
     BenchCase flat = situation;
     try {
@@ -54,9 +54,9 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
       t.name = situation.name, t.family = situation.family, t.status = std::string("flatten: ") + e.what();
       return t;
     }
-    p = SolveBenchPatch(flat, o);
+    p = SolveBenchCase(flat, o);
   } else {
-    p = SolveBenchPatch(situation, o);
+    p = SolveBenchCase(situation, o);
   }
   t.name = situation.name;
   t.family = situation.family;

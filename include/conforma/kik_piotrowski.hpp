@@ -38,6 +38,8 @@ enum class KpStatus {
                            // for the part inside)
   NoEquivalentEllipse,     // KPEC only: no Hertz solution for the equivalent ellipse
   InfluenceNotPositive,    // conformal only: the corrected influence integral is <= 0 (normals turned > 90 deg)
+  LoadNotReached,          // load given (SolveKikPiotrowskiForLoad): the load control did not reach the load; the
+                           // last iterate is returned
 };
 const char* to_string(KpStatus status);
 
@@ -111,6 +113,17 @@ KpOptions ConformalKpecOptions(const Material& material);
 
 // Pressure at (x, s) of a solved patch (0 outside the contact).
 double KpPressureAt(const KpResult& result, double x_m, double s_m);
+
+// Load given, one patch: the approach at which the patch carries load_N along its reference normal, by the one
+// load control (load_control.hpp) started at the Hertz approach of the patch's minimum-gap strip (A there, B from
+// the gaps of its neighbours; docs/physics-reference.md §3.6) or at initial_approach_m.
+struct KpLoadOptions {
+  KpOptions kp;
+  double relative_tolerance = 1e-10;   // on the load
+  double initial_approach_m = 1.0e-5;  // first guess without hertz_initial_guess, or when Hertz has no solution
+  bool hertz_initial_guess = true;
+};
+KpResult SolveKikPiotrowskiForLoad(const PatchGeometry& patch, double load_N, const KpLoadOptions& options);
 
 // The pressure sampled on a grid of elements: each strip cut into elements_along_x equal elements across its
 // contact length; pressure at the element centre.

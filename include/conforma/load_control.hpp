@@ -1,57 +1,31 @@
 #pragma once
-// Load control for the KP solvers: one wheel with one or more contact patches that share ONE rigid approach
-// of the wheel. Each patch's gaps are relative to its own lowest point; gap_offset_m says how far that lowest
-// point is from the wheel's first touching point, so patch k sees the approach delta - gap_offset_k
-// (physics-reference §3.2 "force-controlled use").
-#include <vector>
-
-#include "conforma/kik_piotrowski.hpp"
-#include "conforma/patch.hpp"
+// The one load control: the push of a contact (a wheel's vertical push, or one patch's approach) at which the load
+// it carries equals a given load (docs/physics-reference.md §3.6). The carried load is a function of the push
+// beyond a first guess (the Hertz push-down); it must increase with the push. The bracket is found by expanding
+// from [-scale, 0.25 scale], then narrowed by the one root finder (root_finding.hpp). Used by the wheel pipeline
+// (wheel_contact.hpp, every model and patch of a wheel together), the one patch solver (patch_solver.hpp) and the
+// KP solver's load-given mode (kik_piotrowski.hpp).
+#include <functional>
 
 namespace conforma {
 
-struct WheelPatch {
-  const PatchGeometry* geometry = nullptr;  // not owned; must outlive the call
-  double gap_offset_m = 0.0;                // >= 0: extra approach before this patch touches
-  // Weight of this patch's fn_N in the wheel load (e.g. the cosine of its contact angle to carry a vertical
-  // load); 1 = the sum of the normal forces.
-  double load_weight = 1.0;
-};
-
 enum class LoadControlStatus {
   Ok,
-  NoContact,      // zero target load (or no patch can touch)
-  NotConverged,   // iteration limit reached: the last iterate is returned
+  NoBracket,     // no push in the expansion range carries the load (e.g. no contact at all, or a model failure)
+  NotConverged,  // the root finder stopped with a load error above 10x the tolerance: the last iterate is returned
 };
 const char* to_string(LoadControlStatus status);
 
-struct LoadControlOptions {
-  KpOptions kp;
-  double relative_tolerance = 1e-10;   // on the load
-  int max_iterations = 60;
-  double initial_approach_m = 1.0e-5;  // first guess (without hertz_initial_guess, or when that has no solution)
-  // First guess from Hertz: the first-touching patch alone carries the load (divided by its load_weight), with the
-  // curvatures A, B at its minimum-gap strip (B from the gaps of its neighbours). Saves about one KP solve per
-  // load-controlled patch; the converged result is the same within relative_tolerance.
-  bool hertz_initial_guess = true;
+struct LoadControlResult {
+  LoadControlStatus status = LoadControlStatus::NoBracket;
+  double push_m = 0.0;      // beyond the first guess; carried_load was evaluated here last (Ok / NotConverged)
+  double residual_N = 0.0;  // carried load - load at push_m
+  int iterations = 0;       // root-finder evaluations (not counting the bracket's)
 };
 
-struct WheelNormalResult {
-  LoadControlStatus status = LoadControlStatus::NoContact;
-  double approach_m = 0.0;     // common rigid approach of the wheel
-  double load_N = 0.0;         // sum of load_weight * fn_N
-  int evaluations = 0;         // solver calls
-  std::vector<KpResult> patches;  // one per WheelPatch, same order
-};
-
-// Plain mode: approach given -> forces of every patch.
-WheelNormalResult SolveWheelForApproach(const std::vector<WheelPatch>& patches, double approach_m,
-                                        const KpOptions& options);
-// Load given: the approach at which the patches together carry load_N (sum of load_weight * fn_N). N(delta) is
-// monotone; the iteration is a power-law secant (N ~ delta^1.5) safeguarded by a bracket.
-WheelNormalResult SolveWheelForLoad(const std::vector<WheelPatch>& patches, double load_N,
-                                    const LoadControlOptions& options);
-// One patch, load given (convenience).
-KpResult SolveKikPiotrowskiForLoad(const PatchGeometry& patch, double load_N, const LoadControlOptions& options);
+// carried_load(push) for push in metres beyond the first guess; scale_m (> 0) the size of the first bracket;
+// tolerance: |carried - load| <= relative_tolerance * load. load_N > 0.
+LoadControlResult SolveLoadControl(const std::function<double(double)>& carried_load, double load_N, double scale_m,
+                                   double relative_tolerance);
 
 }  // namespace conforma

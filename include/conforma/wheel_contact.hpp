@@ -26,41 +26,10 @@
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/material.hpp"
 #include "conforma/model_selection.hpp"
+#include "conforma/patch_solver.hpp"
+#include "conforma/wheel_contact_options.hpp"
 
 namespace conforma {
-
-struct WheelContactOptions {
-  ContactModel model = ContactModel::Hertz;
-  Material material;
-  double friction_coefficient = 0.3;
-  // Load control (default): the wheel is pushed down until the vertical components of its patch forces carry
-  // this load. Set vertical_load_N < 0 to use the pose as given (approach mode, for multibody coupling).
-  double vertical_load_N = 10e3;
-  double load_tolerance = 1e-6;        // relative
-  int fastsim_elements = 30;           // FASTSIM elements per strip (and strips for the Hertz ellipse)
-  int kp_strips = 31;                  // strips across the contact of the KP solvers
-  int bem_x_elements = 64;             // reference BEM elements along x (strips: the candidate's ds)
-  double candidate_strip_width_m = 0.1e-3;
-  // Load control, elastic flange: the wheel's reference (touching) position ignores gap minima whose rail
-  // contact angle exceeds this, so a flange pressed against the rail interpenetrates and carries its force
-  // elastically instead of lifting the wheel rigidly onto it (a worn, steep flange acts as a wall that the
-  // rigid model can only pass by climbing). Default: every contact point counts (rigid flange).
-  double max_touching_contact_angle_rad = 1e300;
-  double conformity_threshold_deg = 18.0;
-  // `conformal` model: virtual-penetration rule. true (default): CONTACT's variable eps (ConformalKpecOptions);
-  // false: Kik-Piotrowski's constant eps = 0.55 (ConformalKpOptions). See kik_piotrowski.hpp.
-  bool conformal_variable_penetration = true;
-  // `auto` model: thresholds of the per-patch choice (model_selection.hpp; its conformity threshold, 17.7 deg by
-  // default, is separate from conformity_threshold_deg, which only sets the KP models' is_conformal flag).
-  ModelSelectionOptions auto_selection;
-  bool solve_tangential = true;        // false: normal problem only
-  bool keep_fields = false;            // fill PatchReport::cells (pressure, traction, slip per element)
-  FastsimOptions fastsim;              // bound and marching (hertz model)
-  // When set, these creepages are used at every patch instead of the wheelset kinematics.
-  bool creepages_given = false;
-  Creepages creepages;
-  void validate() const;  // InputError naming the option
-};
 
 // One element of a solved patch (the fields the wear computation needs).
 struct ContactCell {
@@ -114,11 +83,6 @@ struct WheelContactReport {
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side)
   int load_iterations = 0;
 };
-
-// The Kik-Piotrowski options of a KP-type model (kp, kpec, conformal; conformal: variable or constant virtual
-// penetration) with `strips` strips across the contact. InputError for hertz / reference.
-KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool conformal_variable_penetration,
-                            int strips);
 
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
 // mode. Throws InputError for bad options or velocities; no contact is a status.

@@ -50,19 +50,6 @@ void WheelContactOptions::validate() const {
 
 namespace wheel_contact_detail {
 
-// The normal solution of one patch at one approach, whatever the model.
-struct NormalSolution {
-  bool in_contact = false;
-  std::string status;
-  double fn_N = 0.0, fs_N = 0.0;  // on the wheel, along n0 and t0 (reference frame of the patch)
-  double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0, width_m = 0.0, length_m = 0.0;
-  double a_m = 0.0, b_m = 0.0;  // Hertz only
-  double alpha_c_deg = 0.0;
-  bool is_conformal = false;
-  KpResult kp;  // KP models
-  HertzResult hertz;  // Hertz model
-};
-
 // Where a patch sits on the two profiles: patch-lateral s -> rail arc length and the wheel-profile y facing it
 // (the wheel point moves laterally with the rail point; exact for a wheelset without roll, O(roll) otherwise).
 struct ProfileMapping {
@@ -113,120 +100,6 @@ PatchFrame FrameOfContactAngle(double contact_angle_rad) {
   return {Eigen::Vector3d(0.0, -sd, cd), Eigen::Vector3d(0.0, cd, sd)};
 }
 
-// The KP options of `model` (a KP model; anything else gives unused planar options).
-KpOptions KpOptionsFor(const WheelContactOptions& o, ContactModel model) {
-  if (model != ContactModel::Kp && model != ContactModel::Kpec && model != ContactModel::Conformal)
-    return PlanarKpOptions(o.material);  // unused
-  KpOptions k = KpOptionsForModel(model, o.material, o.conformal_variable_penetration, o.kp_strips);
-  k.conformity_threshold_deg = o.conformity_threshold_deg;
-  return k;
-}
-
-// Hertz at the smallest rigid gap inside the candidate's region.
-NormalSolution SolveHertzPatch(const RigidContactPoint& point, double approach_m, const Material& material) {
-  NormalSolution out;
-  if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
-  // Near-conformal points (flange root against the gauge corner) have a relative lateral curvature B <= 0,
-  // where Hertz has no solution. Dropping such a point would make the wheel's forces jump as the point's B
-  // crosses zero; instead B is raised to kMinLateralCurvatureRatio * A (semi-axis ratio b/a ~ 3.6) and the
-  // patch is flagged "hertz_regularised". The conformal models treat these patches properly.
-  constexpr double kMinLateralCurvatureRatio = 0.1;
-  const double B_min = kMinLateralCurvatureRatio * point.hertz_A_per_m;
-  const bool regularised = point.hertz_A_per_m > 0.0 && point.hertz_B_per_m < B_min;
-  const HertzResult h = SolveHertzForApproach(point.hertz_A_per_m, regularised ? B_min : point.hertz_B_per_m,
-                                              approach_m, material);
-  out.status = regularised && h.status == HertzStatus::Ok ? "hertz_regularised" : to_string(h.status);
-  if (h.status != HertzStatus::Ok) return out;
-  out.in_contact = true;
-  out.hertz = h;
-  out.fn_N = h.normal_force_N;
-  out.pmax_Pa = out.p0_Pa = h.p0_Pa;
-  out.a_m = h.a_m;
-  out.b_m = h.b_m;
-  out.area_m2 = M_PI * h.a_m * h.b_m;
-  out.width_m = 2.0 * h.b_m;
-  out.length_m = 2.0 * h.a_m;
-  return out;
-}
-
-NormalSolution SolveKpPatch(const PatchGeometry& patch, double approach_m, const KpOptions& kp_options) {
-  NormalSolution out;
-  if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
-  out.kp = SolveKikPiotrowskiForApproach(patch, approach_m, kp_options);
-  const KpResult& r = out.kp;
-  out.status = to_string(r.status);
-  if (r.status != KpStatus::Ok && r.status != KpStatus::ContactAtPatchBoundary) return out;
-  out.in_contact = r.fn_N > 0.0;
-  out.fn_N = r.force_on_wheel_N.y();
-  out.fs_N = r.force_on_wheel_N.x();
-  out.pmax_Pa = r.pmax_Pa;
-  out.p0_Pa = r.p0_Pa;
-  out.area_m2 = r.area_m2;
-  out.width_m = r.width_m;
-  out.length_m = r.length_m;
-  out.alpha_c_deg = r.alpha_c_deg;
-  out.is_conformal = r.is_conformal;
-  return out;
-}
-
-NormalSolution SolveReferencePatch(const PatchGeometry& patch, double approach_m, const WheelContactOptions& o) {
-  NormalSolution out;
-  if (approach_m <= 0.0) { out.status = "no_contact"; return out; }
-  BemOptions b;
-  b.influence = BemInfluence::Blanco;
-  b.control = BemLoadControl::Approach;
-  b.approach_m = approach_m;
-  b.x_elements = o.bem_x_elements;
-  b.tolerance = 1e-9;
-  const BemResult r = SolveBemNormal(patch, o.material, b);
-  out.status = r.status == BemStatus::Converged ? "ok" : r.status == BemStatus::NoContact ? "no_contact" : "not_converged";
-  if (r.status == BemStatus::NoContact) return out;
-  out.in_contact = r.normal_force_reference_N > 0.0;
-  out.fn_N = r.normal_force_reference_N;
-  // lateral component of the curved-surface pressure along t0 (n_j = cos a n0 + sin a t0, patch.hpp), as the KP
-  // models report it, so that load control balances the same resultant for every model
-  for (int j = 0; j < r.grid.ns; ++j)
-    out.fs_N += r.pressure_Pa.col(j).sum() * std::sin(r.grid.alpha(j)) * r.grid.element_area_m2();
-  out.pmax_Pa = out.p0_Pa = r.max_pressure_Pa;
-  out.area_m2 = r.contact_area_m2;
-  out.width_m = r.contact_width_s_m;
-  out.length_m = r.contact_length_x_m;
-  // conformity index (paper 003 eq. 13) over the strips whose centres lie in the BEM contact
-  std::vector<double> angles;
-  for (size_t j = 0; j < patch.strips(); ++j)
-    if (patch.s_m[j] >= r.contact_s_min_m && patch.s_m[j] <= r.contact_s_max_m) angles.push_back(patch.alpha_rad[j]);
-  const ConformityIndex index = ComputeConformityIndex(angles, o.conformity_threshold_deg);
-  out.alpha_c_deg = index.alpha_c_deg;
-  out.is_conformal = index.is_conformal;
-  return out;
-}
-
-// Root of f on [lo, hi] with f(lo) < 0 < f(hi) (Illinois false position, then bisection safeguard). f was last
-// evaluated at the returned x, and *f_at_root is that value (so the caller's state is already the root's).
-double SolveMonotone(const std::function<double(double)>& f, double lo, double hi, double flo, double fhi,
-                     double tolerance_abs, int* iterations, double* f_at_root) {
-  double x = lo;
-  int side = 0;
-  for (int it = 0; it < 100; ++it) {
-    *iterations = it + 1;
-    x = (lo * fhi - hi * flo) / (fhi - flo);
-    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-    const double fx = f(x);
-    *f_at_root = fx;
-    if (std::fabs(fx) <= tolerance_abs || hi - lo < 1e-15) return x;
-    if (fx < 0.0) {
-      lo = x, flo = fx;
-      if (side == -1) fhi *= 0.5;
-      side = -1;
-    } else {
-      hi = x, fhi = fx;
-      if (side == 1) flo *= 0.5;
-      side = 1;
-    }
-  }
-  return x;
-}
-
 // Everything the normal problem of one wheel produces (stage 1 of SolveWheelContact): what the tangential stage
 // needs, and what WheelContactCache keeps between calls at one pose.
 struct NormalStage {
@@ -237,27 +110,12 @@ struct NormalStage {
   std::vector<ContactModel> patch_model;
   std::vector<double> auto_alpha_c_deg;
   std::vector<PatchFrame> frames;
-  std::vector<NormalSolution> normal;
+  std::vector<PatchNormalSolution> normal;
 };
 
 }  // namespace wheel_contact_detail
 
 using namespace wheel_contact_detail;
-
-KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool conformal_variable_penetration,
-                            int strips) {
-  KpOptions k;
-  switch (model) {
-    case ContactModel::Kp: k = PlanarKpOptions(material); break;
-    case ContactModel::Kpec: k = KpecOptions(material); break;
-    case ContactModel::Conformal:
-      k = conformal_variable_penetration ? ConformalKpecOptions(material) : ConformalKpOptions(material);
-      break;
-    default: throw InputError(std::string("model '") + to_string(model) + "' is not a Kik-Piotrowski model");
-  }
-  k.strips_across_contact = strips;
-  return k;
-}
 
 namespace {
 
@@ -352,8 +210,8 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   if (options.model == ContactModel::Auto) {
     for (size_t j = 0; j < n; ++j) {
       const PatchGeometry& patch = candidates.candidates[j].patch;
-      const ModelSelection choice =
-          SelectContactModel(patch, patch.rigid_approach_m, &hertz_points[j], options.auto_selection);
+      const ModelSelection choice = ChoosePatchModel(ContactModel::Auto, PatchInput{&patch, &hertz_points[j]},
+                                                     patch.rigid_approach_m, options.auto_selection);
       patch_model[j] = choice.model;
       auto_alpha_c_deg[j] = choice.alpha_c_deg;
     }
@@ -363,52 +221,43 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   for (size_t j = 0; j < n; ++j)
     frames[j] = patch_model[j] == ContactModel::Hertz ? FrameOfContactAngle(hertz_points[j].contact_angle_rad)
                                                        : FrameOf(candidates.candidates[j].patch);
-  std::vector<KpOptions> kp_options(n);
-  for (size_t j = 0; j < n; ++j) kp_options[j] = KpOptionsFor(options, patch_model[j]);
 
   // 2. Normal problem for a vertical push `dz` beyond the candidates' pose: patch j's approach along its own
   // reference normal grows by dz n0_z.
-  auto solve_all = [&](double dz, std::vector<NormalSolution>* out) {
+  auto solve_all = [&](double dz, std::vector<PatchNormalSolution>* out) {
     double vertical = 0.0;
     for (size_t j = 0; j < n; ++j) {
       const ContactCandidate& c = candidates.candidates[j];
-      NormalSolution& s = (*out)[j];
+      PatchNormalSolution& s = (*out)[j];
       if (patch_model[j] == ContactModel::Hertz) {
         const double approach = -hertz_points[j].gap_m + dz * std::cos(hertz_points[j].contact_angle_rad);
-        s = SolveHertzPatch(hertz_points[j], approach, options.material);
+        s = SolvePatchNormal(ContactModel::Hertz, PatchInput{nullptr, &hertz_points[j]}, approach, options);
         vertical += s.fn_N * std::cos(hertz_points[j].contact_angle_rad);
         continue;
       }
       const double approach = c.patch.rigid_approach_m + dz * frames[j].normal.z();
-      s = patch_model[j] == ContactModel::Reference ? SolveReferencePatch(c.patch, approach, options)
-                                                    : SolveKpPatch(c.patch, approach, kp_options[j]);
+      s = SolvePatchNormal(patch_model[j], PatchInput{&c.patch, nullptr}, approach, options);
       vertical += s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
     }
     return vertical;
   };
-  std::vector<NormalSolution>& normal = stage.normal;
+  std::vector<PatchNormalSolution>& normal = stage.normal;
   normal.resize(n);
   if (load_control) {
-    const double load = options.vertical_load_N;
-    auto residual = [&](double dz) { return solve_all(dz, &normal) - load; };
-    // bracket the push-down: the Hertz push-down is close, so start with a small step and expand
+    // the one load control (load_control.hpp): the Hertz push-down of the candidates is close, so the first
+    // bracket is the size of the largest rigid approach; its last evaluation is at the solution (no re-solve)
     double scale = 0.0;
     for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
     scale = std::max(scale, 1e-6);
-    double lo = -scale, hi = 0.25 * scale;
-    double flo = residual(lo), fhi = residual(hi);
-    for (int k = 0; k < 40 && fhi < 0.0; ++k) { lo = hi, flo = fhi; hi += scale * std::pow(2.0, k); fhi = residual(hi); }
-    for (int k = 0; k < 40 && flo > 0.0; ++k) { hi = lo, fhi = flo; lo -= scale * std::pow(2.0, k); flo = residual(lo); }
-    if (flo > 0.0 || fhi < 0.0) {
+    const LoadControlResult load = SolveLoadControl([&](double dz) { return solve_all(dz, &normal); },
+                                                    options.vertical_load_N, scale, options.load_tolerance);
+    if (load.status == LoadControlStatus::NoBracket) {
       report.status = WheelContactStatus::NotConverged;
       return stage;
     }
-    // SolveMonotone's last evaluation is at dz: `normal` already holds the solution there (no re-solve)
-    double final_residual = 0.0;
-    const double dz = SolveMonotone(residual, lo, hi, flo, fhi, options.load_tolerance * load, &report.load_iterations,
-                                    &final_residual);
-    report.pose.vertical_m -= dz;
-    if (std::fabs(final_residual) > 10.0 * options.load_tolerance * load) report.status = WheelContactStatus::NotConverged;
+    report.load_iterations = load.iterations;
+    report.pose.vertical_m -= load.push_m;
+    if (load.status == LoadControlStatus::NotConverged) report.status = WheelContactStatus::NotConverged;
   } else {
     solve_all(0.0, &normal);
   }
@@ -426,12 +275,12 @@ WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTr
   const std::vector<ContactModel>& patch_model = stage.patch_model;
   const std::vector<double>& auto_alpha_c_deg = stage.auto_alpha_c_deg;
   const std::vector<PatchFrame>& frames = stage.frames;
-  const std::vector<NormalSolution>& normal = stage.normal;
+  const std::vector<PatchNormalSolution>& normal = stage.normal;
   const size_t n = candidates.candidates.size();
   const RigidBodyMotion motion = WheelMotionInSideFrame(geometry, side, report.pose, velocity);
   const bool kinematics = !options.creepages_given;
   for (size_t j = 0; j < n; ++j) {
-    const NormalSolution& s = normal[j];
+    const PatchNormalSolution& s = normal[j];
     if (!s.in_contact) continue;
     const ContactCandidate& c = candidates.candidates[j];
     const ContactModel model = patch_model[j];
@@ -468,81 +317,41 @@ WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTr
     p.xi = cr.longitudinal;
     p.eta = cr.lateral;
     p.phi_per_m = cr.spin_per_m;
-    const FastsimCreepages creep{cr.longitudinal, cr.lateral, cr.spin_per_m};
-    const bool has_creepage = creep.xi != 0.0 || creep.eta != 0.0 || creep.phi_per_m != 0.0;
-    p.tangential_status = "not_solved";
-    if (options.solve_tangential && !has_creepage) p.tangential_status = "no_creepage";  // nothing to solve
-    if (options.solve_tangential && has_creepage) {
-      if (hertz) {
-        FastsimHertzInput in;
-        in.a_m = s.a_m;
-        in.b_m = s.b_m;
-        in.normal_force_N = s.fn_N;
-        in.creepages = creep;
-        in.friction_coefficient = options.friction_coefficient;
-        in.material = options.material;
-        in.nx = in.ny = options.fastsim_elements;
-        in.rolling_speed_m_per_s = velocity.forward_speed_m_s;
-        const FastsimResult t = SolveFastsimHertz(in, options.fastsim);
-        p.tangential_status = to_string(t.status);
+    PatchCreepages creep;
+    creep.reference = FastsimCreepages{cr.longitudinal, cr.lateral, cr.spin_per_m};
+    if (options.solve_tangential) {
+      // conformal model with the wheelset kinematics: the rigid slip of every strip (local_creepage.hpp)
+      if (model == ContactModel::Conformal && kinematics && creep.any()) {
+        PatchReferenceFrame ref;
+        ref.point_m = Eigen::Vector3d(0.0, geometry.rail_origin_eta_m(side) + c.patch.reference_point_m.x(),
+                                      c.patch.reference_point_m.y());
+        ref.tangent = frames[j].tangent;
+        ref.normal = frames[j].normal;
+        creep.per_strip = StripCreepagesFromKinematics(motion, ref, s.kp);
+      }
+      const PatchTangentialSolution t =
+          SolvePatchTangential(model, s, creep, velocity.forward_speed_m_s, options);
+      p.tangential_status = t.status;
+      if (t.solved) {
         p.fx_N = t.fx_N;
         p.fy_N = t.fy_N;
         p.mz_Nm = t.mz_Nm;
+        if (t.has_equivalent_ellipse) {
+          p.a_m = t.a_m;
+          p.b_m = t.b_m;
+        }
         p.adhesion_area_m2 = t.adhesion_area_m2;
         p.slip_area_m2 = t.slip_area_m2;
         p.frictional_power_W = t.frictional_power_W;
         if (options.keep_fields) {
-          const ProfileMapping map(geometry.mounted_rail(side), point.rail_s_m, point.wheel_profile_m.x());
-          const double dy = 2.0 * s.b_m / in.ny;
-          p.cells = CellsOf(t, map, point.lead_m, [dy](size_t) { return dy; },
-                            [&s](double x, double y) { return HertzPressure(s.hertz, x, y); });
-        }
-      } else if (model != ContactModel::Reference) {
-        CurvedFastsimOptions co;
-        co.elements_per_strip = options.fastsim_elements;
-        co.marching = options.fastsim.marching;
-        co.load_N = s.kp.fn_surface_N;
-        CurvedFastsimResult t;
-        if (model == ContactModel::Conformal) {
-          CurvedFastsimInput in;
-          in.friction = FrictionLaw::Constant(options.friction_coefficient);
-          in.material = options.material;
-          in.rolling_speed_m_per_s = velocity.forward_speed_m_s;
-          if (kinematics) {
-            PatchReferenceFrame ref;
-            ref.point_m = Eigen::Vector3d(0.0, geometry.rail_origin_eta_m(side) + c.patch.reference_point_m.x(),
-                                          c.patch.reference_point_m.y());
-            ref.tangent = frames[j].tangent;
-            ref.normal = frames[j].normal;
-            in.strip_creepages = StripCreepagesFromKinematics(motion, ref, s.kp);
-          } else {
-            in.strip_creepages = {creep};
-          }
-          t = SolveCurvedFastsim(s.kp, in, co);
-        } else {
-          t = SolveFastsimOnKpPatch(s.kp, creep, FrictionLaw::Constant(options.friction_coefficient),
-                                    options.material, co);
-        }
-        p.tangential_status = to_string(t.status);
-        p.fx_N = t.force_reference_N.x();
-        p.fy_N = t.force_reference_N.y();
-        p.mz_Nm = t.moment_reference_Nm.z();
-        p.a_m = t.sdec.a_m;
-        p.b_m = t.sdec.b_m;
-        p.adhesion_area_m2 = t.adhesion_area_m2;
-        p.slip_area_m2 = t.slip_area_m2;
-        p.frictional_power_W = t.frictional_power_W;
-        if (options.keep_fields) {
-          const ProfileMapping map(geometry.mounted_rail(side), c.patch.reference_s_on_rail_m, point.wheel_profile_m.x());
-          std::vector<double> width(t.field.x_m.size());
-          for (size_t k = 0; k < s.kp.strips.size() && k < t.strip_first_element.size(); ++k) {
-            const size_t end = k + 1 < t.strip_first_element.size() ? t.strip_first_element[k + 1] : width.size();
-            for (size_t e = t.strip_first_element[k]; e < end; ++e) width[e] = s.kp.strips[k].ds_m;
-          }
-          p.cells = CellsOf(t.field, map, 0.0, [&width](size_t e) { return width[e]; },
-                            [&s](double x, double y) { return KpPressureAt(s.kp, x, y); });
+          const ProfileMapping map(geometry.mounted_rail(side), hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m,
+                                   point.wheel_profile_m.x());
+          p.cells = CellsOf(t.field, map, hertz ? point.lead_m : 0.0, [&t](size_t e) { return t.element_width_m[e]; },
+                            [&s, model](double x, double y) { return PatchPressureAt(model, s, x, y); });
         }
       }
+    } else {
+      p.tangential_status = "not_solved";
     }
     // resultant on the wheel in the side frame: normal along n0 (+ the KP lateral part along t0), creep force along t0
     const Eigen::Vector3d force = (p.fn_N) * frames[j].normal + (s.fs_N + p.fy_N) * frames[j].tangent;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "conforma/validation/benchmark_cases.hpp"
+#include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
 #include "conforma/wheel_contact.hpp"
 
@@ -27,34 +28,35 @@ void BM_ConformalBenchCases(benchmark::State& state) {
   base.model = state.range(1) == 0 ? ContactModel::Conformal : ContactModel::Hertz;
   std::vector<PatchSolveOptions> options(cases.size(), base);
   for (size_t k = 0; k < cases.size(); ++k) {
-    if (mode == 1 || mode == 2) options[k].approach_m = SolveBenchPatch(cases[k], base).approach_m;
+    if (mode == 1 || mode == 2) options[k].approach_m = SolveBenchCase(cases[k], base).approach_m;
     options[k].solve_tangential = mode < 2;
     if (options[k].approach_m < 0.0) options[k].approach_m = 0.0;
   }
   for (auto _ : state) {
-    for (size_t k = 0; k < cases.size(); ++k) benchmark::DoNotOptimize(SolveBenchPatch(cases[k], options[k]));
+    for (size_t k = 0; k < cases.size(); ++k) benchmark::DoNotOptimize(SolveBenchCase(cases[k], options[k]));
   }
   state.counters["patches"] = static_cast<double>(cases.size());  // time / patches = time per patch
 }
 
-// Load control alone (SolveWheelForLoad, tolerance 1e-6 as the bench): mean KP solves per patch.
+// Load control alone (the one load control through the patch solver, tolerance 1e-6 as the bench, normal problem
+// only): mean root-finder steps per patch (the two bracket ends come on top).
 void BM_ConformalBenchLoadControl(benchmark::State& state) {
   const std::vector<BenchCase>& cases = Cases();
-  LoadControlOptions options;
-  options.kp = KpOptionsForModel(ContactModel::Conformal, Material{}, true, 31);
-  options.relative_tolerance = 1e-6;
-  int evaluations = 0, not_converged = 0;
+  PatchSolveOptions options;
+  options.model = ContactModel::Conformal;
+  options.solve_tangential = false;
+  int steps = 0, not_converged = 0;
   for (auto _ : state) {
-    evaluations = 0;
+    steps = 0;
     not_converged = 0;
     for (const BenchCase& c : cases) {
-      const WheelNormalResult r = SolveWheelForLoad({WheelPatch{&c.patch, 0.0, 1.0}}, c.normal_load_N, options);
-      evaluations += r.evaluations;
-      not_converged += r.status != LoadControlStatus::Ok;
+      const PatchSolution r = SolveBenchPatch(c, options);
+      steps += r.load.iterations;
+      not_converged += r.load.status != LoadControlStatus::Ok;
       benchmark::DoNotOptimize(r);
     }
   }
-  state.counters["solves_per_patch"] = static_cast<double>(evaluations) / static_cast<double>(cases.size());
+  state.counters["root_steps_per_patch"] = static_cast<double>(steps) / static_cast<double>(cases.size());
   state.counters["not_converged"] = not_converged;
 }
 BENCHMARK(BM_ConformalBenchLoadControl)->Unit(benchmark::kMillisecond);

@@ -17,6 +17,7 @@
 #include "conforma/fastsim.hpp"
 #include "conforma/material.hpp"
 #include "conforma/patch.hpp"
+#include "conforma/patch_solver.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma {
@@ -59,7 +60,9 @@ struct PatchSolveOptions {
   void validate() const;
 };
 
-struct PatchSolution {
+// The bench's summary of one patch solve (patch_solver.hpp), in the bench's measures.
+struct BenchPatchResult {
+  ContactModel model = ContactModel::Hertz;  // the model that solved it (auto: the chosen one)
   bool in_contact = false;
   std::string normal_status, tangential_status;
   double pmax_Pa = 0.0, area_m2 = 0.0;
@@ -69,7 +72,10 @@ struct PatchSolution {
   double approach_m = 0.0;
   double alpha_c_deg = 0.0;   // conformity index (KP models; 0 for Hertz)
 };
+// One case through the one patch solver (load given, or approach given with options.approach_m > 0).
 PatchSolution SolveBenchPatch(const BenchCase& bench_case, const PatchSolveOptions& options);
+BenchPatchResult SummariseBenchPatch(const PatchSolution& solution);
+BenchPatchResult SolveBenchCase(const BenchCase& bench_case, const PatchSolveOptions& options);
 // The same model at a given approach (normal problem only): for the Fn error at the reference BEM's approach.
 double NormalForceAtApproach(const BenchCase& bench_case, const PatchSolveOptions& options, double approach_m);
 

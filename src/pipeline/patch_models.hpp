@@ -1,0 +1,24 @@
+#pragma once
+// The solve functions of the contact models (one file each: patch_model_*.cpp), registered in patch_solver.cpp.
+#include "conforma/patch_solver.hpp"
+
+namespace conforma {
+
+PatchNormalSolution SolveHertzPatchNormal(ContactModel model, const PatchInput& input, double approach_m,
+                                          const WheelContactOptions& options);
+PatchTangentialSolution SolveHertzPatchTangential(ContactModel model, const PatchNormalSolution& normal,
+                                                  const PatchCreepages& creepages, double rolling_speed_m_per_s,
+                                                  const WheelContactOptions& options);
+double HertzPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m);
+
+PatchNormalSolution SolveKpPatchNormal(ContactModel model, const PatchInput& input, double approach_m,
+                                       const WheelContactOptions& options);
+PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNormalSolution& normal,
+                                               const PatchCreepages& creepages, double rolling_speed_m_per_s,
+                                               const WheelContactOptions& options);
+double KpPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m);
+
+PatchNormalSolution SolveReferencePatchNormal(ContactModel model, const PatchInput& input, double approach_m,
+                                              const WheelContactOptions& options);
+
+}  // namespace conforma
