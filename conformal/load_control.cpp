@@ -1,4 +1,4 @@
-// Load control of the KP solvers (physics-reference §3.2 "force-controlled use").
+// Load control of the KP solvers (docs/physics-reference.md §3.2 "force-controlled use").
 #include "conforma/load_control.hpp"
 
 #include <algorithm>
@@ -63,7 +63,7 @@ double HertzApproachGuess(const WheelPatch& patch, double load, const Material& 
   if (g.size() < 3 || s.size() != g.size() || geometry.longitudinal_curvature_per_m.size() != g.size()) return nan;
   const size_t i = static_cast<size_t>(std::min_element(g.begin(), g.end()) - g.begin());
   if (i == 0 || i + 1 == g.size()) return nan;
-  // B = g''/2 of the parabola through the three nodes (physics-reference §1.1)
+  // B = g''/2 of the parabola through the three nodes (docs/physics-reference.md §1.1)
   const double left_slope = (g[i] - g[i - 1]) / (s[i] - s[i - 1]);
   const double right_slope = (g[i + 1] - g[i]) / (s[i + 1] - s[i]);
   const double B = (right_slope - left_slope) / (s[i + 1] - s[i - 1]);

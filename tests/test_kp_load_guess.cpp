@@ -42,7 +42,7 @@ TEST(KpLoadGuess, SameSolutionWithAndWithoutTheHertzGuess) {
 }
 
 TEST(KpLoadGuess, HertzianPatchNeedsFewSolves) {
-  // KPEC is exact for elliptic patches (physics-reference §3.3): the Hertz guess lands on the answer up to the
+  // KPEC is exact for elliptic patches (docs/physics-reference.md §3.3): the Hertz guess lands on the answer up to the
   // strip discretisation, and the power-law step finishes it.
   const PatchGeometry tread = kp_test::HertzianPatch(0.55, 0.96, 0.012, 81);
   LoadControlOptions options;

@@ -2,7 +2,7 @@
 // Load control for the KP solvers: one wheel with one or more contact patches that share ONE rigid approach
 // of the wheel. Each patch's gaps are relative to its own lowest point; gap_offset_m says how far that lowest
 // point is from the wheel's first touching point, so patch k sees the approach delta - gap_offset_k
-// (physics-reference §3.2 "force-controlled use").
+// (docs/physics-reference.md §3.2 "force-controlled use").
 #include <vector>
 
 #include "conforma/kik_piotrowski.hpp"
