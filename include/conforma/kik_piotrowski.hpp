@@ -99,7 +99,7 @@ struct KpResult {
 // negative approach, bad options.
 KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& patch, double approach_m, const KpOptions& options);
 
-// Options of the three named models of the architecture guide.
+// Options of the three KP models named in docs/architecture.md ("Models to compare").
 KpOptions PlanarKpOptions(const Material& material);      // eps = 0.55, half-space
 KpOptions KpecOptions(const Material& material);          // variable eps, half-space
 KpOptions ConformalKpOptions(const Material& material);   // eps = 0.55, Blanco-Lorenzo
