@@ -12,9 +12,10 @@ Checks (exit status 1 and one line per problem when any fails, 0 otherwise):
      docs/bibliography.md and docs/data.md exists.
   5. Every "paper NNN" cited has an entry "paper NNN" in docs/bibliography.md.
   6. No source, header, script, scenario, CMake or documentation file names a path outside the repository
-     (parent-directory references to the shared folder, absolute /work/ or /home/ paths, the shared docs or
-     papers folders). The one exception is the run-time default of the shared data folder, "../shared/data"
-     exactly (not a path below it), in CMakeLists.txt (the CONFORMA_SHARED_DATA default) and README.md.
+     (parent-directory references to the shared folder, absolute paths under /work or /home, the shared docs
+     or papers folders). The one exception is the run-time default of the shared data folder: the parent
+     folder's shared/data exactly (not a path below it), in CMakeLists.txt (the CONFORMA_SHARED_DATA default)
+     and README.md.
 
 A "§" is attributed to the nearest source named before it on the same line: "physics-reference",
 "profiles-and-formats", "paper NNN" (the paper's own sections: not checked), or an author/year just before the
