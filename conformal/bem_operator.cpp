@@ -1,4 +1,4 @@
-// Influence operator of the reference BEM (physics-reference §10.1-10.3): DC-FFT convolution with the
+// Influence operator of the reference BEM (docs/physics-reference.md §10.1-10.3): DC-FFT convolution with the
 // rectangle coefficients, plus the Blanco-Lorenzo correction written as sums of convolutions.
 #include "bem_operator.hpp"
 

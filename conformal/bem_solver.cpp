@@ -1,5 +1,5 @@
 // Reference BEM normal contact solver: Polonsky & Keer (1999) constrained conjugate gradient
-// (physics-reference §10.3) with prescribed force or prescribed approach.
+// (docs/physics-reference.md §10.3) with prescribed force or prescribed approach.
 //
 // Curved patches: with w_j = cos(alpha_j) the problem g = h - delta w + C p >= 0, p >= 0, g p = 0 with
 // sum w p dA = N is rewritten in q = w p as g/w = h/w - delta + (W^-1 C W^-1) q, sum q dA = N, which is the

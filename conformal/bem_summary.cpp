@@ -1,5 +1,5 @@
 // Integrated outputs of the reference BEM: forces along the reference normal (fn_bar) and on the curved
-// surface (fn_tilde, physics-reference §9 last item), area, extents, point of action, complementarity.
+// surface (fn_tilde, docs/physics-reference.md §9 last item), area, extents, point of action, complementarity.
 #include <algorithm>
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// Conformity index, paper 003 eq. 13 (physics-reference §9).
+// Conformity index, paper 003 eq. 13 (docs/physics-reference.md §9).
 #include "conforma/conformity.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Half-space influence coefficients (Love 1929; Kalker 1990) and the Blanco-Lorenzo correction.
-// Formulas: physics-reference §0 (combined constants), §4.2-4.3 (correction, point kernels), §10.2
+// Formulas: docs/physics-reference.md §0 (combined constants), §4.2-4.3 (correction, point kernels), §10.2
 // (rectangle coefficients); paper 003 eqs. (2), (3), (5).
 #include "conforma/influence.hpp"
 
@@ -54,7 +54,7 @@ ElasticConstants CombinedElasticConstants(const Material& both_bodies) {
   return CombinedElasticConstants(both_bodies, both_bodies);
 }
 
-// physics-reference §0 (CONTACT combin_mater; K with the minus sign of the code).
+// docs/physics-reference.md §0 (CONTACT combin_mater; K with the minus sign of the code).
 ElasticConstants CombinedElasticConstants(const Material& body1, const Material& body2) {
   body1.validate();
   body2.validate();
@@ -139,7 +139,7 @@ const char* to_string(ConformalCoupling coupling) {
 double CouplingParameter(ConformalCoupling coupling, const ElasticConstants& elastic) {
   if (coupling == ConformalCoupling::PaperSingleBody) {
     const double nu = elastic.poisson_ratio;
-    return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));  // quasi-identity parameter, physics-reference §4.3
+    return (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));  // quasi-identity parameter, docs/physics-reference.md §4.3
   }
   return elastic.difference_parameter;
 }

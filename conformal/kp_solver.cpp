@@ -1,5 +1,5 @@
 // Kik-Piotrowski normal contact for one patch, approach given: planar KP, KPEC, conformal KP.
-// physics-reference §3.1-3.3, §4, §9; paper 003 eqs. 2-8 and 13.
+// docs/physics-reference.md §3.1-3.3, §4, §9; paper 003 eqs. 2-8 and 13.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -191,11 +191,12 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   result.contact_point_x_m = patch.x_offset(s_contact);
   if (delta <= 0.0) return result;
 
-  // Virtual interpenetration g(s) = eps(s) delta - gap(s) (physics-reference §3.1 / §3.3).
+  // Virtual interpenetration g(s) = eps(s) delta - gap(s) (docs/physics-reference.md §3.1 / §3.3).
   const bool kpec = options.penetration == KpPenetrationRule::VariableEpsilon;
   double s_mid = 0.0, a_squared_A = 0.0, spread = 0.0, b_hertz = 1.0;
   if (kpec) {
-    // KPEC step 2: equivalent Hertz problem from the eps = 0.5 region (CONTACT m_snorm.f90, physics-reference §3.3).
+    // KPEC step 2: equivalent Hertz problem from the eps = 0.5 region (CONTACT m_snorm.f90,
+    // docs/physics-reference.md §3.3).
     auto half_region = [&](double s) { return 0.5 * delta - patch.gap(s); };
     auto half_region_node = [&](size_t k) { return 0.5 * delta - patch.node_gaps()[k]; };  // = half_region(nodes[k])
     const double f0 = half_region(s_contact);
@@ -268,7 +269,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     result.strips.clear();
     return result;
   }
-  // Paper 003 eq. 8 / physics-reference §3.2: u_n(contact point) = delta with p = p0 sqrt(c^2 - x^2) / c_norm.
+  // Paper 003 eq. 8 / docs/physics-reference.md §3.2: u_n(contact point) = delta with p = p0 sqrt(c^2 - x^2) / c_norm.
   const double c_norm = kpec ? c_max : c_contact;
   result.p0_Pa = M_PI * elastic.shear_modulus_Pa * delta * c_norm / influence_sum;
   result.pmax_Pa = result.p0_Pa * c_max / c_norm;

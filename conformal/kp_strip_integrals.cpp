@@ -1,4 +1,4 @@
-// Influence integrals of one KP strip (physics-reference §3.2 "integration tip", §4.3; paper 003 eqs. 5, 8).
+// Influence integrals of one KP strip (docs/physics-reference.md §3.2 "integration tip", §4.3; paper 003 eqs. 5, 8).
 #include "kp_strip_integrals.hpp"
 
 #include <algorithm>
@@ -123,9 +123,9 @@ void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, cons
   // 2 sqrt(c^2 + u^2) (K - E), k' = u / sqrt(c^2 + u^2).
   // K - E and cel(k', p, 1, 0) (Bulirsch 1969, Numer. Math. 13; the Numerical Recipes `cel`) come from ONE
   // arithmetic-geometric mean of (1, k'): Bulirsch's em_n, qc_n are 2^n a_n, 2^n b_n of the AGM, and
-  // K - E = K sum_n 2^(n-1) c_n^2 (physics-reference §1.2, as EllipticIntegralsFromComplementaryModulus), c_0 = k,
-  // c_(n+1) = (a_n - b_n) / 2. The lanes run side by side (independent dependency chains overlap in the CPU); each
-  // lane stops at its own convergence, so its value does not depend on the other lanes.
+  // K - E = K sum_n 2^(n-1) c_n^2 (docs/physics-reference.md §1.2, as EllipticIntegralsFromComplementaryModulus),
+  // c_0 = k, c_(n+1) = (a_n - b_n) / 2. The lanes run side by side (independent dependency chains overlap in the
+  // CPU); each lane stops at its own convergence, so its value does not depend on the other lanes.
   const double c = half_length;
   const double D = std::abs(centre_offset);  // F1 is even in d
   double qc[kMaxBatch], e[kMaxBatch], em[kMaxBatch], p[kMaxBatch], a[kMaxBatch], b[kMaxBatch], sum[kMaxBatch],

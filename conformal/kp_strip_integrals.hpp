@@ -1,7 +1,8 @@
 #pragma once
 // Private to the KP solvers: influence integrals of one KP strip (semi-elliptic pressure in x, constant
 // half-length across the strip width) at one observation point. Kernels are those of influence.hpp
-// (physics-reference §4.3, paper 003 eq. 5); here they are integrated exactly in x and by Gauss quadrature in s.
+// (docs/physics-reference.md §4.3, paper 003 eq. 5); here they are integrated exactly in x and by Gauss
+// quadrature in s.
 namespace conforma {
 namespace kp_detail {
 

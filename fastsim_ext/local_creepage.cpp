@@ -1,4 +1,4 @@
-// Local rigid slip on a curved patch (local_creepage.hpp; physics-reference §5; paper 003 §4.2).
+// Local rigid slip on a curved patch (local_creepage.hpp; docs/physics-reference.md §5; paper 003 §4.2).
 #include <algorithm>
 #include <cmath>
 #include <string>

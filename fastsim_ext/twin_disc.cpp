@@ -34,7 +34,7 @@ TwinDiscContact TwinDiscHertz(const TwinDiscSetup& setup) {
   c.a_m = std::sqrt(4.0 * P * R / (M_PI * E));  // line-contact Hertz
   c.p0_Pa = 2.0 * P / (M_PI * c.a_m);
   const double nu = setup.material.poisson_ratio;
-  c.c11 = M_PI * M_PI / (4.0 * (1.0 - nu));  // physics-reference §2.2, a/b -> 0
+  c.c11 = M_PI * M_PI / (4.0 * (1.0 - nu));  // docs/physics-reference.md §2.2, a/b -> 0
   c.L1_m_per_Pa = 4.0 * c.a_m / (c.c11 * setup.material.shear_modulus_Pa);  // paper 002 eq. 10
   return c;
 }

@@ -1,4 +1,4 @@
-// Variable-friction FASTSIM (paper 002 §2.1; physics-reference §7.2). The marching is that of the core
+// Variable-friction FASTSIM (paper 002 §2.1; docs/physics-reference.md §7.2). The marching is that of the core
 // (src/fastsim_core.cpp: traction at element centres, exact rigid-slip increment, or the classic full step);
 // it is repeated here because the traction bound of an element depends on the element's own slip, which the
 // core cannot know before it marches (the core takes the bound as a fixed per-element input). A constant law is

@@ -85,7 +85,7 @@ SdecLinearForces SdecLinearCreepForces(const SdecResult& sdec, const FastsimCree
   if (sdec.status != SdecStatus::Ok) return f;
   const double c = std::sqrt(sdec.a_m * sdec.b_m), G = shear_modulus_Pa;
   const CreepCoefficients& C = sdec.coefficients;
-  // physics-reference §2.1 about the SDEC centroid; xi shifted by the spin's rigid slip there.
+  // docs/physics-reference.md §2.1 about the SDEC centroid; xi shifted by the spin's rigid slip there.
   f.fx_N = -G * c * c * C.c11 * (creepages.xi - creepages.phi_per_m * (sdec.centroid_s_m - spin_centre_s_m));
   f.fy_N = -G * c * c * C.c22 * creepages.eta - G * c * c * c * C.c23 * creepages.phi_per_m;
   return f;

@@ -2,13 +2,20 @@
 """Check that the documentation citations in the repository resolve inside the repository.
 
 Checks (exit status 1 and one line per problem when any fails, 0 otherwise):
-  1. Every section number cited from docs/physics-reference.md ("physics-reference §3.2", or a bare "§3.2" in a
-     file that cites the physics reference) is a heading of docs/physics-reference.md.
-  2. Every section number cited from profiles-and-formats.md is a heading of docs/profiles-and-formats.md.
-  3. Every "paper NNN" cited has an entry "paper NNN" in docs/bibliography.md.
-  4. No source, header, script, scenario or documentation file names a path outside the repository
-     (parent-directory references to the shared folder, absolute /work/ or /home/ paths, the shared docs or
-     papers folders).
+  1. Every section number cited from docs/physics-reference.md ("docs/physics-reference.md §3.2", or a bare
+     "§3.2" in a file that cites the physics reference) is a heading of docs/physics-reference.md.
+  2. Every section number cited from docs/profiles-and-formats.md is a heading of that file.
+  3. The two references are cited by their repository path: a bare "physics-reference §3.2",
+     "profiles-and-formats.md §1.1" or "physics-reference.md" (without "docs/") is a problem, and so is the
+     old "architecture guide" (cite docs/architecture.md).
+  4. Every cited docs/architecture.md, docs/physics-reference.md, docs/profiles-and-formats.md,
+     docs/bibliography.md and docs/data.md exists.
+  5. Every "paper NNN" cited has an entry "paper NNN" in docs/bibliography.md.
+  6. No source, header, script, scenario, CMake or documentation file names a path outside the repository
+     (parent-directory references to the shared folder, absolute paths under /work or /home, the shared docs
+     or papers folders). The one exception is the run-time default of the shared data folder: the parent
+     folder's shared/data exactly (not a path below it), in CMakeLists.txt (the CONFORMA_SHARED_DATA default)
+     and README.md.
 
 A "§" is attributed to the nearest source named before it on the same line: "physics-reference",
 "profiles-and-formats", "paper NNN" (the paper's own sections: not checked), or an author/year just before the
@@ -16,15 +23,17 @@ A "§" is attributed to the nearest source named before it on the same line: "ph
 document: profiles-and-formats in files that cite only that document, the physics reference otherwise.
 
 Usage: check_doc_citations.py [--root DIR] [--list]
+  --root   the repository to check (default: the repository this script is in, the parent of scripts/).
   --list   also print every cited physics-reference / profiles-and-formats section with its locations.
-Standard library only.
+Runs as a test: exit 0 when clean; 1 and one line per problem otherwise. Standard library only.
 """
 import argparse
 import os
 import re
 import sys
 
-SOURCE_EXT = {".c", ".cc", ".cpp", ".h", ".hpp", ".py", ".sh", ".yaml", ".yml", ".md"}
+SOURCE_EXT = {".c", ".cc", ".cpp", ".h", ".hpp", ".py", ".sh", ".yaml", ".yml", ".md", ".cmake", ".csv"}
+SOURCE_NAMES = {"CMakeLists.txt"}
 SCRIPT_DIRS = {"scripts", ".ci"}  # every text file there is a script, whatever its extension
 SKIP_DIRS = {".git", "__pycache__", "node_modules"}
 
@@ -36,6 +45,20 @@ OUTSIDE_PATTERNS = [
     re.compile(r"(?<![\w.])" + re.escape("shared" + "/docs/")),
     re.compile(r"(?<![\w.])" + re.escape("shared" + "/papers/")),
 ]
+# The run-time default of the shared data folder (docs/data.md), tolerated in these files only, as the exact
+# folder (a path below it, e.g. a data file, is still a problem).
+DATA_DEFAULT = re.compile(re.escape(".." + "/shared/data") + r"(?![\w/.-])")
+DATA_DEFAULT_FILES = {"CMakeLists.txt", "README.md"}
+
+# The two references are cited by their repository path, exactly "docs/physics-reference.md" and
+# "docs/profiles-and-formats.md". Other forms ("physics-reference §3.2", "physics reference §3.2",
+# "profiles-and-formats.md §1.1", "shared/physics-reference.md") name the old outside documents.
+REFERENCE_NAME = re.compile(r"(?<![\w.-])((?:[\w.-]*/)*)(physics-reference|profiles-and-formats)(\.md)?(?![\w-])"
+                            r"|physics reference(?=\s*§)", re.I)
+OUTSIDE_DOCUMENTS = [(re.compile(r"architecture guide", re.I), "docs/architecture.md")]
+# Repository documents whose citations ("docs/NAME") must exist.
+CITED_DOCS = ("architecture.md", "physics-reference.md", "profiles-and-formats.md", "bibliography.md", "data.md")
+DOC_CITE = re.compile(r"(?<![\w/.-])docs/(" + "|".join(re.escape(d) for d in CITED_DOCS) + r")(?![\w-])")
 
 PR, PF, PAPER, EXTERNAL = "physics-reference", "profiles-and-formats", "paper", "external"
 QUALIFIERS = [
@@ -99,13 +122,14 @@ def repository_files(root, self_path):
     for dirpath, dirnames, filenames in os.walk(root):
         rel_dir = os.path.relpath(dirpath, root)
         top = rel_dir.split(os.sep)[0]
-        dirnames[:] = [d for d in dirnames if d not in SKIP_DIRS and not (rel_dir == "." and d.startswith("build"))]
+        dirnames[:] = sorted(d for d in dirnames
+                             if d not in SKIP_DIRS and not (rel_dir == "." and d.startswith("build")))
         for name in sorted(filenames):
             path = os.path.join(dirpath, name)
             if os.path.abspath(path) == self_path:
                 continue
             ext = os.path.splitext(name)[1].lower()
-            if ext in SOURCE_EXT or (top in SCRIPT_DIRS and not ext):
+            if ext in SOURCE_EXT or name in SOURCE_NAMES or (top in SCRIPT_DIRS and not ext):
                 yield path
 
 
@@ -181,11 +205,26 @@ def main():
         default = file_default(rel, "\n".join(lines))
         for number, line in enumerate(lines, 1):
             where = "%s:%d" % (rel, number)
+            checked = line
+            if rel in DATA_DEFAULT_FILES:
+                checked = DATA_DEFAULT.sub("", checked)
             for rx in OUTSIDE_PATTERNS:
-                m = rx.search(line)
+                m = rx.search(checked)
                 if m:
                     problems.append("%s: path outside the repository '%s': %s" % (where, m.group(0), line.strip()[:120]))
                     break
+            for m in REFERENCE_NAME.finditer(line):
+                if m.group(2) is None or m.group(1) != "docs/" or m.group(3) != ".md":
+                    problems.append("%s: cite '%s' as docs/%s.md: %s" % (
+                        where, m.group(0), (m.group(2) or "physics-reference").lower(), line.strip()[:120]))
+            for rx, doc in OUTSIDE_DOCUMENTS:
+                m = rx.search(line)
+                if m:
+                    problems.append("%s: '%s' is not in the repository, cite %s: %s" % (
+                        where, m.group(0), doc, line.strip()[:120]))
+            for m in DOC_CITE.finditer(line):
+                if not os.path.isfile(os.path.join(docs, m.group(1))):
+                    problems.append("%s: docs/%s is cited but does not exist" % (where, m.group(1)))
             if "§" in line:
                 for kind, numbers in section_citations(line, default):
                     if kind not in cited:

@@ -73,7 +73,7 @@ TEST(BemHertz, PressureAreaAndApproachAgainstHertzForFiveEllipticities) {
     const HertzResult hz = SolveHertzForLoad(c.A_per_m, c.B_per_m, c.force_N, material);
     ASSERT_EQ(hz.status, HertzStatus::Ok);
     EXPECT_NEAR(hz.a_m / hz.b_m, c.aob, 0.01 * c.aob);
-    // Box 1.25x the Hertz semi-axes, 64 x 64 elements (physics-reference §10.3 validation set-up).
+    // Box 1.25x the Hertz semi-axes, 64 x 64 elements (docs/physics-reference.md §10.3 validation set-up).
     const BemGrid grid = QuadraticGapGrid(c.A_per_m, c.B_per_m, 64, 64, 1.25 * hz.a_m, 1.25 * hz.b_m);
     BemOptions options;
     options.normal_force_N = c.force_N;

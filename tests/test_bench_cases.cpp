@@ -39,7 +39,8 @@ TEST(BenchCases, EveryModelReproducesHertzOnAnEllipticPatch) {
     ASSERT_TRUE(s.in_contact) << to_string(m);
     EXPECT_NEAR(s.fn_N, c.normal_load_N, 1e-5 * c.normal_load_N) << to_string(m);
     // Hertz, KPEC and the conformal model (KPEC's variable virtual penetration, exact for elliptic patches,
-    // physics-reference §3.3, with the Blanco influence that equals the half-space on a flat patch) to 1 % / 2 %
+    // docs/physics-reference.md §3.3, with the Blanco influence that equals the half-space on a flat patch) to
+    // 1 % / 2 %
     const double tol_p = 0.01, tol_a = 0.02;
     EXPECT_NEAR(s.pmax_Pa / h.p0_Pa, 1.0, tol_p) << to_string(m);
     EXPECT_NEAR(s.area_m2 / (M_PI * h.a_m * h.b_m), 1.0, tol_a) << to_string(m);
@@ -49,7 +50,7 @@ TEST(BenchCases, EveryModelReproducesHertzOnAnEllipticPatch) {
     EXPECT_NEAR(s.fy_N, 0.0, 1e-6 * std::fabs(s.fx_N)) << to_string(m);
     EXPECT_GT(s.wear_index_N, 0.0) << to_string(m);
   }
-  // the reference BEM on the same strips reproduces Hertz (physics-reference §10)
+  // the reference BEM on the same strips reproduces Hertz (docs/physics-reference.md §10)
   const BemReferenceSolution bem = SolveBenchReference(c, 64);
   EXPECT_EQ(bem.status, "converged");
   EXPECT_NEAR(bem.fn_N, c.normal_load_N, 1e-6 * c.normal_load_N);

@@ -29,7 +29,8 @@ TEST(Conformity, SpreadOfNormalAnglesAndThreshold) {
 }
 
 TEST(Conformity, CircularGrooveGivesTwiceHalfWidthOverRadius) {
-  // For a constant lateral radius R the normals turn by (s_max - s_min) / R over the contact (physics-reference §9).
+  // For a constant lateral radius R the normals turn by (s_max - s_min) / R over the contact
+  // (docs/physics-reference.md §9).
   Material material;
   const double groove = 10.10e-3;
   const PatchGeometry patch = kp_test::GroovePatch(10e-3, groove, 0.42, 12e-3, 241);

@@ -81,7 +81,7 @@ TEST(CurvedFastsim, FlatEllipseEqualsClassicFastsim) {
 }
 
 // Small creepage through the new solver with the SDEC flexibilities (a, b reduced from the strips, not given):
-// Kalker's linear theory within 1 % for a/b = 0.2 ... 5 (physics-reference §2.1).
+// Kalker's linear theory within 1 % for a/b = 0.2 ... 5 (docs/physics-reference.md §2.1).
 TEST(CurvedFastsim, LinearTheoryThroughSdec) {
   const Material steel;
   const double G = steel.shear_modulus_Pa, N = 80e3, mu = 0.3;
@@ -133,7 +133,7 @@ TEST(CurvedFastsim, FullSlipSaturatesAtMuN) {
 // solver with the SDEC flexibilities of the elliptic strip set, on CONTACT's 44 x 44 grid with the marching of
 // paper 003 eq. 9 (p_A(x_i) = p_t(x_{i-1}) - dx L^-1 S: the classic full step). With the second-order centre
 // marching Fy is also within 3 %, but the spin moment converges to about 8 % below the exact value (a known
-// FASTSIM limitation, physics-reference §2.5), so that Mz is reported, not asserted against the exact theory.
+// FASTSIM limitation, docs/physics-reference.md §2.5), so that Mz is reported, not asserted against the exact theory.
 TEST(CurvedFastsim, ContactBasicCase) {
   const double N = 82e3;
   const KpResult kp = EllipticStrips(8e-3, 4e-3, N, 44);

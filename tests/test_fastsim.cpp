@@ -1,6 +1,6 @@
-// FASTSIM (physics-reference §2.3-2.4): Kalker's linear theory in the small-creepage limit, saturation at mu N,
-// the traction bound, symmetry, frictional power, the strip core on an analytic rectangular strip, and the
-// CONTACT reference cases (contact_basic_cases.csv, contact_hertz_creep_cases.csv).
+// FASTSIM (docs/physics-reference.md §2.3-2.4): Kalker's linear theory in the small-creepage limit,
+// saturation at mu N, the traction bound, symmetry, frictional power, the strip core on an analytic rectangular
+// strip, and the CONTACT reference cases (contact_basic_cases.csv, contact_hertz_creep_cases.csv).
 // test-links: hertz_fastsim  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>

@@ -108,7 +108,8 @@ TEST(FrictionLaw, TwinDiscSlopeAndSaturation) {
   const double full = TwinDiscCreepCurve(setup, law, 1.0, tiny)[0];
   const double reduced = TwinDiscCreepCurve(setup, law, 0.6, tiny)[0];
   EXPECT_NEAR(reduced / full, 0.6, 1e-3);
-  // Linear limit of the strip theory: F = w * 2 a^2 xi / L1 (physics-reference §2.3 with the strip of width w).
+  // Linear limit of the strip theory: F = w * 2 a^2 xi / L1 (docs/physics-reference.md §2.3 with the strip of
+  // width w).
   EXPECT_NEAR(full * setup.normal_force_N, setup.width_m * 2 * contact.a_m * contact.a_m * 1e-6 / contact.L1_m_per_Pa,
               0.01 * full * setup.normal_force_N);
   for (double xi : {0.1, 0.2}) {

@@ -1,4 +1,4 @@
-// Hertz elliptical contact (physics-reference §1.2) checked against independent facts: the sphere formula,
+// Hertz elliptical contact (docs/physics-reference.md §1.2) checked against independent facts: the sphere formula,
 // the Boussinesq surface displacement of the Hertz pressure (h + u = delta inside the ellipse), the identity
 // A a^2 + B b^2 = delta, the integrated load, the §1.3 table, the load-approach law and the degenerate cases.
 // test-links: hertz_fastsim  (CMakeLists.txt links the test with this library only; the layers below come with it)

@@ -1,5 +1,5 @@
 // Influence coefficients: closed forms against numerical quadrature of the point kernels, known values,
-// symmetries and the Blanco-Lorenzo correction structure (physics-reference §4.2-4.3, §10.2).
+// symmetries and the Blanco-Lorenzo correction structure (docs/physics-reference.md §4.2-4.3, §10.2).
 // test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>
@@ -109,7 +109,7 @@ TEST(Influence, SymmetriesOfTheHalfSpace) {
 }
 
 TEST(Influence, BlancoCorrectionStructureForEqualMaterials) {
-  // physics-reference §4.3: with K = 0, B_nn = A_nn cos, B_ns = A_nn sin, B_sn = -A_ss sin, B_xx = A_xx.
+  // docs/physics-reference.md §4.3: with K = 0, B_nn = A_nn cos, B_ns = A_nn sin, B_sn = -A_ss sin, B_xx = A_xx.
   const ElasticConstants e = Steel();
   const double alpha = 0.3;
   const HalfSpaceInfluence a = RectangleInfluence(0.4e-3, -0.9e-3, 0.2e-3, 0.25e-3, e);

@@ -1,4 +1,4 @@
-// Kalker's creep coefficients (physics-reference §2.2): table knots, the steel values at a/b = 1, continuity
+// Kalker's creep coefficients (docs/physics-reference.md §2.2): table knots, the steel values at a/b = 1, continuity
 // of the interpolation at g = 1, at the knots and at the switch to the asymptotes, and an external fit.
 // test-links: hertz_fastsim  (CMakeLists.txt links the test with this library only; the layers below come with it)
 

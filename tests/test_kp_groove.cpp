@@ -1,4 +1,4 @@
-// Conformal KP on CONTACT's deep conformal groove (shared data reference/contact_groove_li.csv, data README):
+// Conformal KP on CONTACT's deep conformal groove (shared data reference/contact_groove_li.csv; docs/data.md):
 // wheel circle R = 10 mm in grooves R = 10.25 ... 10.02 mm, fn_bar = 10 kN, G = 80 GPa, nu = 0.28,
 // rolling radius 420 mm. Compared with the Blanco-Lorenzo rows of CONTACT.
 // test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)

@@ -1,4 +1,4 @@
-// KP and KPEC on Hertzian gaps against the exact Hertz solution (physics-reference §1.2, §3.2 table, §3.3).
+// KP and KPEC on Hertzian gaps against the exact Hertz solution (docs/physics-reference.md §1.2, §3.2 table, §3.3).
 // test-links: conformal  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>
@@ -55,23 +55,23 @@ TEST(KpHertz, KpecWithinTwoPercentAndKpWithinTwelvePercentOfHertz) {
                 100 * Rel(c.kpec.approach_m, c.hertz.approach_m));
     EXPECT_LT(std::abs(Rel(c.kpec.pmax_Pa, c.hertz.p0_Pa)), 0.02) << "a/b " << ratio;
     EXPECT_LT(std::abs(Rel(c.kpec.area_m2, area)), 0.02) << "a/b " << ratio;
-    // Plain KP: within 12 % over the range of the physics-reference §3.2 table (a/b = 0.37 ... 3.16). Outside it
-    // the constant eps = 0.55 bias grows beyond 12 % (measured -13.9 % p0 / +16.2 % area at a/b = 0.2 and 5):
-    // that is KP's model error, asserted as a growing bias rather than hidden by a looser bound.
+    // Plain KP: within 12 % over the range of the docs/physics-reference.md §3.2 table (a/b = 0.37 ... 3.16). Outside
+    // it the constant eps = 0.55 bias grows beyond 12 % (measured -13.9 % p0 / +16.2 % area at a/b = 0.2 and 5): that
+    // is KP's model error, asserted as a growing bias rather than hidden by a looser bound.
     if (ratio >= 0.37 && ratio <= 3.16) {
       EXPECT_LT(std::abs(Rel(c.kp.pmax_Pa, c.hertz.p0_Pa)), 0.12) << "a/b " << ratio;
       EXPECT_LT(std::abs(Rel(c.kp.area_m2, area)), 0.12) << "a/b " << ratio;
     } else {
       EXPECT_LT(Rel(c.kp.pmax_Pa, c.hertz.p0_Pa), -0.105) << "a/b " << ratio;
     }
-    // KP's known bias (physics-reference §3.2): pressure low, area large.
+    // KP's known bias (docs/physics-reference.md §3.2): pressure low, area large.
     EXPECT_LT(c.kp.pmax_Pa, c.hertz.p0_Pa);
     EXPECT_GT(c.kp.area_m2, area);
   }
 }
 
 TEST(KpHertz, CircleTableValues) {
-  // physics-reference §3.2 table: a/b = 1 -> p0 -6.2 %, area +6.6 %; a/b = 3.16 -> -10.5 %, +11.7 %.
+  // docs/physics-reference.md §3.2 table: a/b = 1 -> p0 -6.2 %, area +6.6 %; a/b = 3.16 -> -10.5 %, +11.7 %.
   const Case circle = Solve(1.0, 100.0e3);
   EXPECT_NEAR(Rel(circle.kp.pmax_Pa, circle.hertz.p0_Pa), -0.062, 0.01);
   EXPECT_NEAR(Rel(circle.kp.area_m2, M_PI * circle.hertz.a_m * circle.hertz.b_m), 0.066, 0.01);

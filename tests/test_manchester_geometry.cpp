@@ -94,7 +94,7 @@ TEST(ManchesterA22, ContactReferencePointAngleAndCreepages) {
   const WheelsetTrackGeometry g = make_geometry();
   const Material steel;  // G = 82 GPa, nu = 0.28
   CandidateOptions bare;          // interpenetration region at the full Hertz approach
-  CandidateOptions kp = bare;     // Kik-Piotrowski virtual penetration (physics-reference §3.1)
+  CandidateOptions kp = bare;     // Kik-Piotrowski virtual penetration (docs/physics-reference.md §3.1)
   kp.penetration_factor = 0.55;
   double worst_y = 0, worst_y_bare = 0, worst_delta = 0;
   for (const Case& c : cases) {

@@ -1,5 +1,5 @@
 // Generated standard profiles against the exact definitions and the Manchester benchmark files
-// (profiles-and-formats.md §1.1, §1.2).
+// (docs/profiles-and-formats.md §1.1, §1.2).
 // test-links: profiles  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Wheel reference dimensions Sd, Sh, qR (paper 001 §7.2, paper 003 §7) on S1002 (nominal 32.5 / 28.0 / 10.8 mm,
-// exact values from the piecewise definition: 32.500 / 28.000 / 10.794 mm, profiles-and-formats.md §1.1) and on
+// exact values from the piecewise definition: 32.500 / 28.000 / 10.794 mm, docs/profiles-and-formats.md §1.1) and on
 // MiniProf wheel files against the values in their headers.
 // test-links: profiles  (CMakeLists.txt links the test with this library only; the layers below come with it)
 

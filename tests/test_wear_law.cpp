@@ -1,5 +1,5 @@
-// Wear laws: USFD regimes and units (paper 003 eqs. 14-17, physics-reference §8.1), Archard maps
-// (paper 000 Tables 2-3, physics-reference §8.2), wear-law files.
+// Wear laws: USFD regimes and units (paper 003 eqs. 14-17, docs/physics-reference.md §8.1), Archard maps
+// (paper 000 Tables 2-3, docs/physics-reference.md §8.2), wear-law files.
 // test-links: wear  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ TEST(WearLaw, UsfdRegimeBoundaries) {
   EXPECT_DOUBLE_EQ(usfd_wear_rate(5.0), 26.5);
   EXPECT_NEAR(usfd_wear_rate(10.4 - 1e-9), 55.12, 1e-6);  // left of the mild/severe limit
   EXPECT_EQ(usfd_regime(10.4 - 1e-9), WearRegime::Mild);
-  // severe plateau 55.0 on [10.4, 77.2] (closed at both ends, physics-reference §8.1)
+  // severe plateau 55.0 on [10.4, 77.2] (closed at both ends, docs/physics-reference.md §8.1)
   EXPECT_DOUBLE_EQ(usfd_wear_rate(10.4), 55.0);
   EXPECT_EQ(usfd_regime(10.4), WearRegime::Severe);
   EXPECT_DOUBLE_EQ(usfd_wear_rate(40.0), 55.0);

@@ -22,7 +22,7 @@ constexpr FastsimCreepages kDefaultCreepages{1.0e-3, 0.5e-3, 0.2};
 }  // namespace
 
 std::vector<BenchCase> MakeGrooveBenchCases(const std::vector<double>& groove_radii_m, double normal_load_N) {
-  // CONTACT groove case (data README): wheel circle R = 10 mm, rolling radius 420 mm, G = 80 GPa, nu = 0.28.
+  // CONTACT groove case (docs/data.md): wheel circle R = 10 mm, rolling radius 420 mm, G = 80 GPa, nu = 0.28.
   std::vector<BenchCase> cases;
   for (double groove_radius : groove_radii_m) {
     const double wheel_radius = 10.0e-3, rolling_radius = 0.420;

@@ -17,9 +17,10 @@ namespace {
 struct Combination {
   char wheel_left, wheel_right;
   double diameter_left_mm, diameter_right_mm;
-  double y_first_mm, y_last_mm;  // grid of dr_ce_E<n>.dat (data README)
+  double y_first_mm, y_last_mm;  // grid of dr_ce_E<n>.dat (shared data README.md)
 };
-// data README: E1 A/A, E2 B/B, E3 H/H, E4 I/I (920/920); E5..E8 the same with 920/918; E9 A/B 920/920.
+// Combinations (shared data README.md; docs/data.md): E1 A/A, E2 B/B, E3 H/H, E4 I/I (920/920); E5..E8 the same
+// with 920/918; E9 A/B 920/920.
 const Combination kCombinations[9] = {
     {'A', 'A', 920, 920, -6.8, 6.8}, {'B', 'B', 920, 920, -6.8, 6.8}, {'H', 'H', 920, 920, -6.8, 6.8},
     {'I', 'I', 920, 920, -7.1, 7.1}, {'A', 'A', 920, 918, -6.8, 6.8}, {'B', 'B', 920, 918, -6.9, 6.8},

@@ -1,5 +1,5 @@
 #pragma once
-// Reference boundary-element solver of the frictionless normal contact problem (physics-reference §10):
+// Reference boundary-element solver of the frictionless normal contact problem (docs/physics-reference.md §10):
 // piecewise-constant pressure on an nx x ns grid of rectangles covering the potential contact area,
 //     g_I = h_I - delta cos(alpha_I) + sum_J C_IJ p_J >= 0,   p_I >= 0,   g_I p_I = 0,
 // solved with the Polonsky-Keer constrained conjugate gradient (§10.3) and an FFT (DC-FFT) matrix-vector

@@ -1,5 +1,5 @@
 #pragma once
-// Conformity index of a contact patch (paper 003 §4.3, eq. 13; physics-reference §9): the opening angle
+// Conformity index of a contact patch (paper 003 §4.3, eq. 13; docs/physics-reference.md §9): the opening angle
 //     alpha_c = max over p1, p2 in the contact of arccos(n(p1) . n(p2))
 // For a prismatic patch whose normals turn in one plane (the rail profile plane) this is the spread of the
 // normal angle over the contact, max alpha - min alpha. The patch is flagged conformal above a threshold

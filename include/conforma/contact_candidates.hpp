@@ -9,7 +9,7 @@
 // normal = rail normal there. Strips of width ds, uniform in s, cover the region plus a margin on each side.
 // Per strip: gap along the local rail normal (shifted so that its minimum over the patch is 0; the shift is
 // PatchGeometry::rigid_approach_m), A(s) = cos(alpha_w) / (2 r) (alpha_w: wheel profile slope angle at the
-// silhouette point facing the strip; physics-reference §1.1), wheel radius r(s), alpha(s) = angle of the
+// silhouette point facing the strip; docs/physics-reference.md §1.1), wheel radius r(s), alpha(s) = angle of the
 // local rail normal from the reference normal (+ towards +s), x_offset(s) = lead of the silhouette point
 // relative to the wheel's vertical diametral plane (geometry.hpp).
 #include <vector>
@@ -28,7 +28,7 @@ struct CandidateOptions {
   double load_tolerance = 1e-6;   // relative, for the load-given mode
   // Load-given mode: the regions are taken at this fraction of the Hertz push-down. 1 = the rigid
   // interpenetration at the Hertz approach (the bare definition); Kik-Piotrowski's virtual penetration
-  // epsilon = 0.55 (physics-reference §3.1) gives regions the size of the elastic contact area.
+  // epsilon = 0.55 (docs/physics-reference.md §3.1) gives regions the size of the elastic contact area.
   double penetration_factor = 1.0;
   // Regions separated by less than this rail arc length are combined into one patch (CONTACT's D_COMB,
   // 4 mm there). 0 keeps every interpenetration region separate.

@@ -1,5 +1,5 @@
 #pragma once
-// The contact models of the pipeline (wheel_contact.hpp; architecture guide "Models to compare").
+// The contact models of the pipeline (wheel_contact.hpp; docs/architecture.md "Models to compare").
 #include <string>
 
 namespace conforma {

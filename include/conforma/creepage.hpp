@@ -1,7 +1,7 @@
 #pragma once
 // Rigid creepages (xi, eta, phi) of a wheel at a contact point from the wheelset velocities.
 //
-// Convention (Kalker / CONTACT, physics-reference §2.1): creepage = velocity of the WHEEL material point
+// Convention (Kalker / CONTACT, docs/physics-reference.md §2.1): creepage = velocity of the WHEEL material point
 // relative to the rail at the contact point, divided by the forward speed V; spin = angular velocity of the
 // wheel about the contact normal divided by V. Components in the contact frame of the side (right-side
 // convention, as CONTACT reports the left wheel): x along the track (rolling direction), s along the rail

@@ -1,5 +1,5 @@
 #pragma once
-// Curved-patch FASTSIM (core paper 003 §4.2, eqs. 9-12; physics-reference §5, §2.4) on a patch solved by the
+// Curved-patch FASTSIM (core paper 003 §4.2, eqs. 9-12; docs/physics-reference.md §5, §2.4) on a patch solved by the
 // Kik-Piotrowski / conformal KP normal solver (kik_piotrowski.hpp), and FASTSIM on the SDEC for the `kp`/`kpec`
 // models.
 //
@@ -16,11 +16,11 @@
 // Flexibility matrix L(s^r) (eq. 9), derivation: in the simplified theory u = L p, and in the local frame of a
 // strip the tangential compliance of the two half-spaces is that of a flat contact with the SDEC size (the
 // conformal correction of paper 003 eq. 3 acts on the normal problem only; for wheel and rail of the same steel the
-// tangential-normal coupling K vanishes, physics-reference §4.3). Therefore
+// tangential-normal coupling K vanishes, docs/physics-reference.md §4.3). Therefore
 //     L(s^r) = diag(L1, L2) / k  in the local frame (e1, t(s^r)),   L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G),
 // with a, b, C_ij of the SDEC (sdec.hpp) and the spin part of the rigid slip with L3 = pi a sqrt(a/b)/(4 C23 G) / k
-// (the three-flexibility form, physics-reference §2.3-2.4; k = slope reduction, paper 002 eq. 9). Because x^r is a
-// principal axis in every local frame (the normal turns about x^r), L has no x-s coupling there; expressed in the
+// (the three-flexibility form, docs/physics-reference.md §2.3-2.4; k = slope reduction, paper 002 eq. 9). Because x^r
+// is a principal axis in every local frame (the normal turns about x^r), L has no x-s coupling there; expressed in the
 // patch reference frame (x, t0, n0) it is R_j diag(L1, L2) R_j^T with R_j = [e1 t_j], which is what the force and
 // moment rotation below applies. On a flat elliptic patch (alpha = 0, a, b the ellipse) L = diag(L1, L2) and L3:
 // classic FASTSIM exactly. Per-strip flexibilities may be supplied instead (e.g. a strip-wise calibration).

@@ -1,5 +1,5 @@
 #pragma once
-// FASTSIM, Kalker's simplified theory of rolling contact (Kalker 1982; physics-reference §2.3-2.4), with
+// FASTSIM, Kalker's simplified theory of rolling contact (Kalker 1982; docs/physics-reference.md §2.3-2.4), with
 // three flexibilities L1, L2, L3 and an elliptic or parabolic traction bound.
 //
 // Sign convention (Kalker's, as CONTACT): results are the tractions and forces ON BODY 1 (the wheel); in the
@@ -40,7 +40,7 @@ struct FastsimCreepages {
 };
 
 // CONTACT's blending of the three flexibilities towards one combined flexibility at large creepage
-// (Vollebregt & Voltr 2023; CONTACT m_hertz.f90 simpflex, physics-reference §2.3):
+// (Vollebregt & Voltr 2023; CONTACT m_hertz.f90 simpflex, docs/physics-reference.md §2.3):
 //   q = phi (pi a^2/4)/(8a/3),  L_crss = (xi^2 + eta^2 + q^2) / (xi^2/L1 + eta^2/L2 + q^2/L3)
 //   ch_xi = mu N/(c^2 G C11), ch_eta = mu N/(c^2 G C22), ch_phi = mu N/(c^3 G C23)
 //   f = sqrt((xi^2 + eta^2 + phi^2)/(ch_xi^2 + ch_eta^2 + ch_phi^2)),  w = min(1, f/3)

@@ -7,7 +7,7 @@
 // Line-contact Hertz: R* = R1 R2 / (R1 + R2), E* = G / (1 - nu) (same steel for both, E = 2G(1 + nu),
 // 1/E* = 2 (1 - nu^2) / E), a = sqrt(4 N R* / (pi w E*)), p0 = 2 N / (pi a w) (consistent with paper 002 eq. 12,
 // a = 2 p0 R* / E*). Longitudinal flexibility (eq. 10): L1 = 4 a / (C11 G) with C11 the a/b -> 0 limit
-// pi^2 / (4 (1 - nu)) (physics-reference §2.2), divided by k. FASTSIM runs on one strip of width w with the
+// pi^2 / (4 (1 - nu)) (docs/physics-reference.md §2.2), divided by k. FASTSIM runs on one strip of width w with the
 // semi-elliptic bound p0 sqrt(1 - x^2/a^2), pure longitudinal creepage xi; the creep curve is the traction
 // coefficient F/N = -F_x / N (positive for xi > 0).
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // Local friction laws mu(gamma) of the dimensionless slip gamma = |s| (slip velocity / rolling speed), the slope
 // reduction k, and the variable-friction FASTSIM kernel (paper 002: Gimenez et al., "Application of Fastsim with
-// variable coefficient of friction using twin disc experimental measurements"; physics-reference §7).
+// variable coefficient of friction using twin disc experimental measurements"; docs/physics-reference.md §7).
 //
 // Laws (paper 002 §2.2):
 //   Constant      mu(gamma) = mu
@@ -48,7 +48,7 @@ struct FrictionLaw {
 // L_i / k for the three flexibilities (paper 002 eq. 9). Throws InputError unless k > 0.
 FastsimFlexibilities ReducedFlexibilities(const FastsimFlexibilities& flexibilities, double slope_reduction);
 
-// Variable-friction FASTSIM on a strip patch (paper 002 §2.1, physics-reference §7.2). Same marching, patch,
+// Variable-friction FASTSIM on a strip patch (paper 002 §2.1, docs/physics-reference.md §7.2). Same marching, patch,
 // creepage and sign conventions as SolveFastsimStrips; only the traction bound differs:
 //  * without recuperation of static friction (Piotrowski): along a strip the friction level does not come back,
 //    mu_eff(gamma) = mu(max(gamma, gamma_memory)), gamma_memory = the largest slip reached so far on the strip

@@ -1,5 +1,5 @@
 #pragma once
-// Hertz elliptical contact, exact solution with complete elliptic integrals (physics-reference §1.2).
+// Hertz elliptical contact, exact solution with complete elliptic integrals (docs/physics-reference.md §1.2).
 // Gap h(x, y) = A x^2 + B y^2 with x the rolling direction, y lateral; a is the semi-axis along x,
 // b along y. Both bodies share one Material (E* = G / (1 - nu)).
 #include "conforma/material.hpp"

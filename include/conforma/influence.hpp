@@ -4,17 +4,17 @@
 // Indices: x = rolling direction, s (= y of the half-space) = lateral / curvilinear rail profile direction,
 // n = normal. A_ij is the COMBINED displacement difference of the two bodies in direction i at an
 // observation point I per unit traction in direction j at a load point J (Kalker's convention, both
-// bodies together: physics-reference §0 and §10.2). Offsets are always OBSERVATION minus LOAD:
+// bodies together: docs/physics-reference.md §0 and §10.2). Offsets are always OBSERVATION minus LOAD:
 // X = x_I - x_J, Y = s_I - s_J.
 //
 // Two forms:
-//   * Rectangle coefficients (Love 1929; Kalker 1990; physics-reference §10.2): displacement at the
+//   * Rectangle coefficients (Love 1929; Kalker 1990; docs/physics-reference.md §10.2): displacement at the
 //     observation point per unit uniform traction (Pa) on a dx * ds rectangle centred at the load point,
 //     unit m/Pa. Evaluated with the corner double difference [[f]] in the numerically stable asinh form.
-//   * Point kernels (Boussinesq-Cerruti, physics-reference §4.3): displacement per unit point force,
+//   * Point kernels (Boussinesq-Cerruti, docs/physics-reference.md §4.3): displacement per unit point force,
 //     unit m/N, singular at r = 0, for use by quadrature (KP strip integrals).
 //
-// Conformal correction (physics-reference §4.2, CONTACT "version 1 = original Blanco formulas"; paper 003
+// Conformal correction (docs/physics-reference.md §4.2, CONTACT "version 1 = original Blanco formulas"; paper 003
 // eq. 2): for a relative rotation alpha = alpha_J - alpha_I of the local normals,
 //     B_ix = A_ix,   B_is = A_is cos(alpha) + A_in sin(alpha),   B_in = A_in cos(alpha) - A_is sin(alpha).
 // Version 1 is chosen because it is what paper 003 eq. (2) writes (B_nn cos - B_nt sin). CONTACT's groove
@@ -26,18 +26,18 @@
 // Coupling term. With the physically consistent COMBINED two-body coefficients the n-s coupling is
 // A_ns = (K/pi G) * Y / r^2 with Kalker's difference parameter K (0 for identical materials), so
 //     B_nn = A_nn cos(alpha) - A_ns sin(alpha) = A_nn cos(alpha)                (default, K = 0)
-// and the main new coupling is B_sn = -A_ss sin(alpha) (physics-reference §4.3). Paper 003 eqs. (3)/(5)
+// and the main new coupling is B_sn = -A_ss sin(alpha) (docs/physics-reference.md §4.3). Paper 003 eqs. (3)/(5)
 // instead keep a non-zero coupling "K s^r / r^2" built from single-body Cerruti coefficients; that variant
 // is available as ConformalCoupling::PaperSingleBody with the quasi-identity parameter
 // K_q = (1 - 2 nu) / (2 (1 - nu)) (the single-body ratio of normal-from-tangential to normal-from-normal
-// point responses, physics-reference §4.3). It is not the default: for two bodies of the same steel the
+// point responses, docs/physics-reference.md §4.3). It is not the default: for two bodies of the same steel the
 // single-body couplings of wheel and rail cancel, so the extra term is not physical in the combined
 // formulation. Its sign follows the same convention as version 1: -sin(alpha_J - alpha_I) * K_q (s_I - s_J)/r^2.
 #include "conforma/material.hpp"
 
 namespace conforma {
 
-// Combined two-body elastic constants (physics-reference §0; CONTACT combin_mater).
+// Combined two-body elastic constants (docs/physics-reference.md §0; CONTACT combin_mater).
 struct ElasticConstants {
   double shear_modulus_Pa = 82.0e9;    // combined G:  1/G = (1/G1 + 1/G2) / 2
   double poisson_ratio = 0.28;         // combined nu: nu/G = (nu1/G1 + nu2/G2) / 2
@@ -49,7 +49,7 @@ ElasticConstants CombinedElasticConstants(const Material& both_bodies);
 ElasticConstants CombinedElasticConstants(const Material& body1, const Material& body2);
 
 // Half-space coefficients for one offset. nn, xx, ss, xs (= sx), xn, sn; the antisymmetric partners are
-// A_nx = -A_xn and A_ns = -A_sn (physics-reference §10.2).
+// A_nx = -A_xn and A_ns = -A_sn (docs/physics-reference.md §10.2).
 struct HalfSpaceInfluence {
   double nn = 0.0;
   double xx = 0.0;
@@ -77,7 +77,7 @@ double RectangleCouplingIntegral(double offset_x_m, double offset_s_m, double dx
 
 // Point kernels per unit point force at offset (x, s) = observation - load, r > 0. m/N.
 // A_nn = (1-nu)/(pi G r), A_xx = [(1-nu)/r + nu x^2/r^3]/(pi G), A_xs = nu x s/(pi G r^3),
-// A_xn = -K x/(pi G r^2), A_sn = -K s/(pi G r^2) (physics-reference §4.3, two-body combination).
+// A_xn = -K x/(pi G r^2), A_sn = -K s/(pi G r^2) (docs/physics-reference.md §4.3, two-body combination).
 // Returns all zeros at r = 0 (the singular point is the caller's business).
 HalfSpaceInfluence PointInfluence(double offset_x_m, double offset_s_m, const ElasticConstants& elastic);
 

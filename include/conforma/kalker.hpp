@@ -1,6 +1,6 @@
 #pragma once
 // Kalker's creep coefficients C11, C22, C23 (and the unverified C33) of the linear rolling-contact theory
-// (physics-reference §2.1-2.2, Kalker 1990 Table E.3 as carried by CONTACT m_hertz.f90 `linrol`).
+// (docs/physics-reference.md §2.1-2.2, Kalker 1990 Table E.3 as carried by CONTACT m_hertz.f90 `linrol`).
 //
 // Sign convention (Kalker; forces on body 1, the wheel; c = sqrt(a b)):
 //     F_x = -G c^2 C11 xi

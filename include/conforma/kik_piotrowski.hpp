@@ -2,7 +2,7 @@
 // Kik-Piotrowski (KP) normal contact on one PatchGeometry: planar KP (virtual penetration eps = 0.55),
 // KPEC (CONTACT's variable-eps correction, exact for elliptic patches) and the conformal extension of
 // Distaso et al. 2026 (paper 003 eqs. 2-8: curvilinear rail coordinates x^r, s^r and the Blanco-Lorenzo
-// corrected influence function). physics-reference §§3, 4, 5, 9.
+// corrected influence function). docs/physics-reference.md §§3, 4, 5, 9.
 //
 // The solver resamples the patch: it finds the contact range [s_min, s_max] of the virtual interpenetration
 // on the input strips (cubic Hermite interpolation of the gap, exact for quadratic gaps), then lays
@@ -22,8 +22,8 @@
 namespace conforma {
 
 enum class KpPenetrationRule {
-  ConstantEpsilon,   // Kik & Piotrowski 2008: g = eps * delta - gap (physics-reference §3.1)
-  VariableEpsilon,   // KPEC, CONTACT m_snorm.f90 (physics-reference §3.3)
+  ConstantEpsilon,   // Kik & Piotrowski 2008: g = eps * delta - gap (docs/physics-reference.md §3.1)
+  VariableEpsilon,   // KPEC, CONTACT m_snorm.f90 (docs/physics-reference.md §3.3)
 };
 
 enum class KpInfluence {
@@ -48,7 +48,7 @@ struct KpOptions {
   KpInfluence influence = KpInfluence::HalfSpace;
   double virtual_penetration_factor = 0.55;  // eps of Kik & Piotrowski (CONTACT user guide eps_kp = 0.55)
   // K of the Blanco-Lorenzo sin(alpha) coupling term (paper 003 eq. 3), see influence.hpp: CombinedBodies uses
-  // Kalker's difference parameter, 0 for wheel and rail of the same steel (physics-reference §0, §4.3) - the
+  // Kalker's difference parameter, 0 for wheel and rail of the same steel (docs/physics-reference.md §0, §4.3) - the
   // default; PaperSingleBody uses the paper's quasi-identity value (1 - 2 nu) / (2 (1 - nu)).
   ConformalCoupling coupling = ConformalCoupling::CombinedBodies;
   // Resolution along s^r (x is integrated exactly). 31 strips: KPEC within 0.2 % of Hertz, groove p_max converged
@@ -101,14 +101,14 @@ struct KpResult {
 // negative approach, bad options.
 KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& patch, double approach_m, const KpOptions& options);
 
-// Options of the three named models of the architecture guide.
+// Options of the three KP models named in docs/architecture.md ("Models to compare").
 KpOptions PlanarKpOptions(const Material& material);      // eps = 0.55, half-space
 KpOptions KpecOptions(const Material& material);          // variable eps, half-space
 KpOptions ConformalKpOptions(const Material& material);   // eps = 0.55, Blanco-Lorenzo
 // Variable eps (KPEC rule) with the Blanco-Lorenzo influence: the default of the pipeline's `conformal` model.
 // Paper 003 leaves the virtual-penetration rule open; the constant eps = 0.55 under-estimates p_max by 6-14 % on
-// elliptic and wide patches (physics-reference §3.2), which the variable rule removes (tests/test_kp_groove.cpp,
-// tests/test_validation_manchester.cpp).
+// elliptic and wide patches (docs/physics-reference.md §3.2), which the variable rule removes
+// (tests/test_kp_groove.cpp, tests/test_validation_manchester.cpp).
 KpOptions ConformalKpecOptions(const Material& material);
 
 // Pressure at (x, s) of a solved patch (0 outside the contact).

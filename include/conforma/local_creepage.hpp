@@ -1,5 +1,5 @@
 #pragma once
-// Local rigid slip on a curved (conformal) contact patch (physics-reference §5, paper 003 §4.2). Across a
+// Local rigid slip on a curved (conformal) contact patch (docs/physics-reference.md §5, paper 003 §4.2). Across a
 // conformal patch the rolling radius r(s^r) and the normal n(s^r) change, so the creepages differ from strip to
 // strip; in particular a rotation about an axis in the tangent plane at the reference point (the wheel's rolling
 // about its axle) becomes spin where the normal has turned.
@@ -10,7 +10,7 @@
 // relative to the rail (body 2, fixed), divided by the rolling speed V:
 //     w = (v + omega x (P - O)) / V,    slip_x = w . e1,   slip_s = w . e2,   spin = omega . (e1 x e2) / V
 // (spin about e1 x e2, so that the rigid-slip field around P is (slip_x - spin dy, slip_s + spin dx) in the
-// (e1, e2) coordinates whatever the handedness of the frame: the form FASTSIM uses, physics-reference §2.4).
+// (e1, e2) coordinates whatever the handedness of the frame: the form FASTSIM uses, docs/physics-reference.md §2.4).
 //
 // Per-strip creepages for the curved FASTSIM (curved_fastsim.hpp) are "creepages at the spin origin in the strip
 // frame": the core builds the rigid slip (xi_j - phi_j y L1/L3, eta_j + phi_j x L2/L3) with y = s_j - s_o,

@@ -9,7 +9,7 @@ struct Material {
 
   double young_modulus_Pa() const { return 2.0 * shear_modulus_Pa * (1.0 + poisson_ratio); }
   // Combined plane-strain modulus of two identical bodies, E* = E / (2 (1 - nu^2)) = G / (1 - nu)
-  // (physics-reference §0; CONTACT's e_star).
+  // (docs/physics-reference.md §0; CONTACT's e_star).
   double combined_modulus_Pa() const { return shear_modulus_Pa / (1.0 - poisson_ratio); }
   // Throws InputError naming the parameter when a value is not physical.
   void validate() const;

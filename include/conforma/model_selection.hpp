@@ -3,7 +3,7 @@
 // adequate for it, decided from the undeformed geometry alone (no normal solve).
 //
 // ESTIMATED CONTACT. The elastic contact is estimated by Kik-Piotrowski's virtual interpenetration with the
-// constant eps = 0.55 (physics-reference §3.1): the strips whose undeformed gap is below eps * delta, delta the
+// constant eps = 0.55 (docs/physics-reference.md §3.1): the strips whose undeformed gap is below eps * delta, delta the
 // patch's rigid approach (in the pipeline the approach of the Hertz push-down for the wheel load, at which the
 // candidates are taken). For an elliptic patch this region has the width of the Hertz ellipse to a few %.
 //
@@ -26,7 +26,7 @@
 //                    g = 0.053, spin 0.2 1/m) has Hertz p_max within 0.1 % but creep forces 43 % off the conformal
 //                    reference; the mbench / worn cases with g >= 0.12 are within 1 %.
 //                elliptic and not conformal -> `hertz`; not elliptic and not conformal -> `kpec` (planar KP with
-//                the variable virtual penetration, exact for elliptic patches, physics-reference §3.3).
+//                the variable virtual penetration, exact for elliptic patches, docs/physics-reference.md §3.3).
 //   Calibration (S1002/60E1 1:40, 10 kN, y = -9..9 mm; S1002/50E4 1:20, 40 kN): patches passing (a)-(c) have Hertz
 //   p_max within 1.1 % and creep forces within 1 % of the conformal model (fit residual up to 0.04); the rejected
 //   tread patches have fit residuals 0.06..0.7 and Hertz p_max errors up to +17 % (60E1 centred: the contact

@@ -3,7 +3,7 @@
 // (metres; y towards the field side; rail z up; wheel z towards a larger radius, flange at negative y).
 //
 // Formats (chosen by the file extension, case-insensitive):
-//  .prw / .prr   Simpack rail-wheel profile (profiles-and-formats.md §2.1). Keywords applied in CONTACT's order:
+//  .prw / .prr   Simpack rail-wheel profile (docs/profiles-and-formats.md §2.1). Keywords applied in CONTACT's order:
 //                point.dist.min, shift.y/z, rotate (refused unless 0), bound.y.*, bound.z.*, mirror.y, mirror.z,
 //                units.len.f, inversion. After that a Simpack wheel is in our convention as it stands (flange
 //                at negative y, z towards the flange tip); a Simpack rail has z DOWN, so z_ours = -z_file.

@@ -1,6 +1,6 @@
 #pragma once
 // Profile update of one wear step (paper 003 §6 eqs. 18-19, paper 001 §6.2 eqs. 28-30,
-// physics-reference §8.3 steps 6-9).
+// docs/physics-reference.md §8.3 steps 6-9).
 //
 // Order (our choice, documented in UpdateProfile): SMOOTH, then SCALE, then REMOVE.
 //   1. Mass-conserving smoothing S of the accumulated depth (penalised least squares, CHOLMOD).

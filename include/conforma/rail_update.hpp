@@ -1,5 +1,5 @@
 #pragma once
-// Rail update (paper 003 §6 and Fig. 11; physics-reference §8.3 step 10).
+// Rail update (paper 003 §6 and Fig. 11; docs/physics-reference.md §8.3 step 10).
 //
 // The rail changes much more slowly than the wheel, so its evolution is decoupled: during one rail step
 // the rail r_k stays fixed while the wheel runs through its whole sequence of steps w^1..w^n. Each wheel
@@ -32,7 +32,7 @@ NormalAverageResult AverageAlongNormals(const Profile& base, const std::vector<P
 struct RailStepOptions {
   bool keep_rail_fixed = false;          // the rail is never updated (paper 003 §7 keeps a measured rail)
   double max_depth_per_step_m = 0.1e-3;  // cap on the mean rail depth of one rail step (our default;
-                                         // physics-reference §8.3: the rail uses its own smaller step)
+                                         // docs/physics-reference.md §8.3: the rail uses its own smaller step)
   double max_passages_per_step = std::numeric_limits<double>::infinity();
   DepthSmoothingOptions smoothing;
   ProfileValidityOptions validity;

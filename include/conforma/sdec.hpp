@@ -1,12 +1,12 @@
 #pragma once
-// SDEC reduction (KBTNH, Piotrowski, Liu & Bruni 2017; core paper 003 §4.2, Fig. 6; physics-reference §6): a
+// SDEC reduction (KBTNH, Piotrowski, Liu & Bruni 2017; core paper 003 §4.2, Fig. 6; docs/physics-reference.md §6): a
 // non-elliptic, non-symmetric, curved contact patch given as strips along s^r (each with a contact length
 // 2 c_j along x^r) becomes a simplified double elliptical contact: two half-ellipses with a common longitudinal
 // semi-axis a, lateral semi-axes b_neg (towards -s) and b_pos (towards +s), b = (b_neg + b_pos) / 2, with
 //     a = sqrt(A_c / pi * W3 / (W1 + W2)),   b = sqrt(A_c / pi * (W1 + W2) / W3)          (paper 003, §4.2)
 // so that pi a b = A_c (area kept) and a / b = W3 / (W1 + W2) (length/width ratio kept).
 //
-// How W1, W2, W3 are measured (decision; the paper does not define them, physics-reference §6.2 gives the
+// How W1, W2, W3 are measured (decision; the paper does not define them, docs/physics-reference.md §6.2 gives the
 // likely meaning, which is followed):
 //   * A_c = sum_j 2 c_j ds_j over the strips in contact (curved surface area, arc length along s^r);
 //   * the LONGEST STRIP line s*: the strip of largest half-length c_max, refined by the vertex of the parabola
@@ -15,7 +15,8 @@
 //   * W1 = s* - s_lo and W2 = s_hi - s*, the widths (along s^r) on the negative and positive side of s*, where
 //     s_lo and s_hi are the outer edges of the first and last strips in contact (s_j -/+ ds_j / 2).
 //   The asymmetry is kept by splitting 2b in the ratio W1 : W2:  b_neg = 2 b W1 / (W1 + W2),
-//   b_pos = 2 b W2 / (W1 + W2); psi = (b_pos - b_neg) / (2 b) (CONTACT's SDEC asymmetry, physics-reference §6.1).
+//   b_pos = 2 b W2 / (W1 + W2); psi = (b_pos - b_neg) / (2 b) (CONTACT's SDEC asymmetry,
+//   docs/physics-reference.md §6.1).
 //   For an exactly elliptic patch W3 = 2a, W1 = W2 = b and the formulas return the ellipse.
 //
 // Creep coefficients of the SDEC (decision): Kalker's C_ij at the SDEC ratio a / b (KalkerCoefficients), i.e. the
@@ -24,10 +25,10 @@
 // (centroids 4 b_pos / (3 pi), -4 b_neg / (3 pi) of the two half-ellipses): the linear-theory forces of a spin
 // phi about a centre s_o are Kalker's about the centroid, with the longitudinal creepage shifted by the rigid
 // slip of the spin there: F_x = -G c^2 C11 (xi - phi (y_c - s_o)), F_y = -G c^2 C22 eta - G c^3 C23 phi.
-// The FASTSIM flexibilities of the SDEC are KalkerFlexibilities(a, b, C_ij(a/b)) (physics-reference §2.3, §3.4);
-// the curved-patch solver applies them on the REAL patch, where the asymmetry acts through the real strip
+// The FASTSIM flexibilities of the SDEC are KalkerFlexibilities(a, b, C_ij(a/b)) (docs/physics-reference.md §2.3,
+// §3.4); the curved-patch solver applies them on the REAL patch, where the asymmetry acts through the real strip
 // positions. The KBTNH tables themselves (non-Hertzian C_ij as a function of psi) are not available
-// (physics-reference §6.3) and are not used.
+// (docs/physics-reference.md §6.3) and are not used.
 #include <vector>
 
 #include "conforma/fastsim.hpp"

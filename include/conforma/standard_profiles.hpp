@@ -1,6 +1,6 @@
 #pragma once
 // Standard wheel and rail profiles generated from their exact geometric definitions
-// (profiles-and-formats.md §1.1 S1002, §1.2 EN 13674 rail heads), in the conventions of profile.hpp.
+// (docs/profiles-and-formats.md §1.1 S1002, §1.2 EN 13674 rail heads), in the conventions of profile.hpp.
 #include <cmath>
 #include <string>
 

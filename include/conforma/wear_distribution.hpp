@@ -1,6 +1,6 @@
 #pragma once
 // Wear distributions along the wheel and rail profile arc lengths (paper 001 §6.2 eqs. 24-27,
-// paper 003 §6 steps 1-3, physics-reference §8.3 steps 2-5).
+// paper 003 §6 steps 1-3, docs/physics-reference.md §8.3 steps 2-5).
 //
 //  1. Longitudinal integration (paper 001 eq. 24): each cell of a contact patch removes
 //     depth_per_rolled_metre * dx per passage; summing the cells of one strip along x gives the depth per

@@ -2,14 +2,14 @@
 // Wear laws: the depth of material a contact cell removes per metre rolled through it.
 //
 // Two families:
-//  * Wear-index (T-gamma/A) laws, paper 003 eqs. 14-17, physics-reference §8.1:
+//  * Wear-index (T-gamma/A) laws, paper 003 eqs. 14-17, docs/physics-reference.md §8.1:
 //      I_w = |p_t . s|                      [N/mm^2]  (p_t tangential traction, s relative slip [-])
 //      K_w = K_w(I_w)                        [ug/(m mm^2)]  mass per metre rolled and mm^2 of surface
 //      depth per metre rolled = K_w / rho   (rho in ug/mm^3 equals rho in kg/m^3 numerically)
 //    The built-in USFD (Lewis & Dwyer-Joyce 2004 / Braghin et al. 2006) law is usfd_wear_rate(); any
 //    piecewise-linear K_w(I_w) is a WearIndexLaw (table of breakpoints, jumps as repeated abscissae).
 //  * Archard with a wear-coefficient map k(p, v_slip), paper 000 eqs. 6-10 and Tables 2-3,
-//    physics-reference §8.2:  depth = k p d_slip / H with d_slip = |s| dx, v_slip = |s| V.
+//    docs/physics-reference.md §8.2:  depth = k p d_slip / H with d_slip = |s| dx, v_slip = |s| V.
 //
 // All functions are pure; SI units except where a name carries the field's unit (N/mm^2, ug/(m mm^2)).
 #include <Eigen/Core>
@@ -23,12 +23,12 @@ namespace conforma {
 
 // ---------------------------------------------------------------- wear-index (T-gamma/A) laws
 
-// USFD law (physics-reference §8.1, coefficients for R8T wheel vs UIC60 900A rail as in Braghin et al.
+// USFD law (docs/physics-reference.md §8.1, coefficients for R8T wheel vs UIC60 900A rail as in Braghin et al.
 // 2006, confirmed by a third-party code):
 //   K = 5.3 I                 I < 10.4          (mild)
 //   K = 55.0                  10.4 <= I <= 77.2 (severe)
 //   K = 61.9 I - 4778.7       I > 77.2          (catastrophic)
-// Paper 003 eq. 15 prints 55.1 for the severe plateau; physics-reference and the third-party code use
+// Paper 003 eq. 15 prints 55.1 for the severe plateau; docs/physics-reference.md and the third-party code use
 // 55.0 (0.2 % apart). 55.0 is the default; set severe_rate to 55.1 to follow paper 003 literally.
 // The law is discontinuous at 77.2 (61.9*77.2 - 4778.7 = -0.02, not 55): the catastrophic branch
 // restarts from about zero. Negative rates (just above 77.2) are clamped to 0.
@@ -94,7 +94,7 @@ struct ArchardMap {
   // Jendel (2002) map as quoted in paper 000 Table 2 (ranges K1 = 300-400e-4, K2 = 1-10e-4 for
   // v < 0.2 m/s, K3 = 30-40e-4 for 0.2..0.7 m/s, K4 = 1-10e-4 above). The map gives ranges only; this
   // uses the MID-POINTS (350e-4, 5.5e-4, 35e-4, 5.5e-4), a choice of ours. H = 2.75 GPa is the middle
-  // of the 2.5-3 GPa that physics-reference §8.2 recalls [MEM, unverified].
+  // of the 2.5-3 GPa that docs/physics-reference.md §8.2 recalls [MEM, unverified].
   static ArchardMap Jendel();
   // Paper 000 Table 3 (scaled roller rig, soft Fe360 wheel / Fe510 roller, tuned to the rig): wheel and
   // roller maps, values verbatim; the table labels them "m/km", we read them as the dimensionless Archard

@@ -1,5 +1,5 @@
 #pragma once
-// The wear loop (paper 003 §§5-6 and Fig. 11, paper 001 §§6-7; physics-reference §8.3):
+// The wear loop (paper 003 §§5-6 and Fig. 11, paper 001 §§6-7; docs/physics-reference.md §8.3):
 //
 //   for each rail step k (one, with the rail fixed -- paper 003 §7 -- the default):
 //     wheel w = w_0

@@ -9,7 +9,7 @@ import conforma
 
 def test_s1002_flange_dimensions_are_the_standard_new_wheel_values():
     d = conforma.wheel_dimensions(conforma.s1002())
-    # new S1002 (EN 13715): Sd = 32.5 mm, Sh = 28 mm, qR = 10.8 mm (profiles-and-formats.md)
+    # new S1002 (EN 13715): Sd = 32.5 mm, Sh = 28 mm, qR = 10.8 mm (docs/profiles-and-formats.md)
     assert d["sh_mm"] == pytest.approx(28.0, abs=0.01)
     assert d["sd_mm"] == pytest.approx(32.5, abs=0.05)
     assert d["qr_mm"] == pytest.approx(10.8, abs=0.1)

@@ -76,7 +76,7 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
     const double radius = g.setup().nominal_radius_m[side_index(side)] + z_w;
     p.s_m.push_back(s - s_ref);
     p.gap_m.push_back(gap);
-    // physics-reference §1.1: rolling curvature of the wheel in the tilted plane, cos(alpha_w) / r
+    // docs/physics-reference.md §1.1: rolling curvature of the wheel in the tilted plane, cos(alpha_w) / r
     p.longitudinal_curvature_per_m.push_back(std::cos(std::atan(slope)) / (2.0 * radius));
     p.wheel_radius_m.push_back(radius);
     p.alpha_rad.push_back(std::atan2(n_loc.dot(t_ref), n_loc.dot(n_ref)));

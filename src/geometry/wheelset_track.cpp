@@ -348,7 +348,7 @@ RigidContactPoint WheelsetTrackGeometry::MakeContactPoint(Side side, const Frame
   const size_t i = std::min(static_cast<size_t>(u), rt.size() - 2);
   const double w = u - static_cast<double>(i);
   c.rail_lateral_curvature_per_m = (1 - w) * rt.kappa[i] + w * rt.kappa[i + 1];
-  // physics-reference §1.1: A = cos(alpha_w) / (2 r) (wheel rolling curvature in the tilted plane; rail
+  // docs/physics-reference.md §1.1: A = cos(alpha_w) / (2 r) (wheel rolling curvature in the tilted plane; rail
   // straight), B = (1/R_y^w + 1/R_y^r) / 2 with convex curvatures positive
   c.hertz_A_per_m = std::cos(std::atan(wslope)) / (2.0 * radius);
   c.hertz_B_per_m = 0.5 * (c.wheel_lateral_curvature_per_m + c.rail_lateral_curvature_per_m);

@@ -1,4 +1,4 @@
-// Complete elliptic integrals by the arithmetic-geometric mean (physics-reference §1.2, "AGM
+// Complete elliptic integrals by the arithmetic-geometric mean (docs/physics-reference.md §1.2, "AGM
 // implementation": K = pi / (2 AGM(1, g)), E = K (1 - sum 2^(n-1) c_n^2)). The sum itself is (K - E)/K, so
 // K - E comes out without cancellation when g -> 1 (nearly circular contact).
 #include <cmath>

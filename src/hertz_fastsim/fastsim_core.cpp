@@ -1,4 +1,4 @@
-// FASTSIM strip core (Kalker 1982; physics-reference §2.4, steps 1-4, after CONTACT m_solvpt.f90
+// FASTSIM strip core (Kalker 1982; docs/physics-reference.md §2.4, steps 1-4, after CONTACT m_solvpt.f90
 // modif_fastsim), written for a general strip patch.
 //
 // Discretisation: the traction is evaluated at the element centres. The rigid-slip increment between two

@@ -1,4 +1,4 @@
-// FASTSIM on a Hertz ellipse (physics-reference §2.3-2.4): Kalker's elliptic mesh (ny strips of equal width,
+// FASTSIM on a Hertz ellipse (docs/physics-reference.md §2.3-2.4): Kalker's elliptic mesh (ny strips of equal width,
 // nx elements of equal length per strip between -a(y) and a(y), a(y) = a sqrt(1 - y^2/b^2)), C_ij from
 // KalkerCoefficients, flexibilities from KalkerFlexibilities, the strip core of fastsim_core.cpp.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Hertz elliptical contact, exact solution with complete elliptic integrals (physics-reference §1.2,
+// Hertz elliptical contact, exact solution with complete elliptic integrals (docs/physics-reference.md §1.2,
 // after CONTACT m_hertz.f90 hzcalc3d). Both bodies share one Material, E* = G / (1 - nu) (§0).
 #include "conforma/hertz.hpp"
 

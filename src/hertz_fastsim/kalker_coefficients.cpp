@@ -1,4 +1,4 @@
-// Kalker's creep coefficients (physics-reference §2.2: Kalker 1990 Table E.3 via CONTACT m_hertz.f90 `linrol`,
+// Kalker's creep coefficients (docs/physics-reference.md §2.2: Kalker 1990 Table E.3 via CONTACT m_hertz.f90 `linrol`,
 // asymptotes for g < 0.1, 1/C quadratic in nu). The interpolation choices are documented in kalker.hpp.
 #include "conforma/kalker.hpp"
 

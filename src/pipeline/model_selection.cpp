@@ -44,7 +44,7 @@ ModelSelection SelectContactModel(const PatchGeometry& patch, double approach_m,
     throw InputError("auto: patch arrays of different lengths");
   ModelSelection out;
 
-  // Estimated contact: virtual interpenetration eps * delta - gap > 0 (physics-reference §3.1).
+  // Estimated contact: virtual interpenetration eps * delta - gap > 0 (docs/physics-reference.md §3.1).
   const double virtual_penetration = options.virtual_penetration_factor * approach_m;
   std::vector<size_t> in_contact;
   std::vector<double> angles;

@@ -144,7 +144,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   // Hertz (and auto, which may choose Hertz): the rigid contact points (gap minima) inside each region.
   std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
   if (options.model == ContactModel::Hertz || options.model == ContactModel::Auto) {
-    // Multi-Hertz (physics-reference §1): one ellipse per rigid gap minimum of the wheel at first touch, each
+    // Multi-Hertz (docs/physics-reference.md §1): one ellipse per rigid gap minimum of the wheel at first touch, each
     // with its own approach; the interpenetration regions only bracket the push-down. Taking one point per
     // region at the pushed pose instead made the wheel's forces jump whenever two regions merged (flange face
     // and flange root, tread and flange) or a pushed minimum slid into the conformal flange root, which

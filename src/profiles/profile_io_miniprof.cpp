@@ -1,5 +1,5 @@
 // MiniProf .ban (rail) / .whl (wheel) files, new style (Key=Value header, ColumnDef) and old style
-// (MINIPROF / #MINIWHEELPROF header with an "Sd Sh qR (Sd/Sh/qR)" line); profiles-and-formats.md §2.2.
+// (MINIPROF / #MINIWHEELPROF header with an "Sd Sh qR (Sd/Sh/qR)" line); docs/profiles-and-formats.md §2.2.
 // Values are in mm. Orientation is decided from the data (see profile_io.hpp).
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Simpack rail-wheel profile files .prw / .prr (profiles-and-formats.md §2.1): reader and writer.
+// Simpack rail-wheel profile files .prw / .prr (docs/profiles-and-formats.md §2.1): reader and writer.
 #include <cmath>
 #include <algorithm>
 #include <fstream>

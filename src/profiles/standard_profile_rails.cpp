@@ -1,4 +1,4 @@
-// EN 13674 rail heads (60E1, 54E1, 50E6, 50E4) from the arc definitions of profiles-and-formats.md §1.2:
+// EN 13674 rail heads (60E1, 54E1, 50E6, 50E4) from the arc definitions of docs/profiles-and-formats.md §1.2:
 // crown arc R1 (centre (0,-R1)) to |y| = w1/2, arc R2 tangent to it to |y| = w2/2, arc R3 = 13 mm tangent to
 // that until the surface heading is 1:20 (direction (-1,-20)), then the straight 1:20 head flank.
 #include <algorithm>

@@ -1,5 +1,5 @@
 // S1002 wheel profile from the piecewise definition (EN 13715 / UIC 510-2; DLR coefficients),
-// profiles-and-formats.md §1.1. S = lateral coordinate [mm] (taping line 0, flange at S < 0), F = height [mm].
+// docs/profiles-and-formats.md §1.1. S = lateral coordinate [mm] (taping line 0, flange at S < 0), F = height [mm].
 #include <algorithm>
 #include <cmath>
 #include <vector>

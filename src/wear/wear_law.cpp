@@ -24,7 +24,7 @@ WearRegime usfd_regime(double wear_index, const UsfdCoefficients& c) {
   return WearRegime::Catastrophic;
 }
 
-// physics-reference §8.1 / paper 003 eq. 15
+// docs/physics-reference.md §8.1 / paper 003 eq. 15
 double usfd_wear_rate(double wear_index, const UsfdCoefficients& c) {
   require_non_negative(wear_index, "wear index I_w");
   switch (usfd_regime(wear_index, c)) {

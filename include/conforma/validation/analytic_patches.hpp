@@ -42,7 +42,7 @@ inline Curvatures CurvaturesForRatio(double ratio, double curvature_sum, const M
 }
 
 // Circular wheel (profile radius R_w) in a circular groove (R_g > R_w), rolling radius r0 at the groove bottom
-// (CONTACT groove case, data README). Gap along the groove normal vs groove arc length s, alpha = -s/R_g (the
+// (CONTACT groove case, docs/data.md). Gap along the groove normal vs groove arc length s, alpha = -s/R_g (the
 // outward rail normal of a concave groove turns towards -s, patch.hpp convention), A = cos(alpha) / (2 r(s)).
 inline PatchGeometry GroovePatch(double wheel_radius_m, double groove_radius_m, double rolling_radius_m,
                                  double half_range_m, int strips) {

@@ -1,5 +1,5 @@
 #pragma once
-// EN 15302 equivalent-conicity benchmark (shared data profiles/en15302, data README): the nine wheel/rail
+// EN 15302 equivalent-conicity benchmark (shared data profiles/en15302, docs/data.md): the nine wheel/rail
 // combinations E1..E9 (wheels RUIC519{A,B,H,I}.dat, rail SUIC519A.dat already inclined 1:40, gauge
 // 1435.16 mm at 14 mm, flange back 1360 mm, wheel diameters 920/920 or 920/918). Delta r(y) is computed
 // with the wheelset roll held at zero and each wheel lowered onto its own rail (EquilibriumOptions::
