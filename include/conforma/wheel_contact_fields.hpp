@@ -104,7 +104,7 @@ template <class Options>
 using EnableIfOptions = std::enable_if_t<std::is_same_v<std::remove_const_t<Options>, WheelContactOptions>, int>;
 }  // namespace fields_detail
 
-// Everything the normal stage reads (the normal-problem cache key). The first 17 fields are in the order of the
+// Everything the normal stage reads (the normal-problem cache key). The first 15 fields are in the order of the
 // original hand-written key; the fields after them were missing from it.
 template <class Options, class Visitor, fields_detail::EnableIfOptions<Options> = 0>
 constexpr void VisitNormalOptionFields(Options& o, Visitor&& v) {
