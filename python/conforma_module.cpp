@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "conforma/error.hpp"
@@ -15,6 +16,7 @@
 #include "conforma/standard_profiles.hpp"
 #include "conforma/validation/validation_manchester.hpp"
 #include "conforma/wheel_contact.hpp"
+#include "conforma/wheel_contact_fields.hpp"
 #include "conforma/wheel_dimensions.hpp"
 #include "interop.hpp"
 #include "module_parts.hpp"
@@ -89,21 +91,11 @@ py::dict FieldsDict(const PatchReport& p) {
   return f;
 }
 
-// The keys of `conforma contact --json` (src/app/report_json.cpp), plus "fields" when they were kept.
+// The keys of `conforma contact --json` (the field tables, conforma/wheel_contact_fields.hpp), plus "fields" when
+// they were kept.
 py::dict PatchDict(const PatchReport& p, bool with_fields) {
   py::dict d;
-  d["normal_status"] = p.normal_status, d["tangential_status"] = p.tangential_status;
-  d["fn_N"] = p.fn_N, d["fx_N"] = p.fx_N, d["fy_N"] = p.fy_N, d["mz_Nm"] = p.mz_Nm;
-  d["pmax_Pa"] = p.pmax_Pa, d["p0_Pa"] = p.p0_Pa, d["area_m2"] = p.area_m2, d["a_m"] = p.a_m, d["b_m"] = p.b_m;
-  d["width_m"] = p.width_m, d["length_m"] = p.length_m, d["approach_m"] = p.approach_m;
-  d["contact_angle_rad"] = p.contact_angle_rad, d["y_contact_rail_m"] = p.y_contact_rail_m;
-  d["z_contact_rail_m"] = p.z_contact_rail_m, d["y_contact_wheel_m"] = p.y_contact_wheel_m;
-  d["rolling_radius_m"] = p.rolling_radius_m, d["lead_m"] = p.lead_m;
-  d["xi"] = p.xi, d["eta"] = p.eta, d["phi_per_m"] = p.phi_per_m, d["alpha_c_deg"] = p.alpha_c_deg;
-  d["is_conformal"] = p.is_conformal, d["adhesion_area_m2"] = p.adhesion_area_m2, d["slip_area_m2"] = p.slip_area_m2;
-  d["frictional_power_W"] = p.frictional_power_W;
-  d["vertical_force_N"] = p.vertical_force_N, d["lateral_force_N"] = p.lateral_force_N;
-  d["model"] = to_string(p.model), d["auto_alpha_c_deg"] = p.auto_alpha_c_deg;
+  VisitPatchFields(p, [&d](const char* key, const auto& value) { d[key] = value; });
   if (with_fields) d["fields"] = FieldsDict(p);
   return d;
 }
@@ -117,14 +109,16 @@ py::dict WheelDict(const WheelsetTrackGeometry& geometry, const WheelContactRepo
     d["contact_point_track_m"] = std::vector<double>{t.point_m.x(), t.point_m.y(), t.point_m.z()};
     patches.append(d);
   }
-  py::dict pose;
-  pose["y_m"] = r.pose.lateral_m, pose["z_m"] = r.pose.vertical_m, pose["roll_rad"] = r.pose.roll_rad;
-  pose["yaw_rad"] = r.pose.yaw_rad;
   py::dict d;
-  d["side"] = to_string(r.side), d["model"] = to_string(r.model), d["status"] = to_string(r.status);
-  d["pose"] = pose;
-  d["vertical_force_N"] = r.vertical_force_N, d["pressure_vertical_force_N"] = r.pressure_vertical_force_N;
-  d["lateral_force_N"] = r.lateral_force_N, d["load_iterations"] = r.load_iterations;
+  VisitWheelReportFields(r, [&d](const char* key, const auto& value) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, WheelsetPose>) {
+      py::dict pose;
+      VisitPoseFields(value, [&pose](const char* pose_key, double x) { pose[pose_key] = x; });
+      d[key] = pose;
+    } else {
+      d[key] = value;
+    }
+  });
   d["patches"] = patches;
   return d;
 }

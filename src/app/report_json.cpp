@@ -1,43 +1,35 @@
 #include "report_json.hpp"
 
 #include <cstdio>
+#include <type_traits>
 
 #include "conforma/geometry.hpp"
+#include "conforma/wheel_contact_fields.hpp"
 
 namespace conforma::cli {
 
+// The keys and values of the field tables (conforma/wheel_contact_fields.hpp).
 nlohmann::json ToJson(const PatchReport& p) {
-  return {{"normal_status", p.normal_status},   {"tangential_status", p.tangential_status},
-          {"fn_N", p.fn_N},                     {"fx_N", p.fx_N},
-          {"fy_N", p.fy_N},                     {"mz_Nm", p.mz_Nm},
-          {"pmax_Pa", p.pmax_Pa},               {"p0_Pa", p.p0_Pa},
-          {"area_m2", p.area_m2},               {"a_m", p.a_m},
-          {"b_m", p.b_m},                       {"width_m", p.width_m},
-          {"length_m", p.length_m},             {"approach_m", p.approach_m},
-          {"contact_angle_rad", p.contact_angle_rad}, {"y_contact_rail_m", p.y_contact_rail_m},
-          {"z_contact_rail_m", p.z_contact_rail_m}, {"y_contact_wheel_m", p.y_contact_wheel_m},
-          {"rolling_radius_m", p.rolling_radius_m}, {"lead_m", p.lead_m},
-          {"xi", p.xi},                         {"eta", p.eta},
-          {"phi_per_m", p.phi_per_m},           {"alpha_c_deg", p.alpha_c_deg},
-          {"is_conformal", p.is_conformal},     {"adhesion_area_m2", p.adhesion_area_m2},
-          {"slip_area_m2", p.slip_area_m2},     {"frictional_power_W", p.frictional_power_W},
-          {"vertical_force_N", p.vertical_force_N}, {"lateral_force_N", p.lateral_force_N},
-          {"model", to_string(p.model)},          {"auto_alpha_c_deg", p.auto_alpha_c_deg}};
+  nlohmann::json out = nlohmann::json::object();
+  VisitPatchFields(p, [&out](const char* key, const auto& value) { out[key] = value; });
+  return out;
 }
 
 nlohmann::json ToJson(const WheelContactReport& r) {
+  nlohmann::json out = nlohmann::json::object();
+  VisitWheelReportFields(r, [&out](const char* key, const auto& value) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(value)>, WheelsetPose>) {
+      nlohmann::json pose = nlohmann::json::object();
+      VisitPoseFields(value, [&pose](const char* pose_key, double x) { pose[pose_key] = x; });
+      out[key] = pose;
+    } else {
+      out[key] = value;
+    }
+  });
   nlohmann::json patches = nlohmann::json::array();
   for (const PatchReport& p : r.patches) patches.push_back(ToJson(p));
-  return {{"side", to_string(r.side)},
-          {"model", to_string(r.model)},
-          {"status", to_string(r.status)},
-          {"pose", {{"y_m", r.pose.lateral_m}, {"z_m", r.pose.vertical_m}, {"roll_rad", r.pose.roll_rad},
-                    {"yaw_rad", r.pose.yaw_rad}}},
-          {"vertical_force_N", r.vertical_force_N},
-          {"pressure_vertical_force_N", r.pressure_vertical_force_N},
-          {"lateral_force_N", r.lateral_force_N},
-          {"load_iterations", r.load_iterations},
-          {"patches", patches}};
+  out["patches"] = patches;
+  return out;
 }
 
 void PrintPatchTableHeader(std::ostream& out) {
