@@ -309,7 +309,7 @@ TEST(WheelContactFields, CachedEqualsUncachedWhenAnyOneOptionChanges) {
 // The two normal-stage options the hand-written key in wheel_contact.cpp misses, with values that change the result:
 // cached calls return the stale report until wheel_contact.cpp builds its keys with NormalCacheKey /
 // ReportCacheKey (wheel_contact_key.hpp). DISABLED until then; enable it with that change.
-TEST(WheelContactFields, DISABLED_CacheSeesTheOptionsTheHandWrittenKeyMissed) {
+TEST(WheelContactFields, CacheSeesTheOptionsTheHandWrittenKeyMissed) {
   const WheelsetVelocity v = Rolling();
   struct Case {
     const char* name;

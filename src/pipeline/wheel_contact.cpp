@@ -9,14 +9,11 @@
 #include <memory>
 #include <mutex>
 
-#include "conforma/bem_reference.hpp"
-#include "conforma/conformity.hpp"
-#include "conforma/curved_fastsim.hpp"
 #include "conforma/error.hpp"
-#include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/local_creepage.hpp"
 #include "conforma/model_selection.hpp"
+#include "wheel_contact_key.hpp"
 #include "wheel_motion.hpp"
 
 namespace conforma {
@@ -369,29 +366,6 @@ WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTr
 }
 
 
-// Key of the normal stage: everything SolveNormalStage reads (geometry identity, side, pose, normal options).
-std::vector<double> NormalKey(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
-                              const WheelContactOptions& o) {
-  const ModelSelectionOptions& a = o.auto_selection;
-  return {static_cast<double>(reinterpret_cast<std::uintptr_t>(&geometry)), static_cast<double>(side_index(side)),
-          pose.lateral_m, pose.vertical_m, pose.roll_rad, pose.yaw_rad, static_cast<double>(o.model),
-          o.material.shear_modulus_Pa, o.material.poisson_ratio, o.vertical_load_N, o.load_tolerance,
-          static_cast<double>(o.kp_strips), static_cast<double>(o.bem_x_elements), o.candidate_strip_width_m,
-          o.conformity_threshold_deg, o.conformal_variable_penetration ? 1.0 : 0.0, a.conformity_threshold_deg,
-          a.virtual_penetration_factor, a.gap_fit_tolerance, a.curvature_tolerance, static_cast<double>(a.min_strips)};
-}
-
-// ... plus everything FinishWheelContact reads: the whole report.
-std::vector<double> ReportKey(std::vector<double> key, const WheelsetVelocity& v, const WheelContactOptions& o) {
-  key.insert(key.end(), {v.forward_speed_m_s, v.lateral_velocity_m_s, v.yaw_rate_rad_s, v.axle_angular_velocity_rad_s,
-                         o.friction_coefficient, static_cast<double>(o.fastsim_elements), o.solve_tangential ? 1.0 : 0.0,
-                         o.keep_fields ? 1.0 : 0.0, static_cast<double>(o.fastsim.bound),
-                         o.fastsim.blend_flexibilities ? 1.0 : 0.0, static_cast<double>(o.fastsim.marching),
-                         o.creepages_given ? 1.0 : 0.0, o.creepages.longitudinal, o.creepages.lateral,
-                         o.creepages.spin_per_m, o.material.density_kg_m3});
-  return key;
-}
-
 }  // namespace
 
 struct WheelContactCache::Impl {
@@ -423,8 +397,8 @@ WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry
                                            WheelContactCache& cache) {
   options.validate();
   WheelContactCache::Impl& c = *cache.impl_;
-  const std::vector<double> normal_key = NormalKey(geometry, side, pose, options);
-  const std::vector<double> report_key = ReportKey(normal_key, velocity, options);
+  const std::vector<double> normal_key = NormalCacheKey(geometry, side, pose, options);
+  const std::vector<double> report_key = ReportCacheKey(normal_key, velocity, options);
   // a NaN cannot be a map key (no ordering): such calls go uncached (and throw where the pipeline throws)
   for (double v : report_key)
     if (!std::isfinite(v)) return SolveWheelContact(geometry, side, pose, velocity, options);
