@@ -6,37 +6,16 @@
 #include <filesystem>
 
 #include "conforma/error.hpp"
+#include "conforma/profile_by_name.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 
 namespace conforma::interop {
 
-namespace {
-bool BuiltInRail(const std::string& name, RailSection* section) {
-  for (RailSection s : {RailSection::R60E1, RailSection::R54E1, RailSection::R50E6, RailSection::R50E4})
-    if (name == to_string(s)) { *section = s; return true; }
-  return false;
-}
-}  // namespace
-
-Profile WheelProfileFrom(const std::string& name_or_file) {
-  if (name_or_file == "S1002") return MakeS1002();
-  if (!std::filesystem::exists(name_or_file))
-    throw InputError("wheel profile: '" + name_or_file + "' is neither the built-in S1002 nor a file");
-  ProfileReadOptions o;
-  o.kind = ProfileKind::Wheel;
-  return LoadProfile(name_or_file, o);
-}
+Profile WheelProfileFrom(const std::string& name_or_file) { return WheelProfileByNameOrFile(name_or_file); }
 
 Profile RailProfileFrom(const std::string& name_or_file, bool* built_in) {
-  RailSection section;
-  *built_in = BuiltInRail(name_or_file, &section);
-  if (*built_in) return MakeRail(section, 0.0);
-  if (!std::filesystem::exists(name_or_file))
-    throw InputError("rail profile: '" + name_or_file + "' is neither a built-in rail (60E1, 54E1, 50E6, 50E4) nor a file");
-  ProfileReadOptions o;
-  o.kind = ProfileKind::Rail;
-  return LoadProfile(name_or_file, o);
+  return RailProfileByNameOrFile(name_or_file, built_in);
 }
 
 std::unique_ptr<WheelsetTrackGeometry> MakeTrackGeometry(const Profile& wheel, const Profile& rail,

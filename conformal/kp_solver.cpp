@@ -9,6 +9,7 @@
 #include "conforma/hertz.hpp"
 #include "conforma/influence.hpp"
 #include "conforma/kik_piotrowski.hpp"
+#include "conforma/root_finding.hpp"
 #include "kp_patch_interpolant.hpp"
 #include "kp_solver_internal.hpp"
 #include "kp_strip_integrals.hpp"
@@ -58,27 +59,17 @@ using kp_detail::PatchInterpolant;
 // Root of f on [inside, outside] where f(inside) > 0 >= f(outside): Illinois false position.
 template <class F>
 double EdgeRoot(const F& f, double inside, double f_inside, double outside, double f_outside) {
-  double a = inside, fa = f_inside, b = outside, fb = f_outside;
+  IllinoisBracket bracket(inside, f_inside, outside, f_outside);  // "low" = the inside end (root_finding.hpp)
   const double f_scale = 1e-15 * (std::abs(f_inside) + std::abs(f_outside));
-  int side = 0;
   for (int iteration = 0; iteration < 100; ++iteration) {
-    const double c = (a * fb - b * fa) / (fb - fa);
+    const double c = bracket.FalsePosition();
+    const double a = bracket.low(), b = bracket.high();
     if (std::abs(b - a) <= 1e-14 * (std::abs(a) + std::abs(b)) + 1e-18) return c;
     const double fc = f(c);
-    if (fc > 0.0) {
-      a = c;
-      fa = fc;
-      if (side == -1) fb *= 0.5;
-      side = -1;
-    } else {
-      b = c;
-      fb = fc;
-      if (side == 1) fa *= 0.5;
-      side = 1;
-    }
+    bracket.Replace(c, fc, fc > 0.0);
     if (std::abs(fc) <= f_scale) return c;
   }
-  return 0.5 * (a + b);
+  return 0.5 * (bracket.low() + bracket.high());
 }
 
 struct ContactRange {

@@ -9,6 +9,7 @@
 
 #include "conforma/error.hpp"
 #include "conforma/friction_law.hpp"
+#include "conforma/root_finding.hpp"
 
 namespace conforma {
 
@@ -50,24 +51,14 @@ double SolveElementSlip(const ElementSlip& e, double guess) {
     hi *= 2.0;
     f_hi = e.Residual(hi, &px, &py);
   }
-  int side = 0;
+  IllinoisBracket bracket(lo, f_lo, hi, f_hi);  // the one root finder's step (root_finding.hpp)
   double gamma = hi;
-  for (int iteration = 0; iteration < 200 && hi - lo > 1e-15 * hi; ++iteration) {
-    gamma = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-    if (!(gamma > lo && gamma < hi)) gamma = 0.5 * (lo + hi);
+  for (int iteration = 0; iteration < 200 && bracket.high() - bracket.low() > 1e-15 * bracket.high(); ++iteration) {
+    gamma = bracket.FalsePosition();
+    if (!(gamma > bracket.low() && gamma < bracket.high())) gamma = 0.5 * (bracket.low() + bracket.high());
     const double f = e.Residual(gamma, &px, &py);
     if (f == 0.0) break;
-    if (f < 0.0) {
-      lo = gamma;
-      f_lo = f;
-      if (side == -1) f_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = gamma;
-      f_hi = f;
-      if (side == 1) f_lo *= 0.5;
-      side = 1;
-    }
+    bracket.Replace(gamma, f, f < 0.0);
   }
   return gamma;
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "conforma/error.hpp"
+#include "conforma/profile_by_name.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/validation/validation_manchester.hpp"
@@ -297,9 +298,9 @@ height above the taping line (flange at negative y, flange back at -0.070 m for 
   m.def(
       "rail",
       [](const std::string& section, double inclination_rad) {
-        for (RailSection s : {RailSection::R60E1, RailSection::R54E1, RailSection::R50E6, RailSection::R50E4})
-          if (section == to_string(s)) return MakeRail(s, inclination_rad);
-        throw InputError("unknown rail section '" + section + "' (expected 60E1, 54E1, 50E6 or 50E4)");
+        RailSection s;
+        if (FindBuiltInRail(section, &s)) return MakeRail(s, inclination_rad);
+        throw InputError("unknown rail section '" + section + "' (expected " + BuiltInRailNames() + ")");
       },
       py::arg("section") = "60E1", py::arg("inclination_rad") = 0.0,
       "EN 13674 rail head ('60E1', '54E1', '50E6', '50E4') canted by inclination_rad, origin at its highest point.");

@@ -7,7 +7,8 @@
 
 namespace conforma {
 
-// A bracket [low, high] of a root with f(low) and f(high) of opposite signs (either order of signs), narrowed by
+// A bracket of a root between the ends `low` and `high` (names only: low may lie above high) with f(low) and
+// f(high) of opposite signs (either order of signs), narrowed by
 // false position; the end kept twice in a row has its function value halved (Illinois), which restores
 // superlinear convergence where plain false position keeps one end fixed.
 class IllinoisBracket {

@@ -5,18 +5,11 @@
 #include <filesystem>
 
 #include "conforma/error.hpp"
+#include "conforma/profile_by_name.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 
 namespace conforma::cli {
-
-namespace {
-bool IsBuiltInRail(const std::string& name, RailSection* section) {
-  for (RailSection s : {RailSection::R60E1, RailSection::R54E1, RailSection::R50E6, RailSection::R50E4})
-    if (name == to_string(s)) { *section = s; return true; }
-  return false;
-}
-}  // namespace
 
 double ParseInclination(const std::string& text) {
   if (text == "0" || text == "none") return 0.0;
@@ -37,7 +30,7 @@ double ParseInclination(const std::string& text) {
 
 void TrackArgs::add_to(CLI::App* app) {
   app->add_option("--wheel", wheel, "wheel profile: S1002 or a file (.prw .whl .csv .txt)");
-  app->add_option("--rail", rail, "rail profile: 60E1, 54E1, 50E6, 50E4 or a file (.prr .ban .csv .txt)");
+  app->add_option("--rail", rail, std::string("rail profile: ") + BuiltInRailNames() + " or a file (.prr .ban .csv .txt)");
   app->add_option("--inclination", inclination, "rail inclination applied by the track (1:40, 1:20, 0); "
                                                 "default 1:40 for built-in rails, 0 for files (already canted)");
   app->add_option("--gauge-mm", gauge_mm, "track gauge");
@@ -48,28 +41,11 @@ void TrackArgs::add_to(CLI::App* app) {
 }
 
 std::unique_ptr<WheelsetTrackGeometry> TrackArgs::make_geometry() const {
-  Profile wheel_profile;
-  if (wheel == "S1002") {
-    wheel_profile = MakeS1002();
-  } else {
-    ProfileReadOptions o;
-    o.kind = ProfileKind::Wheel;
-    wheel_profile = LoadProfile(wheel, o);
-  }
-  Profile rail_profile;
-  RailSection section;
-  double incl = 0.0;
-  if (IsBuiltInRail(rail, &section)) {
-    rail_profile = MakeRail(section, 0.0);
-    incl = inclination.empty() ? rail_inclination_1in40() : ParseInclination(inclination);
-  } else {
-    if (!std::filesystem::exists(rail))
-      throw InputError("option --rail: '" + rail + "' is neither a built-in rail (60E1, 54E1, 50E6, 50E4) nor a file");
-    ProfileReadOptions o;
-    o.kind = ProfileKind::Rail;
-    rail_profile = LoadProfile(rail, o);
-    incl = inclination.empty() ? 0.0 : ParseInclination(inclination);
-  }
+  const Profile wheel_profile = WheelProfileByNameOrFile(wheel, "option --wheel");
+  bool built_in = false;
+  const Profile rail_profile = RailProfileByNameOrFile(rail, &built_in, "option --rail");
+  // built-in rails are uninclined: the track cants them (1:40 by default); files are taken as measured (canted)
+  const double incl = inclination.empty() ? (built_in ? rail_inclination_1in40() : 0.0) : ParseInclination(inclination);
   TrackSetup setup = MakeSymmetricTrack(wheel_profile, rail_profile, incl);
   setup.gauge_m = gauge_mm * 1e-3;
   setup.gauge_height_m = gauge_height_mm * 1e-3;

@@ -5,6 +5,7 @@
 
 #include "conforma/error.hpp"
 #include "conforma/geometry.hpp"
+#include "conforma/root_finding.hpp"
 
 namespace conforma {
 
@@ -90,24 +91,22 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
   }
   double phi = b, fphi = fb, zphi = zb;
   if (ok && fa * fb <= 0) {
-    int side = 0;
+    IllinoisBracket bracket(a, fa, b, fb);  // the one root finder's step (root_finding.hpp); z rides along
     for (; it < options.max_iterations; ++it) {
-      if (std::abs(fa) < std::abs(fb)) { phi = a; fphi = fa; zphi = za; } else { phi = b; fphi = fb; zphi = zb; }
+      if (std::abs(bracket.f_low()) < std::abs(bracket.f_high())) {
+        phi = bracket.low(); fphi = bracket.f_low(); zphi = za;
+      } else {
+        phi = bracket.high(); fphi = bracket.f_high(); zphi = zb;
+      }
       if (std::abs(fphi) < options.tolerance_m) break;
-      const double c = (fa * b - fb * a) / (fa - fb);  // regula falsi with the Illinois modification
+      const double c = bracket.FalsePosition();  // regula falsi with the Illinois modification
       double zc;
       const double fc = F(c, &zc, &ok);
       if (!ok) break;
-      if (fc * fb > 0) {
-        b = c; fb = fc; zb = zc;
-        if (side == -1) fa *= 0.5;
-        side = -1;
-      } else {
-        a = c; fa = fc; za = zc;
-        if (side == +1) fb *= 0.5;
-        side = +1;
-      }
-      if (std::abs(b - a) < 1e-15) break;
+      const bool on_low_side = !(fc * bracket.f_high() > 0);
+      bracket.Replace(c, fc, on_low_side);
+      (on_low_side ? za : zb) = zc;
+      if (std::abs(bracket.high() - bracket.low()) < 1e-15) break;
     }
   }
   if (ok) {

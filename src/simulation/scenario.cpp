@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "conforma/error.hpp"
+#include "conforma/profile_by_name.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/wear_law.hpp"
@@ -93,21 +94,11 @@ double ParseInclination(const Reader& r, const YAML::Node& n) {
 }
 
 Profile BuiltInOrFileRail(const Reader& r, const std::string& name) {
-  static const std::map<std::string, RailSection> kRails = {{"60E1", RailSection::R60E1}, {"UIC60", RailSection::R60E1},
-                                                            {"54E1", RailSection::R54E1}, {"50E6", RailSection::R50E6},
-                                                            {"50E4", RailSection::R50E4}, {"UIC50", RailSection::R50E4}};
-  const auto it = kRails.find(name);
-  if (it != kRails.end()) return MakeRail(it->second, 0.0);
-  ProfileReadOptions o;
-  o.kind = ProfileKind::Rail;
-  return LoadProfile(r.path(name), o);
+  return RailProfileByNameOrFile(name, nullptr, "rail profile", [&r](const std::string& f) { return r.path(f); });
 }
 
 Profile BuiltInOrFileWheel(const Reader& r, const std::string& name) {
-  if (name == "S1002") return MakeS1002();
-  ProfileReadOptions o;
-  o.kind = ProfileKind::Wheel;
-  return LoadProfile(r.path(name), o);
+  return WheelProfileByNameOrFile(name, "wheel profile", [&r](const std::string& f) { return r.path(f); });
 }
 
 // Contact model by name (ParseContactModel), the error naming the key.
