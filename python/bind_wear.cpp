@@ -62,7 +62,7 @@ py::dict RunWear(const py::object& scenario, const std::string& model, int steps
                  const std::string& base_dir) {
   const Scenario sc = ScenarioFrom(scenario, base_dir);
   WearSimulationOptions o;
-  o.model = model.empty() ? sc.model : ParseContactModel(model);
+  o.contact.model = model.empty() ? sc.model : ParseContactModel(model);
   o.steps = steps;
   o.total_km = total_km;
   WearSimulationResult r;
@@ -94,7 +94,7 @@ py::dict RunWear(const py::object& scenario, const std::string& model, int steps
   table["samples"] = Column(samples), table["failed_contacts"] = Column(failed);
   py::dict out;
   out["scenario"] = sc.name;
-  out["model"] = to_string(o.model);
+  out["model"] = to_string(o.contact.model);
   out["status"] = to_string(r.status);
   out["message"] = r.message;
   out["steps"] = table;

@@ -374,7 +374,7 @@ TEST(WheelContactCacheTest, WearStepWithTheCachedPipelineEqualsTheUncachedOne) {
   // hides it (no cache): the same wear, bit for bit (hertz model and 1 step keep it fast).
   const Scenario sc = LoadScenario(std::string(CONFORMA_SOURCE_DIR) + "/scenarios/default_metro.yaml");
   WearSimulationOptions o;
-  o.model = ContactModel::Hertz;
+  o.contact.model = ContactModel::Hertz;
   o.steps = 1;
   const WearSimulationResult cached = RunWearSimulation(sc, o, &SolveWheelContact);
   const WearContactFunction uncached = [](const WheelsetTrackGeometry& g, Side s, const WheelsetPose& p,

@@ -287,7 +287,7 @@ std::string MeasuredFromSteps(const WearSimulationResult& r) {
 // Two Hertz wear steps of a scenario (no distance limit): the runs the end-to-end tests compare with themselves.
 WearSimulationResult TwoHertzSteps(const Scenario& sc) {
   WearSimulationOptions o;
-  o.model = ContactModel::Hertz;
+  o.contact.model = ContactModel::Hertz;
   o.steps = 2;
   o.total_km = 0.0;
   return RunWearSimulation(sc, o);

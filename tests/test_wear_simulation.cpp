@@ -52,7 +52,7 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
   const Scenario sc = FastMetroSmoothed();
   for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Conformal}) {
     WearSimulationOptions o;
-    o.model = m;
+    o.contact.model = m;
     o.steps = 15;
     o.total_km = 0.0;
     const WearSimulationResult r = RunWearSimulation(sc, o);
@@ -100,7 +100,7 @@ TEST(WearSimulation, ValidProfilesAndCapForEveryModel) {
 TEST(WearSimulation, TotalKmShortensTheLastStep) {
   const Scenario sc = FastMetroSmoothed();
   WearSimulationOptions o;
-  o.model = ContactModel::Hertz;
+  o.contact.model = ContactModel::Hertz;
   o.steps = 10;
   o.total_km = 1500.0;
   const WearSimulationResult r = RunWearSimulation(sc, o);
@@ -116,7 +116,7 @@ TEST(WearSimulation, InvalidProfileHalvesTheCapInsteadOfStopping) {
   Scenario sc = FastMetro();
   sc.update.smoothing_cutoff_m = 2e-3;  // little smoothing: the kink limit is reached within a few steps
   WearSimulationOptions o;
-  o.model = ContactModel::Hertz;
+  o.contact.model = ContactModel::Hertz;
   o.steps = 12;
   o.total_km = 0.0;
   o.invalid_step_halvings = 0;
@@ -180,7 +180,7 @@ TEST(WearSimulation, ExportedAndReimportedKinematicsGiveTheSameWear) {
     return ImportKinematicsCsv(path);
   };
   WearSimulationOptions o;
-  o.model = ContactModel::Hertz;
+  o.contact.model = ContactModel::Hertz;
   o.steps = 2;
   o.total_km = 0.0;
   const WearSimulationResult a = RunWearSimulation(sc, o, contact, direct);

@@ -25,6 +25,9 @@
 
 namespace conforma {
 
+// Default BEM elements along x (the one declaration; BemOptions::x_elements).
+constexpr int kDefaultBemXElements = 64;
+
 // Potential contact area: element (i, j) is centred at (x_first + i dx, s_first + j ds).
 struct BemGrid {
   int nx = 0;  // elements along x (rolling)
@@ -76,7 +79,7 @@ struct BemOptions {
   int max_iterations = 2000;
   bool use_fft = true;          // false: direct O(n^2) summation (same numbers, for checking)
   // PatchGeometry input only: number of elements along x and the margin on the interpenetration length.
-  int x_elements = 64;
+  int x_elements = kDefaultBemXElements;
   double x_margin = 1.1;
 };
 

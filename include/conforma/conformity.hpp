@@ -8,6 +8,12 @@
 
 namespace conforma {
 
+// Conformity-index threshold above which a patch counts as conformal: paper 003 §4.3's 18 deg (the KP models'
+// is_conformal flag), and the 17.7 deg measured by `conforma threshold` on the new S1002 / 60E1 1:20 pair at a 5 %
+// difference (docs/physics-reference.md §9.1; the `auto` model's default).
+constexpr double kConformityThresholdDeg = 18.0;
+constexpr double kMeasuredConformityThresholdDeg = 17.7;
+
 struct ConformityIndex {
   double alpha_c_deg = 0.0;
   bool is_conformal = false;
@@ -16,6 +22,6 @@ struct ConformityIndex {
 // From the normal angles (rad, relative to any fixed direction in the profile plane) sampled over the contact:
 // its edges and its strips. Empty input gives alpha_c = 0. Throws InputError for a non-finite angle or threshold.
 ConformityIndex ComputeConformityIndex(const std::vector<double>& normal_angles_in_contact_rad,
-                                       double threshold_deg = 18.0);
+                                       double threshold_deg = kConformityThresholdDeg);
 
 }  // namespace conforma

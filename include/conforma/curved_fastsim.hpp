@@ -43,7 +43,7 @@
 namespace conforma {
 
 struct CurvedFastsimOptions {
-  int elements_per_strip = 30;                               // n_x
+  int elements_per_strip = kDefaultFastsimElements;         // n_x
   FastsimMarching marching = FastsimMarching::CentreExact;   // see fastsim.hpp
   double slope_reduction = 1.0;                              // k of paper 002 eq. 9 (L -> L / k)
   bool blend_flexibilities = false;  // CONTACT blending (fastsim.hpp) with the SDEC a, b and the creepages of the

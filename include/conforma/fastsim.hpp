@@ -22,6 +22,10 @@
 
 namespace conforma {
 
+// Default FASTSIM discretisation (elements per strip; strips of the Hertz ellipse): the one declaration every
+// options struct takes its default from.
+constexpr int kDefaultFastsimElements = 30;
+
 // Flexibilities [m/Pa] of the simplified theory.
 struct FastsimFlexibilities {
   double L1 = 0.0;  // longitudinal creepage
@@ -127,8 +131,8 @@ struct FastsimHertzInput {
   FastsimCreepages creepages;
   double friction_coefficient = 0.3;
   Material material;
-  int nx = 30;  // elements per strip
-  int ny = 30;  // strips
+  int nx = kDefaultFastsimElements;  // elements per strip
+  int ny = kDefaultFastsimElements;  // strips
   double rolling_speed_m_per_s = 0.0;  // > 0 to get the frictional power
 };
 

@@ -15,6 +15,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "conforma/conformity.hpp"
 #include "conforma/influence.hpp"
 #include "conforma/material.hpp"
 #include "conforma/patch.hpp"
@@ -43,6 +44,9 @@ enum class KpStatus {
 };
 const char* to_string(KpStatus status);
 
+// Default strips across the contact of the KP solvers (the one declaration; see KpOptions::strips_across_contact).
+constexpr int kDefaultKpStrips = 31;
+
 struct KpOptions {
   KpPenetrationRule penetration = KpPenetrationRule::ConstantEpsilon;
   KpInfluence influence = KpInfluence::HalfSpace;
@@ -53,8 +57,8 @@ struct KpOptions {
   ConformalCoupling coupling = ConformalCoupling::CombinedBodies;
   // Resolution along s^r (x is integrated exactly). 31 strips: KPEC within 0.2 % of Hertz, groove p_max converged
   // to 0.1 %, about 13-20 us per approach-given patch (tests/bench/bench_kp.cpp).
-  int strips_across_contact = 31;
-  double conformity_threshold_deg = 18.0;  // paper 003 §4.3
+  int strips_across_contact = kDefaultKpStrips;
+  double conformity_threshold_deg = kConformityThresholdDeg;  // paper 003 §4.3 (conformity.hpp)
   Material material;
 };
 

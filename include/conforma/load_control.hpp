@@ -9,6 +9,9 @@
 
 namespace conforma {
 
+// Default relative load tolerance of a load-given contact solve (the one declaration; WheelContactOptions).
+constexpr double kDefaultLoadTolerance = 1e-6;
+
 enum class LoadControlStatus {
   Ok,
   NoBracket,     // no push in the expansion range carries the load (e.g. no contact at all, or a model failure)

@@ -41,6 +41,7 @@
 // choice can beat the hertz model itself (1.4-2x, the wheel-rail geometry being the rest of the cost). Its Sd/Sh/qR
 // after 7 steps were within 0.02 mm of conformal on one build and 0.09/0.03/0.17 mm on the next: below the loop's
 // noise floor (conformal against itself with load_tolerance 1e-7 instead of 1e-6: Sh differs by 0.21 mm).
+#include "conforma/conformity.hpp"
 #include "conforma/contact_model.hpp"
 #include "conforma/geometry.hpp"
 #include "conforma/patch.hpp"
@@ -48,7 +49,7 @@
 namespace conforma {
 
 struct ModelSelectionOptions {
-  double conformity_threshold_deg = 17.7;
+  double conformity_threshold_deg = kMeasuredConformityThresholdDeg;  // conformity.hpp
   double virtual_penetration_factor = 0.55;  // eps of the estimated contact
   double gap_fit_tolerance = 0.05;           // largest parabola residual / (eps * delta)
   double curvature_tolerance = 0.10;         // relative, lateral (fit vs Hertz B) and longitudinal (A(s) vs A)

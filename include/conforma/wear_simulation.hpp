@@ -114,12 +114,13 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
 
 // ---------------------------------------------------------------- the whole run
 struct WearSimulationOptions {
-  ContactModel model = ContactModel::Conformal;
+  WearSimulationOptions() { contact.model = ContactModel::Conformal; }
+  // The contact solve of every sample: model (default conformal) and discretisation (fastsim_elements, kp_strips,
+  // candidate_strip_width_m, ...). Set per call by the loop from the scenario: material, friction, vertical load,
+  // elastic flange (max_touching_contact_angle_rad), keep_fields.
+  WheelContactOptions contact;
   int steps = -1;                    // wheel steps per rail step; < 0: the scenario's
   double total_km = -1.0;            // < 0: the scenario's (0 = unlimited)
-  int fastsim_elements = 30;
-  int kp_strips = 31;
-  double candidate_strip_width_m = 0.1e-3;
   double grid_spacing_m = 0.1e-3;
   // The accumulated wheel depth is tapered to zero (raised cosine) over this length at both ends of the wheel
   // profile before the update: at the very end of the profile (field-side edge, flange back) the removal along

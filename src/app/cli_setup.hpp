@@ -27,7 +27,7 @@ struct ContactArgs {
   double speed_m_s = 2.0;
   double friction = 0.3;
   double shear_modulus_GPa = 82.0, poisson = 0.28;
-  int grid = 30;
+  int grid = kDefaultFastsimElements;
   std::string penetration = "variable";  // conformal model: variable (KPEC rule) or constant (eps = 0.55)
   void add_to(CLI::App* app);
   WheelContactOptions options() const;

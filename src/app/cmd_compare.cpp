@@ -107,7 +107,7 @@ void RegisterCompareCommand(CLI::App& app) {
       ModelRun run;
       run.name = m;
       WearSimulationOptions o;
-      o.model = ParseContactModel(m);
+      o.contact.model = ParseContactModel(m);
       o.steps = a->steps;
       o.total_km = 0.0;  // compare on the number of steps (each removes the cap)
       run.result = RunWearWithOutput(sc, o, a->out + "/" + m, m, a->steps, &run.wall_s);

@@ -50,7 +50,7 @@ void RegisterThresholdCommand(CLI::App& app) {
   auto against = std::make_shared<std::string>("flat_kp");
   auto tolerance = std::make_shared<double>(0.05);
   auto load = std::make_shared<double>(10e3);
-  auto strips = std::make_shared<int>(31);
+  auto strips = std::make_shared<int>(kDefaultKpStrips);
   auto elements = std::make_shared<int>(30);
   auto variable_eps = std::make_shared<bool>(false);
   auto plot = std::make_shared<bool>(true);
@@ -93,7 +93,7 @@ void RegisterThresholdCommand(CLI::App& app) {
     const nlohmann::json combined = FitJson(all, *tolerance);
     json["all"] = combined;
     json["threshold_deg"] = combined["threshold_deg"];
-    json["paper_003_threshold_deg"] = 18.0;
+    json["paper_003_threshold_deg"] = kConformityThresholdDeg;
 
     std::filesystem::create_directories(*out_dir);
     const std::string csv = *out_dir + "/threshold.csv";

@@ -364,7 +364,7 @@ void RegisterValidateCommand(CLI::App& app) {
       ModelValidation run;
       run.name = m;
       WearSimulationOptions o;
-      o.model = ParseContactModel(m);
+      o.contact.model = ParseContactModel(m);
       o.steps = steps;
       o.total_km = target_km;
       const std::string dir = a->out + "/" + m;

@@ -26,11 +26,11 @@ void RegisterWearCommand(CLI::App& app) {
   sub->callback([a]() {
     const Scenario sc = LoadScenario(a->scenario);
     WearSimulationOptions o;
-    o.model = a->model.empty() ? sc.model : ParseContactModel(a->model);
+    o.contact.model = a->model.empty() ? sc.model : ParseContactModel(a->model);
     o.steps = a->steps;
     o.total_km = a->km;
     const int total = a->steps >= 0 ? a->steps : sc.update.steps;
-    const std::string label = to_string(o.model);
+    const std::string label = to_string(o.contact.model);
     double wall = 0.0;
     const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall);
     const double km = r.steps.empty() ? 0.0 : r.steps.back().km;

@@ -76,15 +76,12 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   auto fallbacks = std::make_shared<std::atomic<int>>(0);
   const KinematicsFunction kinematics =
       kinematics_in ? kinematics_in
-                    : MakeScenarioKinematics(scenario, CurvingContactModel(scenario, options.model), contact, fallbacks);
+                    : MakeScenarioKinematics(scenario, CurvingContactModel(scenario, options.contact.model), contact, fallbacks);
 
   StepWearOptions step_options;
-  step_options.contact.model = options.model;
+  step_options.contact = options.contact;
   step_options.contact.material = scenario.material;
   step_options.contact.max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
-  step_options.contact.fastsim_elements = options.fastsim_elements;
-  step_options.contact.kp_strips = options.kp_strips;
-  step_options.contact.candidate_strip_width_m = options.candidate_strip_width_m;
   step_options.wear = scenario.wear;
   step_options.grid_spacing_m = options.grid_spacing_m;
 

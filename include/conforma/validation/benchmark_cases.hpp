@@ -48,9 +48,9 @@ std::vector<BenchCase> BenchCasesFromPose(const WheelsetTrackGeometry& geometry,
 // One model on one case at one grid.
 struct PatchSolveOptions {
   ContactModel model = ContactModel::Conformal;  // Hertz, Kp, Kpec or Conformal (Reference: InputError)
-  int kp_strips = 31;          // strips across the contact (KP models)
-  int fastsim_elements = 30;   // FASTSIM elements per strip (and strips of the Hertz ellipse)
-  double load_tolerance = 1e-6;  // relative, on fn_bar
+  int kp_strips = kDefaultKpStrips;          // strips across the contact (KP models)
+  int fastsim_elements = kDefaultFastsimElements;   // FASTSIM elements per strip (and strips of the Hertz ellipse)
+  double load_tolerance = kDefaultLoadTolerance;  // relative, on fn_bar
   // > 0: approach given (one normal solve, as a multibody code in penetration mode calls it) instead of the load
   double approach_m = 0.0;
   // Conformal model only: KPEC's variable virtual penetration (the pipeline's default, ConformalKpecOptions); false:
@@ -85,11 +85,11 @@ struct BemReferenceSolution {
   bool contact_at_grid_edge = false;
 };
 // Reference BEM (Blanco-Lorenzo coefficients, load control on fn_bar) on the case's patch.
-BemReferenceSolution SolveBenchReference(const BenchCase& bench_case, int bem_x_elements = 64);
+BemReferenceSolution SolveBenchReference(const BenchCase& bench_case, int bem_x_elements = kDefaultBemXElements);
 
 struct BenchGrid {
-  int kp_strips = 31;
-  int fastsim_elements = 30;
+  int kp_strips = kDefaultKpStrips;
+  int fastsim_elements = kDefaultFastsimElements;
   std::string label() const;  // "s31e30"
 };
 // 11/10, 21/20, 31/30 (the models' default), 61/50.
@@ -111,7 +111,7 @@ struct BenchOptions {
   std::vector<BenchGrid> grids = DefaultBenchGrids();
   bool conformal_eps055 = true;  // also run the conformal model with eps = 0.55 ("conformal_eps055")
   BenchGrid tangential_reference{121, 100};  // conformal model on this grid
-  int bem_x_elements = 64;
+  int bem_x_elements = kDefaultBemXElements;
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)
   int max_repeats = 201;
 };

@@ -47,8 +47,8 @@ PatchGeometry FlattenPatch(const PatchGeometry& curved);
 struct ThresholdOptions {
   double tolerance = 0.05;
   PlanarComparison against = PlanarComparison::FlattenedKp;
-  int kp_strips = 31;
-  int fastsim_elements = 30;
+  int kp_strips = kDefaultKpStrips;
+  int fastsim_elements = kDefaultFastsimElements;
   // Virtual-penetration rule of BOTH models compared. false (default): Kik-Piotrowski's eps = 0.55, the formulation
   // of paper 003 whose 18 deg threshold is examined (conformal KP vs planar KP). true: KPEC's variable eps on both
   // sides (the pipeline's default conformal model vs KPEC); there the Blanco correction changes p_max far less.

@@ -39,7 +39,7 @@ struct ManchesterComparison {
 struct ManchesterOptions {
   ContactModel model = ContactModel::Conformal;
   bool creepages_from_file = true;  // use each case's xi, eta, phi (as the issue asks); else the kinematics
-  int fastsim_elements = 30;
+  int fastsim_elements = kDefaultFastsimElements;
 };
 
 // Runs every case (profiles from the shared data folder `shared_data_dir`); cases are independent and run in
