@@ -11,6 +11,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
 #include "conforma/profile_by_name.hpp"
 #include "conforma/profile_io.hpp"
@@ -256,7 +257,7 @@ py::list Manchester(const std::string& model, bool creepages_from_file, const st
 PYBIND11_MODULE(_core, m) {
   m.doc() = "Conforma: conformal wheel-rail contact (C++ core). SI units everywhere (m, rad, N, Pa).";
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
-  m.attr("default_shared_data") = CONFORMA_SHARED_DATA;
+  m.attr("default_shared_data") = SharedDataDir();  // $CONFORMA_DATA_DIR or the built-in default, at import
 
   py::class_<Profile>(m, "Profile", R"doc(A wheel or rail cross-section profile (metres).
 
@@ -396,7 +397,7 @@ pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear
         "One wheel at a given wheelset pose and velocities (the multibody entry point); load_N < 0 (default): "
         "pose as given, otherwise load control starting from vertical_m. Returns a wheel dict as contact().");
   m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,
-        py::arg("data_dir") = std::string(CONFORMA_SHARED_DATA), py::arg("fastsim_elements") = 30,
+        py::arg("data_dir") = SharedDataDir(), py::arg("fastsim_elements") = 30,
         "Manchester benchmark A-2.2 (left wheel, 21 cases) against CONTACT's results: one dict per case with the "
         "reference values and the relative/absolute errors (as `conforma mbench`).");
   conforma::python::BindWear(m);

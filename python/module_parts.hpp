@@ -17,8 +17,7 @@ pybind11::array_t<double> Column(const std::vector<double>& values);
 pybind11::array_t<double> PointsArray(const std::vector<Eigen::Vector2d>& points);
 pybind11::dict DimensionsDict(const WheelDimensions& dimensions);
 ProfileKind KindFrom(const std::string& name);
-// wear(scenario, model) and scenario(...) when the wear loop is built (python/bind_wear.cpp), else a stub
-// raising NotImplementedError (python/bind_wear_missing.cpp).
+// wear(scenario, model) and scenario(...) (python/bind_wear.cpp).
 void BindWear(pybind11::module_& m);
 
 }  // namespace conforma::python

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Pareto plot of `conforma bench`: median time per patch against error, per model and grid.
 
 usage: plot_bench.py bench.csv out.png

@@ -1,8 +1,8 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Plots of `conforma compare`: DIR/<model>/{steps.csv, wheel_step_NNN.csv, wear_step_NNN.csv} -> DIR/*.png.
 
 usage: plot_compare.py DIR hertz,kp,conformal
-Run with the Debian interpreter (/usr/bin/python3, python3-matplotlib).
+Run with a python3 that has matplotlib (python3-matplotlib); conforma uses $CONFORMA_PYTHON or python3 on PATH.
 """
 import csv
 import glob

@@ -1,4 +1,4 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Scatter of `conforma threshold`: conformal-vs-planar difference against the conformity index alpha_c.
 
 usage: plot_threshold.py threshold.csv threshold.json out.png

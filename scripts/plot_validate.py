@@ -1,9 +1,9 @@
-#!/usr/bin/python3
+#!/usr/bin/env python3
 """Plots of `conforma validate`: DIR/validate.csv, DIR/<model>/steps.csv (and, with measured profiles,
 DIR/validate_profiles.csv, DIR/measured_profile_N.csv, DIR/<model>/simulated_profile_N.csv) -> DIR/validate_*.png.
 
 usage: plot_validate.py DIR hertz,conformal
-Run with the Debian interpreter (/usr/bin/python3, python3-matplotlib).
+Run with a python3 that has matplotlib (python3-matplotlib); conforma uses $CONFORMA_PYTHON or python3 on PATH.
 """
 import csv
 import os

@@ -28,7 +28,8 @@
 //                      normalised to sum 1), friction } ... ]
 //   track_classes_csv: <file> with columns radius_m,cant_mm,speed_kmh,share_percent ('#' comments); the
 //                      remainder to 100 % becomes a tangent class at tangent_speed_kmh (key of the same map).
-// Relative file paths are resolved against the scenario file's folder. Lengths in the file in mm where named.
+// Relative file paths are resolved against the scenario file's folder; a path starting with $CONFORMA_DATA_DIR/ is
+// in the shared data folder (data_paths.hpp SharedDataDir). Lengths in the file in mm where named.
 #include <string>
 #include <vector>
 

@@ -46,7 +46,7 @@ struct VehicleParameters {
   double static_wheel_load_N(double gravity_m_s2 = 9.81) const { return 0.5 * gravity_m_s2 * carried_mass_per_wheelset_kg(); }
 };
 
-// ALn 501 "Minuetto" DMU of the Aosta line (paper 001; /work/shared/data/measured/aosta_minuetto/
+// ALn 501 "Minuetto" DMU of the Aosta line (paper 001; shared/data/measured/aosta_minuetto/
 // vehicle_aln501_minuetto.md): 3 coaches on 4 bogies (2 motor + 2 Jacobs), carbody masses 2 x 31568 + 14496 kg
 // shared equally by the 4 bogies, motor bogie frame 3306 kg. Primary: Flexicoil (kx = ky = 1.26e6 N/m) in
 // PARALLEL with the axlebox-arm silent block (Sutuco, kx = 2.0e7, ky = 1.5e7 N/m) per axlebox. Secondary: two

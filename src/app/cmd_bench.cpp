@@ -28,14 +28,14 @@ double Median(std::vector<double> v) {
 
 void RegisterBenchCommand(CLI::App& app) {
   auto out_dir = std::make_shared<std::string>("bench_out");
-  auto data = std::make_shared<std::string>(CONFORMA_SHARED_DATA);
+  auto data = std::make_shared<std::string>();
   auto models = std::make_shared<std::string>("hertz,kp,kpec,conformal,auto");
   auto families = std::make_shared<std::string>("mbench,groove,worn,flange_root");
   auto plot = std::make_shared<bool>(true);
   auto default_grid = std::make_shared<std::string>("s31e30");
   CLI::App* sub = app.add_subcommand("bench", "run time against error per model and grid (bench.csv, Pareto plot)");
   sub->add_option("--out", *out_dir, "output folder");
-  sub->add_option("--data", *data, "shared data folder");
+  sub->add_option("--data", *data, kDataHelp);
   sub->add_option("--models", *models, "comma-separated models");
   sub->add_option("--families", *families, "comma-separated case families");
   sub->add_option("--default-grid", *default_grid, "grid label of the models' default resolution (summary)");
@@ -46,7 +46,7 @@ void RegisterBenchCommand(CLI::App& app) {
     std::stringstream ms(*models);
     for (std::string name; std::getline(ms, name, ',');) options.models.push_back(ParseContactModel(name));
     std::vector<BenchCase> cases;
-    for (const BenchCase& c : MakeBenchCases(*data))
+    for (const BenchCase& c : MakeBenchCases(DataDirOr(*data)))
       if (("," + *families + ",").find("," + c.family + ",") != std::string::npos) cases.push_back(c);
     std::printf("bench: %zu patches, %zu models x %zu grids\n", cases.size(), options.models.size(), options.grids.size());
     const std::vector<BenchRow> rows = RunBench(cases, options);
@@ -114,8 +114,8 @@ void RegisterBenchCommand(CLI::App& app) {
     std::printf("wrote %s and %s/bench_summary.json\n", csv.c_str(), out_dir->c_str());
     std::fflush(stdout);  // before the plot script's own output
     if (*plot) {
-      const std::string cmd = "/usr/bin/python3 " + std::string(CONFORMA_SOURCE_DIR) + "/scripts/plot_bench.py '" + csv +
-                              "' '" + *out_dir + "/bench_pareto.png'";
+      const std::string cmd = PythonOr("") + " '" + PlotScript("plot_bench.py") + "' '" + csv + "' '" + *out_dir +
+                              "/bench_pareto.png'";
       if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "bench: plotting failed (%s)\n", cmd.c_str());
     }
   });

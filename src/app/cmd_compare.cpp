@@ -91,14 +91,14 @@ void RegisterCompareCommand(CLI::App& app) {
   struct Args {
     std::string scenario, out = "compare_out", models = "hertz,conformal";
     int steps = 7;
-    std::string python = "/usr/bin/python3";
+    std::string python;  // empty: PythonOr's default
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--models", a->models, "comma-separated contact models (hertz, kp, kpec, conformal, reference, auto)");
   sub->add_option("--steps", a->steps, "wheel steps per model");
-  sub->add_option("--python", a->python, "python interpreter with matplotlib for the plots");
+  sub->add_option("--python", a->python, kPythonHelp);
   sub->callback([a]() {
     const Scenario sc = LoadScenario(a->scenario);
     std::vector<ModelRun> runs;
@@ -118,8 +118,8 @@ void RegisterCompareCommand(CLI::App& app) {
       runs.push_back(std::move(run));
     }
     if (runs.empty()) throw InputError("compare: no models given");
-    const std::string script = std::string(CONFORMA_SOURCE_DIR) + "/scripts/plot_compare.py";
-    const std::string cmd = a->python + " '" + script + "' '" + a->out + "' " + a->models;
+    const std::string script = PlotScript("plot_compare.py");
+    const std::string cmd = PythonOr(a->python) + " '" + script + "' '" + a->out + "' " + a->models;
     const bool plots_ok = std::system(cmd.c_str()) == 0;
     WriteReport(a->out, sc, runs, a->steps, plots_ok);
     std::printf("report: %s/report.md\n", a->out.c_str());

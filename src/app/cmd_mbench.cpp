@@ -11,11 +11,11 @@ namespace conforma::cli {
 
 void RegisterMbenchCommand(CLI::App& app) {
   auto models = std::make_shared<std::string>("hertz,kp,kpec,conformal");
-  auto data = std::make_shared<std::string>(CONFORMA_SHARED_DATA);
+  auto data = std::make_shared<std::string>();
   auto kinematics = std::make_shared<bool>(false);
   CLI::App* sub = app.add_subcommand("mbench", "Manchester benchmark A-2.2 (left wheel) against CONTACT");
   sub->add_option("--models", *models, "comma-separated models");
-  sub->add_option("--data", *data, "shared data folder");
+  sub->add_option("--data", *data, kDataHelp);
   sub->add_flag("--kinematic-creepages", *kinematics, "creepages from the kinematics instead of the file's");
   sub->callback([models, data, kinematics]() {
     std::stringstream ss(*models);
@@ -23,7 +23,7 @@ void RegisterMbenchCommand(CLI::App& app) {
       ManchesterOptions o;
       o.model = ParseContactModel(name);
       o.creepages_from_file = !*kinematics;
-      const auto rows = RunManchesterA22(*data, o);
+      const auto rows = RunManchesterA22(DataDirOr(*data), o);
       std::printf("\nmodel %s (errors vs CONTACT: relative for Fn, pmax, area; absolute N for Fx, Fs)\n", name.c_str());
       std::printf("case  y_ws  n  y_cp[mm] (ref)    Fn[N]   dFn    pmax (ref)    dpmax   area (ref)   darea"
                   "    Fx (ref)      dFx     Fs (ref)      dFs\n");

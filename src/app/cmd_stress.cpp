@@ -42,7 +42,7 @@ void Print(const char* label, const StressSummary& s) {
 
 void RegisterStressCommand(CLI::App& app) {
   auto options = std::make_shared<StressOptions>();
-  auto data = std::make_shared<std::string>(CONFORMA_SHARED_DATA);
+  auto data = std::make_shared<std::string>();
   auto determinism_cases = std::make_shared<long>(2000);
   auto json_path = std::make_shared<std::string>();
   CLI::App* sub = app.add_subcommand("stress", "numerical stability stress suite over random contact situations");
@@ -54,10 +54,10 @@ void RegisterStressCommand(CLI::App& app) {
   sub->add_option("--threads", options->threads, "OpenMP threads (0 = default)");
   sub->add_option("--continuity-every", options->continuity_every, "every k-th wheel case gets a +1 um twin (0: none)");
   sub->add_option("--determinism-cases", *determinism_cases, "cases rerun with 1 and with all threads (0: skip)");
-  sub->add_option("--data", *data, "shared data folder");
+  sub->add_option("--data", *data, kDataHelp);
   sub->add_option("--json", *json_path, "write the summary as JSON to this file");
   sub->callback([=]() {
-    const StressSetup setup = StressSetup::Make(*data);
+    const StressSetup setup = StressSetup::Make(DataDirOr(*data));
     const StressSummary s = RunStress(setup, *options);
     Print("stress", s);
     nlohmann::json j = {{"run", SummaryJson(s)}, {"threads", options->threads > 0 ? options->threads : omp_get_max_threads()}};

@@ -45,7 +45,7 @@ nlohmann::json FitJson(const std::vector<ThresholdPoint>& points, double toleran
 
 void RegisterThresholdCommand(CLI::App& app) {
   auto out_dir = std::make_shared<std::string>("threshold_out");
-  auto data = std::make_shared<std::string>(CONFORMA_SHARED_DATA);
+  auto data = std::make_shared<std::string>();
   auto sets = std::make_shared<std::string>("new,worn,groove");
   auto against = std::make_shared<std::string>("flat_kp");
   auto tolerance = std::make_shared<double>(0.05);
@@ -56,7 +56,7 @@ void RegisterThresholdCommand(CLI::App& app) {
   auto plot = std::make_shared<bool>(true);
   CLI::App* sub = app.add_subcommand("threshold", "conformity-index threshold: conformal vs planar over sweeps");
   sub->add_option("--out", *out_dir, "output folder");
-  sub->add_option("--data", *data, "shared data folder");
+  sub->add_option("--data", *data, kDataHelp);
   sub->add_option("--sets", *sets, "comma-separated situation sets: new (S1002/60E1 1:20), worn, groove");
   sub->add_option("--against", *against, "planar comparison: flat_kp (planar KP on the flattened patch), kp (curvilinear KP), hertz");
   sub->add_option("--tolerance", *tolerance, "relative difference that counts as significant");
@@ -79,7 +79,8 @@ void RegisterThresholdCommand(CLI::App& app) {
                            {"kp_strips", *strips}, {"fastsim_elements", *elements}};
     std::stringstream ss(*sets);
     for (std::string set; std::getline(ss, set, ',');) {
-      const std::vector<ThresholdPoint> points = CompareConformalPlanar(MakeThresholdSituations(set, *data, *load), options);
+      const std::vector<ThresholdPoint> points =
+          CompareConformalPlanar(MakeThresholdSituations(set, DataDirOr(*data), *load), options);
       json["sets"][set] = FitJson(points, *tolerance);
       const auto& j = json["sets"][set];
       std::printf("%-7s %4d situations, %3d exceed %.0f%%: threshold %s deg (bracket from %.2f deg, %d misclassified);"
@@ -113,8 +114,8 @@ void RegisterThresholdCommand(CLI::App& app) {
                 json["threshold_deg"].dump().c_str(), 100 * *tolerance, against->c_str(), csv.c_str(), out_dir->c_str());
     std::fflush(stdout);  // before the plot script's own output
     if (*plot) {
-      const std::string cmd = "/usr/bin/python3 " + std::string(CONFORMA_SOURCE_DIR) + "/scripts/plot_threshold.py '" +
-                              csv + "' '" + *out_dir + "/threshold.json' '" + *out_dir + "/threshold.png'";
+      const std::string cmd = PythonOr("") + " '" + PlotScript("plot_threshold.py") + "' '" + csv + "' '" + *out_dir +
+                              "/threshold.json' '" + *out_dir + "/threshold.png'";
       if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "threshold: plotting failed (%s)\n", cmd.c_str());
     }
   });

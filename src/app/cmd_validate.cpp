@@ -301,7 +301,7 @@ void RegisterValidateCommand(CLI::App& app) {
     double worn_zone_depth_mm = 0.01;
     std::vector<double> lateral_range_mm;
     bool align_taping_line = false;
-    std::string python = "/usr/bin/python3";
+    std::string python;  // empty: PythonOr's default
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
@@ -324,7 +324,7 @@ void RegisterValidateCommand(CLI::App& app) {
   sub->add_flag("--align-taping-line", a->align_taping_line,
                 "shift measured profiles in z to the simulated height at the taping line (profiles without an "
                 "absolute radius, e.g. MiniProf)");
-  sub->add_option("--python", a->python, "python interpreter with matplotlib for the plots");
+  sub->add_option("--python", a->python, kPythonHelp);
   sub->callback([a]() {
     const Scenario sc = LoadScenario(a->scenario);
     if (a->measured.empty() && a->measured_profiles.empty())
@@ -424,11 +424,12 @@ void RegisterValidateCommand(CLI::App& app) {
     rs.target_km = target_km;
     rs.distance = dopt;
     rs.interpolation = interpolation;
-    const std::string script = std::string(CONFORMA_SOURCE_DIR) + "/scripts/plot_validate.py";
-    if (::access(a->python.c_str(), X_OK) != 0) {
-      rs.plot_note = a->python + " not found (install python3-matplotlib or give --python)";
+    const std::string script = PlotScript("plot_validate.py");
+    const std::string python = PythonOr(a->python);
+    if (::access(python.c_str(), X_OK) != 0) {
+      rs.plot_note = python + " not found (install python3-matplotlib, set CONFORMA_PYTHON or give --python)";
     } else {
-      const std::string cmd = a->python + " '" + script + "' '" + a->out + "' " + a->models;
+      const std::string cmd = python + " '" + script + "' '" + a->out + "' " + a->models;
       const int rc = std::system(cmd.c_str());
       if (rc != 0) rs.plot_note = "scripts/plot_validate.py failed (exit " + std::to_string(rc) + "; is matplotlib installed?)";
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Subcommands of the conforma executable; each file src/app/cmd_<name>.cpp registers one.
 #include <CLI/CLI.hpp>
+#include <string>
 
 namespace conforma::cli {
 
@@ -15,5 +16,18 @@ void RegisterThresholdCommand(CLI::App& app);  // conforma threshold: conformity
 void RegisterStressCommand(CLI::App& app);     // conforma stress: numerical stability stress suite
 void RegisterCurvingCommand(CLI::App& app);    // conforma curving: curving kinematics and wheel forces per class
 void RegisterValidateCommand(CLI::App& app);   // conforma validate: wear simulation against measured wheels
+
+// Run-time files of the commands (conforma/data_paths.hpp), resolved when a command runs, not when it is declared
+// (src/app/run_time_paths.cpp):
+// scripts/<name> in the share dir ($CONFORMA_SHARE_DIR, the installed share/conforma, else this build's sources).
+std::string PlotScript(const std::string& name);
+// --data: the given folder, else $CONFORMA_DATA_DIR, else the built-in default.
+std::string DataDirOr(const std::string& given);
+// --python: the given interpreter, else $CONFORMA_PYTHON, else python3 on PATH.
+std::string PythonOr(const std::string& given);
+inline constexpr const char* kDataHelp =
+    "shared data folder (default: $CONFORMA_DATA_DIR, else the build's CONFORMA_SHARED_DATA)";
+inline constexpr const char* kPythonHelp =
+    "python interpreter with matplotlib for the plots (default: $CONFORMA_PYTHON, else python3 on PATH)";
 
 }  // namespace conforma::cli

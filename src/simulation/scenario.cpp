@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
 #include "conforma/profile_by_name.hpp"
 #include "conforma/profile_io.hpp"
@@ -71,6 +72,8 @@ struct Reader {
     return n.as<std::string>();
   }
   std::string path(const std::string& p) const {
+    static const std::string kDataPrefix = "$CONFORMA_DATA_DIR/";
+    if (p.compare(0, kDataPrefix.size(), kDataPrefix) == 0) return SharedDataDir() + "/" + p.substr(kDataPrefix.size());
     if (p.empty() || p[0] == '/') return p;
     return base_dir + "/" + p;
   }
