@@ -6,7 +6,8 @@
 //       its source folder);
 //   shared reference data dir (measured wheels, CONTACT references, profile banks; docs/data.md):
 //       $CONFORMA_DATA_DIR, else the CMake option CONFORMA_SHARED_DATA the library was built with;
-//   python interpreter (plot scripts): $CONFORMA_PYTHON, else python3 found on PATH.
+//   python interpreter (plot scripts): $CONFORMA_PYTHON, else the first python3 on PATH that imports matplotlib and
+//       NumPy, else the first python3 on PATH.
 #include <string>
 
 namespace conforma {
@@ -23,8 +24,9 @@ std::string SharedDataDir();
 // The built-in default: the CMake option CONFORMA_SHARED_DATA at build time.
 std::string DefaultSharedDataDir();
 
-// $CONFORMA_PYTHON when set and not empty, else the full path of the first executable python3 on PATH, else
-// "python3" (which then fails to run, and callers report that plots were not produced).
+// $CONFORMA_PYTHON when set and not empty, else the full path of the first python3 on PATH that imports matplotlib
+// and NumPy (one probe per candidate), else the first python3 on PATH, else "python3" (which then fails to run, and
+// callers report that plots were not produced).
 std::string PythonInterpreter();
 
 }  // namespace conforma

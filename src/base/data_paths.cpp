@@ -60,12 +60,18 @@ std::string SharedDataDir() {
 std::string PythonInterpreter() {
   const std::string env = Env("CONFORMA_PYTHON");
   if (!env.empty()) return env;
+  // the plot scripts need matplotlib and NumPy (Debian's python3-matplotlib): an interpreter earlier on PATH (e.g.
+  // a pyenv shim) may lack them, so the first python3 on PATH that imports them wins, else the first one at all
+  std::string first;
   std::stringstream path(Env("PATH"));
   for (std::string dir; std::getline(path, dir, ':');) {
     const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/python3";
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (::access(candidate.c_str(), X_OK) != 0) continue;
+    if (first.empty()) first = candidate;
+    const std::string probe = "'" + candidate + "' -c 'import matplotlib, numpy' >/dev/null 2>&1";
+    if (std::system(probe.c_str()) == 0) return candidate;
   }
-  return "python3";
+  return first.empty() ? "python3" : first;
 }
 
 }  // namespace conforma

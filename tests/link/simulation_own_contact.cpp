@@ -155,7 +155,7 @@ int main(int argc, char** argv) {
   try {
     const Scenario scenario = LoadScenario(argv[1]);
     WearSimulationOptions options;
-    options.model = ContactModel::Hertz;  // only a label here: the contact function above ignores it
+    options.contact.model = ContactModel::Hertz;  // only a label here: the contact function above ignores it
     options.steps = 2;
     options.total_km = 0.0;  // no distance limit: each step removes the depth cap
     Profile wheel_before = scenario.wheel;
