@@ -89,11 +89,11 @@ BenchPatchResult SummariseBenchPatch(const PatchSolution& s) {
   out.normal_status = s.normal.status;
   out.tangential_status = s.tangential.status;
   const bool kp = s.model != ContactModel::Hertz;
-  if (!s.normal.in_contact || (kp && !(s.normal.kp.fn_N > 0.0))) return out;
+  if (!s.normal.in_contact) return out;
   out.in_contact = true;
   out.pmax_Pa = s.normal.pmax_Pa;
   out.area_m2 = s.normal.area_m2;
-  out.fn_N = kp ? s.normal.kp.fn_N : s.normal.fn_N;
+  out.fn_N = s.normal.fn_N;  // along the reference normal (KP: KpResult::fn_N)
   out.approach_m = s.approach_m;
   out.alpha_c_deg = s.normal.alpha_c_deg;
   if (!s.tangential.solved) return out;
