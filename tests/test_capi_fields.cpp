@@ -14,6 +14,7 @@
 #include "conforma/profile_io.hpp"
 #include "conforma/wheel_contact.hpp"
 #include "conforma/wheel_contact_fields.hpp"
+#include "capi_mbench_model.hpp"
 #include "conforma_c.h"
 
 namespace {
@@ -65,23 +66,10 @@ std::map<std::string, double> TableValues(const conforma::PatchReport& p) {
 }
 
 TEST(CApiFields, EveryCPatchFieldIsTheTableFieldOfItsName) {
-  const std::string dir = std::string(CONFORMA_SHARED_DATA) + "/profiles/contact/examples/";
-  const std::string wheel = dir + "MBench_S1002_v3.prw", rail = dir + "MBench_UIC60_v3.prr";
-  conforma_track_params track;
-  conforma_contact_params contact;
-  conforma_default_track_params(&track);
-  conforma_default_contact_params(&contact);
-  track.wheel_profile = wheel.c_str();
-  track.rail_profile = rail.c_str();  // a file: taken as canted (inclination 0)
-  conforma_model* model = nullptr;
-  char error[CONFORMA_ERROR_TEXT];
-  ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
-
-  conforma::ProfileReadOptions wo, ro;
-  wo.kind = conforma::ProfileKind::Wheel;
-  ro.kind = conforma::ProfileKind::Rail;
-  const conforma::WheelsetTrackGeometry geometry(
-      conforma::MakeSymmetricTrack(conforma::LoadProfile(wheel, wo), conforma::LoadProfile(rail, ro), 0.0));
+  CApiMBenchModel mbench;
+  ASSERT_NO_FATAL_FAILURE(mbench.Create());
+  conforma_model* model = mbench.model;
+  const conforma::WheelsetTrackGeometry& geometry = *mbench.geometry;
   conforma::WheelContactOptions options;  // the C defaults: conformal, the C++ defaults otherwise
   options.model = conforma::ContactModel::Conformal;
 
@@ -119,7 +107,6 @@ TEST(CApiFields, EveryCPatchFieldIsTheTableFieldOfItsName) {
   }
   EXPECT_GE(patches, 8);
   EXPECT_GT(two_patch_wheels, 0);
-  conforma_model_destroy(model);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "conforma/geometry.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/wheel_contact.hpp"
+#include "capi_mbench_model.hpp"
 #include "conforma_c.h"
 
 namespace {
@@ -195,23 +196,10 @@ TEST(CApiThreads, BadInputIsAnErrorCodeWithAMessageNamingTheParameter) {
 // directly with the same sequence (rigid equilibrium, then load control from there), to the last bit.
 
 TEST(CApiThreads, ModelFromProfileFilesEqualsTheCppPipeline) {
-  const std::string dir = std::string(CONFORMA_SHARED_DATA) + "/profiles/contact/examples/";
-  const std::string wheel = dir + "MBench_S1002_v3.prw", rail = dir + "MBench_UIC60_v3.prr";
-  conforma_track_params track;
-  conforma_contact_params contact;
-  conforma_default_track_params(&track);
-  conforma_default_contact_params(&contact);
-  track.wheel_profile = wheel.c_str();
-  track.rail_profile = rail.c_str();  // a file: taken as canted (inclination 0)
-  conforma_model* model = nullptr;
-  char error[CONFORMA_ERROR_TEXT];
-  ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
-
-  conforma::ProfileReadOptions wo, ro;
-  wo.kind = conforma::ProfileKind::Wheel;
-  ro.kind = conforma::ProfileKind::Rail;
-  const conforma::WheelsetTrackGeometry geometry(
-      conforma::MakeSymmetricTrack(conforma::LoadProfile(wheel, wo), conforma::LoadProfile(rail, ro), 0.0));
+  CApiMBenchModel mbench;
+  ASSERT_NO_FATAL_FAILURE(mbench.Create());
+  conforma_model* model = mbench.model;
+  const conforma::WheelsetTrackGeometry& geometry = *mbench.geometry;
   conforma::WheelContactOptions options;
   options.model = conforma::ContactModel::Conformal;
 
@@ -243,5 +231,4 @@ TEST(CApiThreads, ModelFromProfileFilesEqualsTheCppPipeline) {
       EXPECT_EQ(w.vertical_position_m, ref.pose.vertical_m);
     }
   }
-  conforma_model_destroy(model);
 }

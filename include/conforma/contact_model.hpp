@@ -9,5 +9,7 @@ constexpr int kContactModelCount = 6;
 const char* to_string(ContactModel model);
 // "hertz", "kp", "kpec", "conformal", "reference", "auto"; InputError naming the value otherwise.
 ContactModel ParseContactModel(const std::string& name);
+// "hertz, kp, kpec, conformal, reference, auto": the names in the table's order, for help texts and messages.
+const std::string& ContactModelNames();
 
 }  // namespace conforma

@@ -57,7 +57,7 @@ std::unique_ptr<WheelsetTrackGeometry> TrackArgs::make_geometry() const {
 }
 
 void ContactArgs::add_to(CLI::App* app) {
-  app->add_option("--model", model, "contact model: hertz, kp, kpec, conformal, auto, reference");
+  app->add_option("--model", model, "contact model: " + ContactModelNames());
   app->add_option("--load-N", load_N, "vertical load per wheel (load control); negative: use the pose as given");
   app->add_option("--speed", speed_m_s, "forward speed [m/s]");
   app->add_option("--mu", friction, "friction coefficient");

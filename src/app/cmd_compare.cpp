@@ -96,7 +96,7 @@ void RegisterCompareCommand(CLI::App& app) {
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--out", a->out, "output folder");
-  sub->add_option("--models", a->models, "comma-separated contact models (hertz, kp, kpec, conformal, reference, auto)");
+  sub->add_option("--models", a->models, "comma-separated contact models (" + ContactModelNames() + ")");
   sub->add_option("--steps", a->steps, "wheel steps per model");
   sub->add_option("--python", a->python, kPythonHelp);
   sub->callback([a]() {

@@ -1,28 +1,46 @@
-// Names of the contact models (contact_model.hpp): in the core library so that scenario files, the pipeline and the
-// bindings share one table.
+// Names of the contact models (contact_model.hpp): one table that scenario files, the command line, the pipeline
+// and the bindings share.
 #include "conforma/contact_model.hpp"
+
+#include <array>
 
 #include "conforma/error.hpp"
 
 namespace conforma {
 
+namespace {
+struct ModelName {
+  ContactModel model;
+  const char* name;
+};
+// In the order of ContactModel; a new model adds its line here (docs/adding-a-model.md).
+constexpr std::array<ModelName, kContactModelCount> kNames = {{{ContactModel::Hertz, "hertz"},
+                                                               {ContactModel::Kp, "kp"},
+                                                               {ContactModel::Kpec, "kpec"},
+                                                               {ContactModel::Conformal, "conformal"},
+                                                               {ContactModel::Reference, "reference"},
+                                                               {ContactModel::Auto, "auto"}}};
+}  // namespace
+
 const char* to_string(ContactModel model) {
-  switch (model) {
-    case ContactModel::Hertz: return "hertz";
-    case ContactModel::Kp: return "kp";
-    case ContactModel::Kpec: return "kpec";
-    case ContactModel::Conformal: return "conformal";
-    case ContactModel::Reference: return "reference";
-    case ContactModel::Auto: return "auto";
-  }
+  for (const ModelName& m : kNames)
+    if (m.model == model) return m.name;
   return "?";
 }
 
+const std::string& ContactModelNames() {
+  static const std::string names = [] {
+    std::string list;
+    for (const ModelName& m : kNames) list += (list.empty() ? "" : ", ") + std::string(m.name);
+    return list;
+  }();
+  return names;
+}
+
 ContactModel ParseContactModel(const std::string& name) {
-  for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal,
-                         ContactModel::Reference, ContactModel::Auto})
-    if (name == to_string(m)) return m;
-  throw InputError("unknown contact model '" + name + "' (expected hertz, kp, kpec, conformal, reference or auto)");
+  for (const ModelName& m : kNames)
+    if (name == m.name) return m.model;
+  throw InputError("unknown contact model '" + name + "' (expected one of " + ContactModelNames() + ")");
 }
 
 }  // namespace conforma
