@@ -1,6 +1,7 @@
 // C API implementation (conforma_c.h): a thin shell over the C++ pipeline (wheel_contact.hpp). Every entry point
 // catches every exception; the handle is immutable after creation except for its mutex-guarded last-error text.
 #include "conforma_c.h"
+#include "c_patch_fields.hpp"
 
 #include <cstring>
 #include <exception>
@@ -55,27 +56,11 @@ void FillWheel(const conforma::WheelsetTrackGeometry& geometry, Side side, const
     moment += (t.point_m - centre).cross(t.force_N) + t.spin_moment_Nm;
     if (j >= static_cast<size_t>(CONFORMA_MAX_PATCHES)) continue;
     conforma_patch_result& o = w->patch[w->patch_count++];
-    o.normal_force_N = p.fn_N;
-    o.longitudinal_force_N = p.fx_N;
-    o.lateral_force_N = p.fy_N;
-    o.spin_moment_Nm = p.mz_Nm;
+    conforma::capi::FillCPatchScalars(p, &o);  // the one field table (c_patch_fields.hpp)
     Store(o.force_track_N, t.force_N);
     Store(o.spin_moment_track_Nm, t.spin_moment_Nm);
     Store(o.contact_point_track_m, t.point_m);
     Store(o.normal_track, t.normal);
-    o.contact_angle_rad = p.contact_angle_rad;
-    o.rolling_radius_m = p.rolling_radius_m;
-    o.approach_m = p.approach_m;
-    o.area_m2 = p.area_m2;
-    o.pmax_Pa = p.pmax_Pa;
-    o.adhesion_area_m2 = p.adhesion_area_m2;
-    o.slip_area_m2 = p.slip_area_m2;
-    o.frictional_power_W = p.frictional_power_W;
-    o.creepage_longitudinal = p.xi;
-    o.creepage_lateral = p.eta;
-    o.creepage_spin_per_m = p.phi_per_m;
-    o.conformity_index_deg = p.alpha_c_deg;
-    o.is_conformal = p.is_conformal ? 1 : 0;
   }
   Store(w->force_track_N, force);
   Store(w->moment_track_Nm, moment);

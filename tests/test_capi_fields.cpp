@@ -15,45 +15,17 @@
 #include "conforma/wheel_contact.hpp"
 #include "conforma/wheel_contact_fields.hpp"
 #include "capi_mbench_model.hpp"
+#include "c_patch_fields.hpp"
 #include "conforma_c.h"
 
 namespace {
 
-// C member -> table key. The other members are track-frame vectors (force_track_N, spin_moment_track_Nm,
-// contact_point_track_m, normal_track), checked by test_capi_threads.
-struct Mapped {
-  const char* table_key;
-  double (*c_value)(const conforma_patch_result&);
-};
-#define CONFORMA_C_FIELD(key, member) \
-  Mapped { key, [](const conforma_patch_result& p) { return static_cast<double>(p.member); } }
-const Mapped kMapped[] = {
-    CONFORMA_C_FIELD("fn_N", normal_force_N),
-    CONFORMA_C_FIELD("fx_N", longitudinal_force_N),
-    CONFORMA_C_FIELD("fy_N", lateral_force_N),
-    CONFORMA_C_FIELD("mz_Nm", spin_moment_Nm),
-    CONFORMA_C_FIELD("contact_angle_rad", contact_angle_rad),
-    CONFORMA_C_FIELD("rolling_radius_m", rolling_radius_m),
-    CONFORMA_C_FIELD("approach_m", approach_m),
-    CONFORMA_C_FIELD("area_m2", area_m2),
-    CONFORMA_C_FIELD("pmax_Pa", pmax_Pa),
-    CONFORMA_C_FIELD("adhesion_area_m2", adhesion_area_m2),
-    CONFORMA_C_FIELD("slip_area_m2", slip_area_m2),
-    CONFORMA_C_FIELD("frictional_power_W", frictional_power_W),
-    CONFORMA_C_FIELD("xi", creepage_longitudinal),
-    CONFORMA_C_FIELD("eta", creepage_lateral),
-    CONFORMA_C_FIELD("phi_per_m", creepage_spin_per_m),
-    CONFORMA_C_FIELD("alpha_c_deg", conformity_index_deg),
-    CONFORMA_C_FIELD("is_conformal", is_conformal),
-};
-#undef CONFORMA_C_FIELD
-constexpr size_t kTrackFrameMembers = 4;  // the double[3] vectors
-
-// A member added to conforma_patch_result (an ABI change) must be added to kMapped or counted as a track-frame one:
-// 17 scalars (16 double, 1 int) and 4 double[3].
-static_assert(sizeof(conforma_patch_result) == (16 + 3 * kTrackFrameMembers) * sizeof(double) + sizeof(double),
-              "conforma_patch_result changed: map its new member to the PatchReport table in kMapped");
-static_assert(sizeof(kMapped) / sizeof(kMapped[0]) == 17, "17 scalar members of conforma_patch_result");
+// The C fill's own table (capi/c_patch_fields.hpp): C member -> table key.
+double CValue(const conforma_patch_result& p, const conforma::capi::CPatchField& f) {
+  const char* member = reinterpret_cast<const char*>(&p) + f.offset;
+  if (f.is_int) return static_cast<double>(*reinterpret_cast<const int*>(member));
+  return *reinterpret_cast<const double*>(member);
+}
 
 // The table's numeric fields of one patch by key (bools as 0 / 1).
 std::map<std::string, double> TableValues(const conforma::PatchReport& p) {
@@ -74,7 +46,8 @@ TEST(CApiFields, EveryCPatchFieldIsTheTableFieldOfItsName) {
   options.model = conforma::ContactModel::Conformal;
 
   const std::map<std::string, double> names = TableValues(conforma::PatchReport{});
-  for (const Mapped& m : kMapped) EXPECT_EQ(names.count(m.table_key), 1u) << m.table_key << " is not in the table";
+  for (const conforma::capi::CPatchField& m : conforma::capi::kCPatchFields)
+    EXPECT_EQ(names.count(m.table_key), 1u) << m.table_key << " is not in the table";
 
   int patches = 0, two_patch_wheels = 0;
   for (double y_mm : {0.0, 3.0, 5.0, 6.0, 6.5, 7.0, 8.0}) {
@@ -100,8 +73,19 @@ TEST(CApiFields, EveryCPatchFieldIsTheTableFieldOfItsName) {
       two_patch_wheels += w.patch_count > 1;
       for (int j = 0; j < w.patch_count; ++j, ++patches) {
         const std::map<std::string, double> table = TableValues(ref.patches[j]);
-        for (const Mapped& m : kMapped)
-          EXPECT_EQ(m.c_value(w.patch[j]), table.at(m.table_key)) << m.table_key << " y " << y_mm << " patch " << j;
+        for (const conforma::capi::CPatchField& m : conforma::capi::kCPatchFields)
+          EXPECT_EQ(CValue(w.patch[j], m), table.at(m.table_key)) << m.table_key << " y " << y_mm << " patch " << j;
+        // the mapping itself, member by member (not through the table)
+        const conforma::PatchReport& p = ref.patches[j];
+        EXPECT_EQ(w.patch[j].normal_force_N, p.fn_N);
+        EXPECT_EQ(w.patch[j].longitudinal_force_N, p.fx_N);
+        EXPECT_EQ(w.patch[j].lateral_force_N, p.fy_N);
+        EXPECT_EQ(w.patch[j].spin_moment_Nm, p.mz_Nm);
+        EXPECT_EQ(w.patch[j].creepage_longitudinal, p.xi);
+        EXPECT_EQ(w.patch[j].creepage_lateral, p.eta);
+        EXPECT_EQ(w.patch[j].creepage_spin_per_m, p.phi_per_m);
+        EXPECT_EQ(w.patch[j].conformity_index_deg, p.alpha_c_deg);
+        EXPECT_EQ(w.patch[j].is_conformal, p.is_conformal ? 1 : 0);
       }
     }
   }
