@@ -229,4 +229,9 @@ class WheelsetTrackGeometry {
   double mean_radius_ = 0.46;
 };
 
+// Lateral shift at which the wheel on the outer side (c > 0: right, y < 0) reaches flange contact: the last shift
+// (0.1 mm scan, up to 20 mm) before the smallest-gap rigid contact jumps to the flange (contact angle >
+// flange_angle_rad); signed (negative for c > 0).
+double FlangeContactShift(const WheelsetTrackGeometry& geometry, double curvature_sign, double flange_angle_rad = 0.5);
+
 }  // namespace conforma

@@ -33,12 +33,12 @@
 #include <string>
 #include <vector>
 
+#include "conforma/contact_model.hpp"
 #include "conforma/kinematics.hpp"
 #include "conforma/material.hpp"
 #include "conforma/profile.hpp"
 #include "conforma/vehicle.hpp"
 #include "conforma/wear_distribution.hpp"
-#include "conforma/wheel_contact.hpp"
 
 namespace conforma {
 

@@ -91,10 +91,6 @@ KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrack
 // provider). Loads: static wheel load -/+ m a_nc h / (2 b0) on the inner/outer wheel. One bogie (two wheelsets).
 KinematicsSeries KinematicCurvingEstimate(const Scenario& scenario, const WheelsetTrackGeometry& geometry,
                                           const TrackClass& track_class);
-// Lateral shift at which the wheel on the outer side (c > 0: right, y < 0) reaches flange contact: the last shift
-// (0.1 mm scan, up to 20 mm) before the smallest-gap rigid contact jumps to the flange (contact angle >
-// flange_angle_rad); signed (negative for c > 0).
-double FlangeContactShift(const WheelsetTrackGeometry& geometry, double curvature_sign, double flange_angle_rad = 0.5);
 // Options of the scenario's quasi-static curving solve with `model` in the loop (tangent-track samples, cant base,
 // axle rotation from the scenario's kinematics).
 QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactModel model);

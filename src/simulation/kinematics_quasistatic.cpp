@@ -10,7 +10,6 @@
 #include <ceres/ceres.h>
 
 #include "conforma/error.hpp"
-#include "conforma/wear_simulation.hpp"
 
 namespace conforma {
 
@@ -353,7 +352,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   base.k_sec_yaw = vehicle.secondary_yaw_stiffness_Nm_rad;
   base.m_w = vehicle.wheelset_mass_kg;
   base.m_b_plus_c = vehicle.bogie_frame_mass_kg + vehicle.carbody_mass_per_bogie_kg;
-  // flange-contact shifts towards the right (curvature > 0: outer) and the left rail (wear_simulation.hpp)
+  // flange-contact shifts towards the right (curvature > 0: outer) and the left rail (geometry.hpp)
   const double y_right = FlangeContactShift(geometry, 1.0, options.flange_contact_angle_rad);
   const double y_left = FlangeContactShift(geometry, -1.0, options.flange_contact_angle_rad);
   base.y_min = y_right - options.derailment_margin_m;
