@@ -50,7 +50,7 @@ enum class ConicityStatus { Ok, AmplitudeOutOfRange, NoCentre };
 const char* to_string(ConicityStatus status);  // "ok", "amplitude out of the Delta r range", "no centre (...)"
 
 struct ConicityResult {
-  ConicityStatus status = ConicityStatus::NoCentre;
+  ConicityStatus status = ConicityStatus::NoCentre;  // see ConicityStatus
   double amplitude_m = 0.0;          // y_hat as requested, m (set unless NoCentre)
   double equivalent_conicity = 0.0;  // tan(gamma_e), dimensionless, >= 0 (0 inside a plateau of Delta r = 0); Ok only
   double centre_m = 0.0;             // S minimum (Delta r = 0), m; set unless NoCentre

@@ -56,7 +56,7 @@ struct ContactCandidate {
 };
 
 struct CandidateResult {
-  CandidateStatus status = CandidateStatus::NoOverlap;
+  CandidateStatus status = CandidateStatus::NoOverlap;  // see CandidateStatus
   WheelsetPose pose;                         // the pose the regions were taken at
   std::vector<ContactCandidate> candidates;  // ordered along the rail (gauge side first); empty unless Ok
   // Load-given mode only (has_touching): the wheel at first touch, where the Hertz push-down starts, and its

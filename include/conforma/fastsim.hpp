@@ -111,7 +111,7 @@ const char* to_string(FastsimStatus status);  // "ok", "full_slip", "no_contact"
 // is Ok or FullSlip; with NoContact the per-element vectors are empty (or sized to a patch of 0 elements) and every
 // total is 0.
 struct FastsimResult {
-  FastsimStatus status = FastsimStatus::NoContact;
+  FastsimStatus status = FastsimStatus::NoContact;  // see FastsimStatus
   // Per element, in the element order of the patch.
   std::vector<double> x_m, y_m, area_m2;          // element centre (m, patch frame) and area (m^2)
   std::vector<double> px_Pa, py_Pa;               // tangential traction on body 1, Pa; |p| <= mu p_n

@@ -106,7 +106,7 @@ struct RigidContactPoint {
 
 // The rigid contact of one wheel at a pose (RigidContact).
 struct WheelContactResult {
-  ContactStatus status = ContactStatus::NoOverlap;
+  ContactStatus status = ContactStatus::NoOverlap;  // see ContactStatus
   std::vector<RigidContactPoint> points;  // local gap minima within candidate_window_m, smallest gap first
   int contact_count = 0;                  // points within contact_tolerance_m of the smallest gap (>= 1 when Ok)
 };
@@ -134,7 +134,7 @@ enum class EquilibriumStatus { Converged, NotConverged, NoContact };
 const char* to_string(EquilibriumStatus status);  // "converged", "not converged", "no contact"
 
 struct EquilibriumResult {
-  EquilibriumStatus status = EquilibriumStatus::NoContact;
+  EquilibriumStatus status = EquilibriumStatus::NoContact;  // see EquilibriumStatus
   // lateral and yaw as given; vertical and roll solved (include_roll false: roll as guessed, left wheel touching)
   WheelsetPose pose;
   WheelsetContactResult contact;       // at the solved pose (include_roll false: each wheel lowered onto its rail)

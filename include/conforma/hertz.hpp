@@ -16,7 +16,7 @@ const char* to_string(HertzStatus status);  // "ok", "no_solution", "no_contact"
 // The Hertz solution (docs/physics-reference.md §1.2). With NoSolution every field is 0; with NoContact only a_over_b,
 // elliptic_K and elliptic_E are set (the ellipse shape, which does not depend on the load), the rest is 0.
 struct HertzResult {
-  HertzStatus status = HertzStatus::NoSolution;
+  HertzStatus status = HertzStatus::NoSolution;  // see HertzStatus
   double a_m = 0.0;             // semi-axis along x (rolling), m; > 0 when Ok
   double b_m = 0.0;             // semi-axis along y (lateral), m; > 0 when Ok
   double p0_Pa = 0.0;           // maximum pressure 3N / (2 pi a b), Pa

@@ -87,7 +87,7 @@ struct KpStrip {
 // last iterate of the load control, when that had contact); otherwise they are empty / 0 (InfluenceNotPositive
 // keeps virtual_penetration_m).
 struct KpResult {
-  KpStatus status = KpStatus::NoContact;
+  KpStatus status = KpStatus::NoContact;  // see KpStatus
   std::vector<KpStrip> strips;         // strips_across_contact equal strips over exactly [s_min_m, s_max_m]
   double approach_m = 0.0;             // rigid approach delta, m, >= 0 (load given: the solution's)
   double virtual_penetration_m = 0.0;  // eps * delta (KP) or eps(s_contact) * delta (KPEC), m

@@ -132,7 +132,7 @@ struct WheelsetQuasiStaticReport {
 // One bogie; bogies with the same carbody yaw share one solve (the counters are those of that solve).
 struct BogieQuasiStaticReport {
   int bogie = 0;                          // index from the front (0 = leading)
-  QuasiStaticStatus status = QuasiStaticStatus::NotConverged;
+  QuasiStaticStatus status = QuasiStaticStatus::NotConverged;  // of this bogie's solve, see QuasiStaticStatus
   double lateral_m = 0.0, yaw_rad = 0.0;  // frame, local track frame at the bogie centre; m, rad
   double carbody_yaw_rad = 0.0;           // psi_c used for the secondary yaw moment, rad
   // Lateral deflection of the secondary stage, m_c a_nc / k_s,y (the carbody share's lateral force goes

@@ -21,7 +21,7 @@ const char* to_string(LoadControlStatus status);  // "ok", "no_bracket", "not_co
 
 // With NoBracket every field is 0 (push_m is then not a solution).
 struct LoadControlResult {
-  LoadControlStatus status = LoadControlStatus::NoBracket;
+  LoadControlStatus status = LoadControlStatus::NoBracket;  // see LoadControlStatus
   double push_m = 0.0;      // m, beyond the first guess; carried_load was evaluated here last (Ok / NotConverged)
   double residual_N = 0.0;  // carried load - load at push_m, N
   int iterations = 0;       // root-finder evaluations (not counting the bracket's), >= 0

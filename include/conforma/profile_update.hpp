@@ -99,7 +99,7 @@ enum class ProfileUpdateStatus { Updated, NoWear, InvalidProfile };
 const char* to_string(ProfileUpdateStatus status);  // "updated", "no wear", "invalid profile"
 
 struct ProfileUpdateResult {
-  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;
+  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;  // see ProfileUpdateStatus
   std::string message;           // names the step and the failed check when status != Updated; "" otherwise
   Profile profile;               // the new profile (the old one when status != Updated)
   // smoothed, scaled depth actually removed [m] (NoWear: the smoothed depth, unscaled)

@@ -44,7 +44,7 @@ struct RailStepOptions {
 // status as ProfileUpdateStatus (NoWear also when keep_rail_fixed); the fields below are filled with Updated and,
 // where reached, with InvalidProfile.
 struct RailStepResult {
-  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;
+  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;  // see ProfileUpdateStatus above
   std::string message;                 // names the step and the reason when status != Updated; "" otherwise
   Profile rail;                        // r_{k+1} (r_k when fixed, without wear, or invalid)
   std::vector<Profile> virtual_rails;  // r_k^j, one per wheel profile

@@ -53,7 +53,7 @@ const char* to_string(SdecStatus status);  // "ok", "no_contact"
 
 // The SDEC of a patch (docs/physics-reference.md §6.5). Lengths in m along the patch coordinates of the strips.
 struct SdecResult {
-  SdecStatus status = SdecStatus::NoContact;
+  SdecStatus status = SdecStatus::NoContact;  // see SdecStatus
   double area_m2 = 0.0;            // A_c, m^2
   double w1_m = 0.0, w2_m = 0.0;   // widths on the -s and +s side of the longest strip line, m, >= 0
   double w3_m = 0.0;               // longest contact length along x^r, 2 c_max(s*), m

@@ -172,7 +172,7 @@ enum class WearSimulationStatus { Completed, InvalidProfile, NoWear };
 const char* to_string(WearSimulationStatus status);  // "completed", "invalid_profile", "no_wear"
 
 struct WearSimulationResult {
-  WearSimulationStatus status = WearSimulationStatus::Completed;
+  WearSimulationStatus status = WearSimulationStatus::Completed;  // see WearSimulationStatus
   std::string message;                                // "" when Completed; else "rail step k, wheel step j: ..."
   Profile initial_wheel;                              // the scenario's wheel
   WheelDimensions initial_dimensions;                 // Sd/Sh/qR of initial_wheel

@@ -93,7 +93,7 @@ enum class WheelContactStatus { Ok, NoContact, NotConverged };
 const char* to_string(WheelContactStatus status);  // "ok", "no_contact", "not_converged"
 
 struct WheelContactReport {
-  WheelContactStatus status = WheelContactStatus::NoContact;
+  WheelContactStatus status = WheelContactStatus::NoContact;  // see WheelContactStatus
   Side side = Side::Left;                    // the wheel solved
   ContactModel model = ContactModel::Hertz;  // WheelContactOptions::model (auto stays auto; per patch: PatchReport)
   WheelsetPose pose;                 // the pose the patches were solved at (vertical pushed down in load control)
