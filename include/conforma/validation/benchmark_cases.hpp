@@ -6,8 +6,8 @@
 //   tangential: the conformal model (conformal KP + curved FASTSIM) on a finer grid than any benchmarked one.
 // Cases: Manchester sweep (left wheel, every interpenetration region at the 10 kN Hertz push-down, creepages
 // of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of
-// conforma/validation/analytic_patches.hpp), the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral shifts, and a flange-root two-patch
-// contact of S1002 / 60E1 at 1:40 (both patches).
+// conforma/validation/analytic_patches.hpp), the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral
+// shifts, and a flange-root two-patch contact of S1002 / 60E1 at 1:40 (both patches).
 //
 // Wear index of a patch: W = sum over elements |p_t . s| dA (traction times dimensionless slip), i.e. the
 // frictional power per unit rolling speed [N]; the integrand of the T-gamma / Archard wear laws.
@@ -50,7 +50,8 @@ std::vector<BenchCase> BenchCasesFromPose(const WheelsetTrackGeometry& geometry,
 struct PatchSolveOptions {
   ContactModel model = ContactModel::Conformal;  // Hertz, Kp, Kpec, Conformal or Auto (Reference: InputError)
   int kp_strips = kDefaultKpStrips;          // strips across the contact (KP models), >= 3
-  int fastsim_elements = kDefaultFastsimElements;   // FASTSIM elements per strip (and strips of the Hertz ellipse), >= 2
+  // FASTSIM elements per strip (and strips of the Hertz ellipse), >= 2
+  int fastsim_elements = kDefaultFastsimElements;
   double load_tolerance = kDefaultLoadTolerance;  // relative, on fn_bar, > 0
   // m, >= 0. > 0: approach given (one normal solve, as a multibody code in penetration mode calls it) instead of the
   // load
