@@ -17,7 +17,7 @@ capi/conforma_c.h. A simple heuristic, not a C++ parser:
 
 Usage: check_api_docs.py [--root DIR] [--list]
   --root   the repository to check (default: the repository this script is in, the parent of scripts/).
-  --list   also print every checked member and enum value with its location.
+  --list   print every checked member and enum value with its location and verdict (instead of the problems only).
 Exit status 0 when everything is documented; 1 and one line "file:line: struct::member undocumented" per problem
 otherwise. Standard library only.
 """
@@ -331,8 +331,9 @@ def main():
         p, c = check_file(path, os.path.relpath(path, root), is_c, args.list)
         problems += p
         count += c
-    for p in problems:
-        print(p)
+    if not args.list:  # --list already printed every item with its verdict
+        for p in problems:
+            print(p)
     print(f"check_api_docs: {count} members and enum values in {len(files)} headers, {len(problems)} undocumented",
           file=sys.stderr)
     return 1 if problems else 0
