@@ -74,16 +74,17 @@ extern "C" {
 #define CONFORMA_RIGHT 1
 
 typedef enum conforma_status {
-  CONFORMA_OK = 0,
+  CONFORMA_OK = 0,              /* success: the outputs are filled */
   CONFORMA_ERROR_INPUT = 1,     /* bad input: the error text names the parameter, file and line */
   CONFORMA_ERROR_NULL = 2,      /* a required pointer argument was NULL */
   CONFORMA_ERROR_INTERNAL = 3   /* unexpected failure inside the library (out of memory, ...) */
 } conforma_status;
 
 typedef enum conforma_wheel_status {
-  CONFORMA_WHEEL_OK = 0,
+  CONFORMA_WHEEL_OK = 0,             /* contact found (and, in load control, the load reached) */
   CONFORMA_WHEEL_NO_CONTACT = 1,     /* no interpenetration (wheel lifted or load 0): all forces 0 */
-  CONFORMA_WHEEL_NOT_CONVERGED = 2   /* load control did not reach the load within 10x its tolerance */
+  CONFORMA_WHEEL_NOT_CONVERGED = 2   /* load control did not reach the load within 10x its tolerance (patches of the
+                                        last iterate reported), or found no bracket (no patches) */
 } conforma_wheel_status;
 
 typedef enum conforma_normal_mode {
@@ -107,18 +108,19 @@ typedef struct conforma_track_params {
 
 /* Contact model and material. */
 typedef struct conforma_contact_params {
-  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "auto", "reference" (slow, normal only) */
-  double shear_modulus_Pa;         /* 82e9 */
-  double poisson_ratio;            /* 0.28 */
-  double friction_coefficient;     /* 0.3 */
-  int fastsim_elements;            /* 30: FASTSIM elements per strip */
-  int kp_strips;                   /* 31: strips across the contact (KP models) */
+  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "auto", "reference" (slow,
+                                      normal only) */
+  double shear_modulus_Pa;         /* 82e9: G of both bodies, > 0 */
+  double poisson_ratio;            /* 0.28: nu of both bodies */
+  double friction_coefficient;     /* 0.3: mu, >= 0 */
+  int fastsim_elements;            /* 30: FASTSIM elements per strip, >= 2 */
+  int kp_strips;                   /* 31: strips across the contact (KP models), >= 3 */
 } conforma_contact_params;
 
 /* Wheelset pose and velocities in the track frame. */
 typedef struct conforma_wheelset_state {
-  double lateral_m, vertical_m, roll_rad, yaw_rad;
-  double forward_speed_m_s;            /* V > 0 along +x */
+  double lateral_m, vertical_m, roll_rad, yaw_rad;  /* the wheelset pose (FRAMES above): m, m, rad, rad; finite */
+  double forward_speed_m_s;            /* V > 0 along +x (CONFORMA_ERROR_INPUT otherwise) */
   double lateral_velocity_m_s;         /* dy/dt */
   double yaw_rate_rad_s;               /* d(yaw)/dt */
   double axle_angular_velocity_rad_s;  /* about the axle, + rolling forwards (V / r0 for pure rolling) */
@@ -126,13 +128,13 @@ typedef struct conforma_wheelset_state {
 
 typedef struct conforma_evaluation_options {
   int normal_mode;                 /* conforma_normal_mode; default CONFORMA_LOAD_CONTROL */
-  double vertical_load_N[2];       /* load control: per wheel [left, right], >= 0; default 10e3 each */
+  double vertical_load_N[2];       /* load control: per wheel [left, right], N, >= 0 (0: no contact); default 10e3 */
   int rigid_equilibrium;           /* 1: vertical_m and roll_rad from the rigid contact of both wheels at the given
                                       lateral_m and yaw_rad (as `conforma contact`; the state's vertical_m and
                                       roll_rad are the starting guess); 0 (default): as given */
   double approach_m;               /* rigid_equilibrium with CONFORMA_GIVEN_APPROACH: push-down below rigid contact,
                                       default 5e-5 m */
-  double load_tolerance;           /* relative tolerance of load control; default 1e-6 */
+  double load_tolerance;           /* relative tolerance of load control, > 0; default 1e-6 */
 } conforma_evaluation_options;
 
 typedef struct conforma_patch_result {
@@ -148,12 +150,12 @@ typedef struct conforma_patch_result {
   double normal_track[3];          /* outward rail normal (unit) */
   double contact_angle_rad;        /* + towards the gauge side (flange contact about +1.1 rad) */
   double rolling_radius_m;
-  double approach_m;               /* approach of the patch along its reference normal */
+  double approach_m;               /* approach of the patch along its reference normal (as PatchReport::approach_m) */
   /* contact state */
-  double area_m2, pmax_Pa, adhesion_area_m2, slip_area_m2, frictional_power_W;
+  double area_m2, pmax_Pa, adhesion_area_m2, slip_area_m2, frictional_power_W;  /* frictional power 0: kp, kpec */
   double creepage_longitudinal, creepage_lateral, creepage_spin_per_m;  /* at the reference point */
   double conformity_index_deg;     /* alpha_c (paper 003 eq. 13); 0 for the Hertz model */
-  int is_conformal;                /* 1 when the KP solver treated the patch as conformal */
+  int is_conformal;                /* 1 when alpha_c > 18 deg (KP and reference models; a flag only) */
 } conforma_patch_result;
 
 typedef struct conforma_wheel_result {
@@ -163,14 +165,14 @@ typedef struct conforma_wheel_result {
   conforma_patch_result patch[CONFORMA_MAX_PATCHES];  /* along the rail, gauge side first */
   double force_track_N[3];         /* sum over the patches */
   double moment_track_Nm[3];       /* about the wheel centre (axle point in the taping-line plane), track frame */
-  double wheel_centre_track_m[3];
+  double wheel_centre_track_m[3];  /* the wheel centre (axle point in the taping-line plane), track frame, m */
   double vertical_position_m;      /* the pose's vertical_m the wheel was solved at (pushed down in load control) */
-  int load_iterations;
+  int load_iterations;             /* root-finder evaluations of load control; 0 in approach mode */
 } conforma_wheel_result;
 
 typedef struct conforma_wheelset_result {
   conforma_wheel_result wheel[2];  /* [CONFORMA_LEFT, CONFORMA_RIGHT] */
-  double roll_rad;                 /* roll used (solved with rigid_equilibrium) */
+  double roll_rad;                 /* roll used: the state's, or solved with rigid_equilibrium */
   char error_message[CONFORMA_ERROR_TEXT];  /* "" on success */
 } conforma_wheelset_result;
 

@@ -32,10 +32,10 @@ constexpr int kDefaultBemXElements = 64;
 struct BemGrid {
   int nx = 0;  // elements along x (rolling)
   int ns = 0;  // elements along s (lateral / rail profile arc length)
-  double dx_m = 0.0;
-  double ds_m = 0.0;
-  double x_first_m = 0.0;
-  double s_first_m = 0.0;
+  double dx_m = 0.0;       // element length along x, m, > 0
+  double ds_m = 0.0;       // element width along s, m, > 0
+  double x_first_m = 0.0;  // x of the first element centre, m
+  double s_first_m = 0.0;  // s of the first element centre, m
   Eigen::MatrixXd gap_m;          // nx x ns undeformed separation along the local normal at element centres
   std::vector<double> alpha_rad;  // ns normal rotations from the reference normal; empty = flat patch
 
@@ -55,55 +55,63 @@ enum class BemInfluence {
   HalfSpace,  // A_nn, Love's rectangle coefficient (§10.2)
   Blanco,     // Blanco-Lorenzo corrected B_nn (§4.2, paper 003 eq. 2), coupling chosen in BemOptions
 };
+// NormalForce: the normal force is given (BemOptions::normal_force_N, measured per force_measure), the approach is
+// solved; Approach: the rigid approach is given (BemOptions::approach_m), the force follows.
 enum class BemLoadControl { NormalForce, Approach };
 enum class BemForceMeasure {
   ReferenceNormal,  // the prescribed force is fn_bar = sum p cos(alpha) dA (equilibrium along the reference normal)
   CurvedSurface,    // the prescribed force is fn_tilde = sum p dA
 };
 enum class BemStatus {
-  Converged,
+  Converged,     // the relative pressure change per iteration fell below the tolerance
   NotConverged,  // max_iterations reached; the fields hold the last iterate
   NoContact,     // zero load, or an approach that does not close the gap anywhere
 };
-const char* to_string(BemStatus status);
-const char* to_string(BemInfluence influence);
+const char* to_string(BemStatus status);          // "converged", "not-converged", "no-contact"
+const char* to_string(BemInfluence influence);    // "half-space", "blanco"
 
+// InputError outside the ranges given.
 struct BemOptions {
-  BemInfluence influence = BemInfluence::HalfSpace;
+  BemInfluence influence = BemInfluence::HalfSpace;  // influence coefficient; default half-space
   ConformalCoupling coupling = ConformalCoupling::CombinedBodies;  // only for BemInfluence::Blanco
-  BemLoadControl control = BemLoadControl::NormalForce;
-  double normal_force_N = 0.0;  // control == NormalForce
+  BemLoadControl control = BemLoadControl::NormalForce;            // default: force given
+  double normal_force_N = 0.0;  // N, >= 0 (0: NoContact), control == NormalForce
+  // control == NormalForce: which force is prescribed (fn_bar by default); ignored for a flat grid
   BemForceMeasure force_measure = BemForceMeasure::ReferenceNormal;
-  double approach_m = 0.0;      // control == Approach
-  double tolerance = 1e-10;     // on the relative change of the pressure per iteration (L1)
-  int max_iterations = 2000;
+  double approach_m = 0.0;      // m, finite, control == Approach (along the reference normal)
+  double tolerance = 1e-10;     // on the relative change of the pressure per iteration (L1), > 0
+  int max_iterations = 2000;    // conjugate-gradient iterations (per solve), >= 1
   bool use_fft = true;          // false: direct O(n^2) summation (same numbers, for checking)
-  // PatchGeometry input only: number of elements along x and the margin on the interpenetration length.
+  // PatchGeometry input only: number of elements along x (>= 2) and the margin on the interpenetration length (> 0:
+  // the x grid covers x_margin times the half-length sqrt((delta - gap) / A) of every interpenetrating strip).
   int x_elements = kDefaultBemXElements;
   double x_margin = 1.1;
 };
 
+// With NoContact no element carries pressure: forces, area, p_max, the contact extents and the centre of pressure
+// are 0 (approach_m and iterations are still those of the solve).
 struct BemResult {
-  BemStatus status = BemStatus::NoContact;
+  BemStatus status = BemStatus::NoContact;  // see BemStatus
   BemGrid grid;                  // the grid that was solved (built from the patch for PatchGeometry input)
   Eigen::MatrixXd pressure_Pa;   // nx x ns, >= 0
   Eigen::MatrixXd deformed_gap_m;  // nx x ns, g = h - delta cos(alpha) + u  (>= 0 up to the tolerance)
-  double approach_m = 0.0;
+  double approach_m = 0.0;                // rigid approach delta along the reference normal, m (given or solved)
   double normal_force_reference_N = 0.0;  // fn_bar = sum p cos(alpha) dA
   double normal_force_surface_N = 0.0;    // fn_tilde = sum p dA
   double contact_area_m2 = 0.0;           // elements with p > 0 times dA (on the curved surface)
-  int contact_elements = 0;
-  double max_pressure_Pa = 0.0;
+  int contact_elements = 0;               // elements with p > 0
+  double max_pressure_Pa = 0.0;           // Pa
   double contact_s_min_m = 0.0, contact_s_max_m = 0.0;  // outer element edges of the contact along s
   double contact_x_min_m = 0.0, contact_x_max_m = 0.0;  // outer element edges of the contact along x
   double contact_width_s_m = 0.0;   // contact_s_max - contact_s_min
   double contact_length_x_m = 0.0;  // contact_x_max - contact_x_min
-  double centre_of_pressure_x_m = 0.0;  // point of action, pressure-weighted (curved surface)
+  // point of action (x, s) in the grid's patch coordinates, m, weighted by p dA (curved surface)
+  double centre_of_pressure_x_m = 0.0;
   double centre_of_pressure_s_m = 0.0;
   double max_complementarity_m = 0.0;  // max over contact of |g| and over the rest of max(-g, 0)
   bool contact_at_grid_edge = false;   // contact reaches the outer row/column: the potential area was too small
-  int iterations = 0;
-  int regrids = 0;                     // PatchGeometry input: x grids tried
+  int iterations = 0;                  // conjugate-gradient iterations, all solves together
+  int regrids = 0;                     // PatchGeometry input: x grids tried (0 for grid input)
 };
 
 // Solve on a given grid. Throws InputError for bad input (grid, material, negative/NaN load or approach).

@@ -19,35 +19,42 @@
 
 namespace conforma {
 
+// One entry per lateral shift (all vectors the same length); delta_r_m and the wheel y are 0 without contact.
 struct RollingRadiusDifferenceCurve {
-  std::vector<double> lateral_m;      // as requested, sorted ascending
-  std::vector<double> delta_r_m;      // r_left - r_right at the smallest-gap contact of each wheel
-  std::vector<double> roll_rad, vertical_m;
-  std::vector<double> left_wheel_y_m, right_wheel_y_m;  // contact points in wheel-profile y
-  std::vector<EquilibriumStatus> status;
+  std::vector<double> lateral_m;      // as requested, sorted ascending, m
+  std::vector<double> delta_r_m;      // r_left - r_right at the smallest-gap contact of each wheel, m
+  std::vector<double> roll_rad, vertical_m;  // solved roll (rad) and vertical position (m) of the wheelset pose
+  std::vector<double> left_wheel_y_m, right_wheel_y_m;  // contact points in wheel-profile y, m
+  std::vector<EquilibriumStatus> status;     // of SolveRigidEquilibrium at each shift
 };
 // Solves the rigid equilibrium at each lateral shift (continuation outwards from the shift nearest 0).
 RollingRadiusDifferenceCurve ComputeRollingRadiusDifference(const WheelsetTrackGeometry& geometry,
                                                             std::vector<double> lateral_m, double yaw_rad = 0.0,
                                                             const EquilibriumOptions& options = {});
 
+// KinematicIntegral: the EN 15302 reference method (wavelength of the Klingel oscillation, above);
+// HarmonicLinearisation: the describing-function alternative (comparison only).
 enum class ConicityMethod { KinematicIntegral, HarmonicLinearisation };
-const char* to_string(ConicityMethod method);
+const char* to_string(ConicityMethod method);  // "kinematic integral", "harmonic linearisation"
 
+// InputError for quadrature_points < 10.
 struct ConicityOptions {
-  ConicityMethod method = ConicityMethod::KinematicIntegral;
-  int quadrature_points = 2000;  // per half of the oscillation
+  ConicityMethod method = ConicityMethod::KinematicIntegral;  // default: the EN 15302 reference method
+  // per half of the oscillation (kinematic integral; harmonic: 4x this over the period), >= 10
+  int quadrature_points = 2000;
 };
 
+// Ok: conicity computed; AmplitudeOutOfRange: the oscillation of this amplitude leaves the Delta r table;
+// NoCentre: Delta r has no sign change from - to + (no centre of the oscillation).
 enum class ConicityStatus { Ok, AmplitudeOutOfRange, NoCentre };
-const char* to_string(ConicityStatus status);
+const char* to_string(ConicityStatus status);  // "ok", "amplitude out of the Delta r range", "no centre (...)"
 
 struct ConicityResult {
-  ConicityStatus status = ConicityStatus::NoCentre;
-  double amplitude_m = 0.0;
-  double equivalent_conicity = 0.0;  // tan(gamma_e)
-  double centre_m = 0.0;             // S minimum (Delta r = 0)
-  double turning_left_m = 0.0, turning_right_m = 0.0;
+  ConicityStatus status = ConicityStatus::NoCentre;  // see ConicityStatus
+  double amplitude_m = 0.0;          // y_hat as requested, m (set unless NoCentre)
+  double equivalent_conicity = 0.0;  // tan(gamma_e), dimensionless, >= 0 (0 inside a plateau of Delta r = 0); Ok only
+  double centre_m = 0.0;             // S minimum (Delta r = 0), m; set unless NoCentre
+  double turning_left_m = 0.0, turning_right_m = 0.0;  // turning points y1 < y2 of the oscillation, m; Ok only
 };
 
 // Delta r given on an ascending lateral grid (linear between the points). Throws InputError for unsorted,

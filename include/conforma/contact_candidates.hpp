@@ -21,43 +21,49 @@
 
 namespace conforma {
 
+// InputError outside the ranges given.
 struct CandidateOptions {
-  double strip_width_m = 0.1e-3;
-  double margin_fraction = 0.25;  // margin on each side, as a fraction of the region width
-  int min_margin_strips = 3;
-  double load_tolerance = 1e-6;   // relative, for the load-given mode
+  double strip_width_m = 0.1e-3;  // strip width ds of the patches, m, > 0 (default 0.1 mm)
+  double margin_fraction = 0.25;  // margin on each side, as a fraction of the region width, >= 0
+  int min_margin_strips = 3;      // ... but at least this many strips (margin = max of the two)
+  // Load-given mode: the bisection of the Hertz push-down dz stops when its bracket is narrower than this times
+  // |dz| (relative; a tolerance on dz, not on the load)
+  double load_tolerance = 1e-6;
   // Load-given mode: the regions are taken at this fraction of the Hertz push-down. 1 = the rigid
   // interpenetration at the Hertz approach (the bare definition); Kik-Piotrowski's virtual penetration
   // epsilon = 0.55 (docs/physics-reference.md §3.1) gives regions the size of the elastic contact area.
-  double penetration_factor = 1.0;
+  double penetration_factor = 1.0;  // > 0 (checked in the load-given mode only)
   // Regions separated by less than this rail arc length are combined into one patch (CONTACT's D_COMB,
   // 4 mm there). 0 keeps every interpenetration region separate.
-  double combine_distance_m = 0.0;
+  double combine_distance_m = 0.0;  // m, >= 0
   // Load-given mode, elastic flange: the wheel's reference (touching) position ignores gap minima steeper than
   // this (WheelsetTrackGeometry::MinimumVerticalGap), so a flange pressed against the rail interpenetrates
   // and the load control finds the vertical position with the flange force included. Default: all count.
-  double max_touching_contact_angle_rad = 1e300;
+  double max_touching_contact_angle_rad = 1e300;  // rad
 };
 
+// Ok: at least one candidate; NoContact: the wheel faces the rail but does not interpenetrate it (or no region
+// yields a patch); NoOverlap: the wheel silhouette does not face the rail head.
 enum class CandidateStatus { Ok, NoContact /* no interpenetration */, NoOverlap /* wheel not over the rail */ };
-const char* to_string(CandidateStatus status);
+const char* to_string(CandidateStatus status);  // "ok", "no contact", "no overlap"
 
 struct ContactCandidate {
-  PatchGeometry patch;
+  PatchGeometry patch;          // the region's strips (at least 2), reference point at the region's centre
   RigidContactPoint reference;  // quantities at the reference point (rolling radius, wheel point, Hertz A, B)
-  double region_start_s_m = 0.0, region_end_s_m = 0.0;  // interpenetration region on the rail (arc length)
-  double normal_force_estimate_N = 0.0;                 // Hertz estimate (load-given mode only)
+  double region_start_s_m = 0.0, region_end_s_m = 0.0;  // interpenetration region on the rail (arc length), m
+  // Sum of the Hertz estimates (N) of the rigid contact points inside the region (load-given mode only; 0 otherwise)
+  double normal_force_estimate_N = 0.0;
 };
 
 struct CandidateResult {
-  CandidateStatus status = CandidateStatus::NoOverlap;
+  CandidateStatus status = CandidateStatus::NoOverlap;  // see CandidateStatus
   WheelsetPose pose;                         // the pose the regions were taken at
-  std::vector<ContactCandidate> candidates;  // ordered along the rail (gauge side first)
+  std::vector<ContactCandidate> candidates;  // ordered along the rail (gauge side first); empty unless Ok
   // Load-given mode only (has_touching): the wheel at first touch, where the Hertz push-down starts, and its
   // rigid contact points there.
   bool has_touching = false;
-  WheelsetPose touching_pose;
-  WheelContactResult touching_contact;
+  WheelsetPose touching_pose;                // (has_touching only)
+  WheelContactResult touching_contact;       // (has_touching only)
 };
 
 // Regions at the given pose (interpenetration of the rigid profiles).

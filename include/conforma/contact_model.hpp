@@ -4,6 +4,13 @@
 
 namespace conforma {
 
+// docs/architecture.md "Models to compare":
+//   Hertz: Hertz ellipse per rigid gap minimum + FASTSIM (three flexibilities)
+//   Kp: planar Kik-Piotrowski, eps = 0.55, half-space + FASTSIM on the KP patch with SDEC flexibilities
+//   Kpec: KP with CONTACT's variable eps + the same FASTSIM as Kp
+//   Conformal: extended KP in (x^r, s^r), Blanco-Lorenzo coefficients + curved-patch FASTSIM
+//   Reference: BEM on the curved surface (slow, normal problem only)
+//   Auto: per patch the cheapest adequate one of Hertz, Kpec, Conformal (model_selection.hpp)
 enum class ContactModel { Hertz, Kp, Kpec, Conformal, Reference, Auto };
 constexpr int kContactModelCount = 6;
 const char* to_string(ContactModel model);

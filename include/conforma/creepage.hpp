@@ -18,16 +18,18 @@
 
 namespace conforma {
 
+// Wheelset velocities in the track frame (geometry.hpp).
 struct WheelsetVelocity {
-  double forward_speed_m_s = 0.0;             // V along +x
-  double lateral_velocity_m_s = 0.0;          // dy/dt (+ towards the left rail)
-  double yaw_rate_rad_s = 0.0;                // d(psi)/dt
-  double axle_angular_velocity_rad_s = 0.0;   // about the axle, + when rolling forwards (V / r0 for pure rolling)
+  double forward_speed_m_s = 0.0;             // V along +x, m/s; > 0 for creepages (InputError otherwise)
+  double lateral_velocity_m_s = 0.0;          // dy/dt (+ towards the left rail), m/s
+  double yaw_rate_rad_s = 0.0;                // d(psi)/dt, rad/s
+  double axle_angular_velocity_rad_s = 0.0;   // about the axle, rad/s, + rolling forwards (V / r0 for pure rolling)
 };
 
+// Rigid creepages at a contact point in the contact frame of the side (convention above).
 struct Creepages {
-  double longitudinal = 0.0;  // xi
-  double lateral = 0.0;       // eta
+  double longitudinal = 0.0;  // xi, dimensionless
+  double lateral = 0.0;       // eta, dimensionless (+ towards the field side)
   double spin_per_m = 0.0;    // phi [1/m]
 };
 
@@ -35,9 +37,9 @@ struct Creepages {
 // wheel mirrored): velocity of the wheelset centre v = (V, sigma dy/dt, 0) and angular velocity
 // omega = sigma yaw_rate z + axle_rate * axle. The velocity of a wheel point P is v + omega x (P - centre).
 struct SideFrameMotion {
-  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();
-  Eigen::Vector3d angular_velocity_rad_per_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();                    // wheelset centre, side frame, m
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();            // v of the centre, m/s
+  Eigen::Vector3d angular_velocity_rad_per_s = Eigen::Vector3d::Zero();  // omega, rad/s
 };
 SideFrameMotion WheelsetMotionInSideFrame(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
                                           const WheelsetVelocity& velocity);

@@ -42,52 +42,58 @@
 
 namespace conforma {
 
+// InputError outside the ranges given.
 struct CurvedFastsimOptions {
-  int elements_per_strip = kDefaultFastsimElements;         // n_x
+  int elements_per_strip = kDefaultFastsimElements;         // n_x, elements along x^r on every strip in contact, >= 1
   FastsimMarching marching = FastsimMarching::CentreExact;   // see fastsim.hpp
-  double slope_reduction = 1.0;                              // k of paper 002 eq. 9 (L -> L / k)
+  double slope_reduction = 1.0;                              // k of paper 002 eq. 9 (L -> L / k), > 0; 1: none
   bool blend_flexibilities = false;  // CONTACT blending (fastsim.hpp) with the SDEC a, b and the creepages of the
-                                     // strip at the longest-strip line
-  double load_N = 0.0;  // > 0: rescale the bound so sum p_n dA = load_N (e.g. KpResult::fn_surface_N); 0: as given
-  double spin_origin_x_m = 0.0;  // origin of the spin lever arms (x^r, s^r) in patch coordinates
-  double spin_origin_s_m = 0.0;
+                                     // strip at the longest-strip line; only with uniform flexibilities
+  // N, >= 0. > 0: rescale the bound so sum p_n dA = load_N (e.g. KpResult::fn_surface_N); 0 (default): as given
+  double load_N = 0.0;
+  double spin_origin_x_m = 0.0;  // origin of the spin lever arms (x^r, s^r) in patch coordinates, m; default (0, 0)
+  double spin_origin_s_m = 0.0;  // (the patch reference point)
 };
 
 struct CurvedFastsimInput {
   // One entry for all strips, or one per KP strip: creepages at the spin origin in the strip's local frame
-  // (local_creepage.hpp: StripCreepagesFromKinematics / StripCreepagesFromReference).
+  // (local_creepage.hpp: StripCreepagesFromKinematics / StripCreepagesFromReference). Size 1 or the KP strip count.
   std::vector<FastsimCreepages> strip_creepages;
   // Empty: SDEC flexibilities for every strip; one entry: uniform; else one per strip (before the slope reduction).
   std::vector<FastsimFlexibilities> strip_flexibilities;
-  FrictionLaw friction = FrictionLaw::Constant(0.3);
-  Material material;
-  double rolling_speed_m_per_s = 0.0;  // > 0 for the frictional power
+  FrictionLaw friction = FrictionLaw::Constant(0.3);  // mu or a slip-velocity law (friction_law.hpp); default 0.3
+  Material material;                                  // G, nu of the SDEC coefficients and flexibilities
+  double rolling_speed_m_per_s = 0.0;  // V, m/s, >= 0; > 0 for the frictional power (and a slip-dependent law)
 };
 
+// The tangential solution on a KP patch. Filled whenever the strips carry a load and the SDEC exists; otherwise
+// status NoContact, an empty field and every sum 0 (sdec and bound_load_N are still set).
 struct CurvedFastsimResult {
-  FastsimStatus status = FastsimStatus::NoContact;
+  FastsimStatus status = FastsimStatus::NoContact;  // that of the field (Ok: some adhesion, FullSlip: none)
   // Per element (strip-major, strip j's elements from first_element[j]): centre x - x_o and s - s_o, curved area,
   // traction (px along x^r, py along t_j) on the wheel, slip, in_slip. fx_N, fy_N, mz_Nm in it are the
   // curvilinear sums (below).
   FastsimResult field;
-  std::vector<int> strip_first_element;
+  std::vector<int> strip_first_element;  // per KP strip: index of its first element in field (strips not in contact
+                                         // have no elements: the next strip's index)
   SdecResult sdec;  // the reduction of the patch (flexibilities used unless strip_flexibilities given)
-  FastsimFlexibilities flexibilities;  // the uniform flexibilities used (after k and blending), if uniform
-  // Curvilinear sums: sum p_x dA, sum p_s dA (local tangents), sum ((x - x_o) p_s - (s - s_o) p_x) dA.
+  FastsimFlexibilities flexibilities;  // the uniform flexibilities used (after k and blending), m/Pa, if uniform
+  // Curvilinear sums: sum p_x dA, sum p_s dA (local tangents), sum ((x - x_o) p_s - (s - s_o) p_x) dA; N, N, N m.
   double fx_N = 0.0, fs_N = 0.0, mz_Nm = 0.0;
   // Tangential traction resultant in the patch reference frame (x, t0, n0) and its moment about the reference point
-  // (strip positions KpStrip::position_m, x from the patch origin).
+  // (strip positions KpStrip::position_m, x from the patch origin); N and N m.
   Eigen::Vector3d force_reference_N = Eigen::Vector3d::Zero();
   Eigen::Vector3d moment_reference_Nm = Eigen::Vector3d::Zero();
+  // m^2, m^2, W: as in FastsimResult (summed over the strips); frictional_power_W 0 when the rolling speed is 0
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
-  double bound_load_N = 0.0;  // sum p_n dA of the traction bound on the curved surface
+  double bound_load_N = 0.0;  // sum p_n dA of the traction bound on the curved surface, N (= load_N when rescaled)
 };
 
-// Reusable buffers (no allocation in loops over patches of the same size).
+// Reusable buffers (no allocation in loops over patches of the same size). Contents are internal scratch.
 struct CurvedFastsimWorkspace {
-  FastsimPatch patch;
-  std::vector<FastsimStrip> strips;
-  std::vector<double> shape_means;
+  FastsimPatch patch;                // the strip patch passed to the FASTSIM core
+  std::vector<FastsimStrip> strips;  // one per KP strip
+  std::vector<double> shape_means;   // element means of the normalised semi-ellipse
 };
 
 // Throws InputError for a bad KP result (NaN, negative sizes), creepage/flexibility vectors of the wrong size,
@@ -98,7 +104,8 @@ CurvedFastsimResult SolveCurvedFastsim(const KpResult& normal, const CurvedFasts
                                        const CurvedFastsimOptions& options);
 
 // `kp` / `kpec` models: FASTSIM with the SDEC flexibilities over the real (planar) KP patch, KP pressure as bound,
-// uniform creepages (the patch normals are taken as they are: alpha = 0 for planar KP).
+// uniform creepages (the patch normals are taken as they are: alpha = 0 for planar KP). No rolling speed is passed:
+// the result's frictional_power_W is 0.
 CurvedFastsimResult SolveFastsimOnKpPatch(const KpResult& normal, const FastsimCreepages& creepages,
                                           const FrictionLaw& friction, const Material& material,
                                           const CurvedFastsimOptions& options);

@@ -28,9 +28,9 @@ constexpr int kDefaultFastsimElements = 30;
 
 // Flexibilities [m/Pa] of the simplified theory.
 struct FastsimFlexibilities {
-  double L1 = 0.0;  // longitudinal creepage
-  double L2 = 0.0;  // lateral creepage
-  double L3 = 0.0;  // spin
+  double L1 = 0.0;  // longitudinal creepage, m/Pa, > 0
+  double L2 = 0.0;  // lateral creepage, m/Pa, > 0
+  double L3 = 0.0;  // spin, m/Pa, > 0
 };
 // §2.3 exact forms (CONTACT simpflex): L1 = 8a/(3 C11 G), L2 = 8a/(3 C22 G), L3 = pi a sqrt(a/b)/(4 C23 G).
 // With them FASTSIM reproduces Kalker's linear theory as creepage -> 0.
@@ -60,12 +60,12 @@ FastsimFlexibilities BlendedFlexibilities(const FastsimFlexibilities& three, dou
 // One strip of a general patch: elements are numbered from the leading edge (i = 0) to the trailing edge,
 // element i spans [x_lead - (i+1) dx, x_lead - i dx] with dx = (x_lead - x_trail) / n_elements.
 struct FastsimStrip {
-  double y_m = 0.0;       // lateral position of the strip centre line
-  double width_m = 0.0;   // dy
-  double x_lead_m = 0.0;  // leading edge (larger x)
-  double x_trail_m = 0.0; // trailing edge
+  double y_m = 0.0;       // lateral position of the strip centre line, m
+  double width_m = 0.0;   // dy, m, >= 0
+  double x_lead_m = 0.0;  // leading edge (larger x), m
+  double x_trail_m = 0.0; // trailing edge, m, <= x_lead_m
   int first_element = 0;  // index of element 0 of this strip in the element arrays
-  int n_elements = 0;
+  int n_elements = 0;     // elements of the strip, >= 0 (0: the strip is skipped)
 };
 
 struct FastsimPatch {
@@ -95,27 +95,32 @@ enum class FastsimMarching {
 struct FastsimOptions {
   TractionBound bound = TractionBound::Elliptic;  // used by SolveFastsimHertz (the core takes p_n as given)
   bool blend_flexibilities = false;               // SolveFastsimHertz: apply BlendedFlexibilities (CONTACT)
+  // Marching scheme along a strip; read by the strip core, so by every FASTSIM of the project (Hertz, SDEC on the
+  // KP patch, curved-patch). Default CentreExact.
   FastsimMarching marching = FastsimMarching::CentreExact;
 };
 
 enum class FastsimStatus {
-  Ok,
+  Ok,         // at least one element in adhesion
   FullSlip,   // no element in adhesion (a normal outcome at large creepage)
   NoContact,  // no elements or zero load
 };
-const char* to_string(FastsimStatus status);
+const char* to_string(FastsimStatus status);  // "ok", "full_slip", "no_contact"
 
+// The tangential solution on a strip patch (docs/physics-reference.md §2.4). Every field is filled when the status
+// is Ok or FullSlip; with NoContact the per-element vectors are empty (or sized to a patch of 0 elements) and every
+// total is 0.
 struct FastsimResult {
-  FastsimStatus status = FastsimStatus::NoContact;
+  FastsimStatus status = FastsimStatus::NoContact;  // see FastsimStatus
   // Per element, in the element order of the patch.
-  std::vector<double> x_m, y_m, area_m2;          // element centre and area
-  std::vector<double> px_Pa, py_Pa;               // tangential traction on body 1
-  std::vector<double> sx, sy;                     // dimensionless slip (0 in adhesion)
+  std::vector<double> x_m, y_m, area_m2;          // element centre (m, patch frame) and area (m^2)
+  std::vector<double> px_Pa, py_Pa;               // tangential traction on body 1, Pa; |p| <= mu p_n
+  std::vector<double> sx, sy;                     // dimensionless slip (slip velocity / V; 0 in adhesion)
   std::vector<unsigned char> in_slip;             // 1 = slip element, 0 = adhesion
-  double fx_N = 0.0, fy_N = 0.0;                  // total tangential force on body 1
-  double mz_Nm = 0.0;                             // spin moment sum (x p_y - y p_x) dA about the patch origin
-  double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0;
-  double frictional_power_W = 0.0;                // sum |p . s| V dA; 0 unless a rolling speed is given
+  double fx_N = 0.0, fy_N = 0.0;                  // total tangential force on body 1, N
+  double mz_Nm = 0.0;                             // spin moment sum (x p_y - y p_x) dA about the patch origin, N m
+  double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0;  // summed areas of the adhesion / slip elements, m^2
+  double frictional_power_W = 0.0;                // sum |p . s| V dA, W; 0 unless a rolling speed is given
 };
 
 // Strip core. Reuses the capacity of *result (no allocation when it already holds enough elements).
@@ -124,16 +129,17 @@ void SolveFastsimStrips(const FastsimPatch& patch, const FastsimFlexibilities& f
                         const FastsimCreepages& creepages, double friction_coefficient,
                         double rolling_speed_m_per_s, const FastsimOptions& options, FastsimResult* result);
 
+// The Hertz ellipse and its load as SolveFastsimHertz takes them; InputError for a value out of the ranges given.
 struct FastsimHertzInput {
-  double a_m = 0.0;  // semi-axis along x (rolling)
-  double b_m = 0.0;  // semi-axis along y
-  double normal_force_N = 0.0;
-  FastsimCreepages creepages;
-  double friction_coefficient = 0.3;
-  Material material;
-  int nx = kDefaultFastsimElements;  // elements per strip
-  int ny = kDefaultFastsimElements;  // strips
-  double rolling_speed_m_per_s = 0.0;  // > 0 to get the frictional power
+  double a_m = 0.0;  // semi-axis along x (rolling), m, > 0
+  double b_m = 0.0;  // semi-axis along y, m, > 0
+  double normal_force_N = 0.0;  // normal load N, N, >= 0 (0: NoContact)
+  FastsimCreepages creepages;   // xi, eta (-), phi (1/m), finite
+  double friction_coefficient = 0.3;  // mu (-), >= 0, the same at every element
+  Material material;                  // G and nu give C_ij and the flexibilities L_i
+  int nx = kDefaultFastsimElements;  // elements per strip, >= 1
+  int ny = kDefaultFastsimElements;  // strips, >= 1
+  double rolling_speed_m_per_s = 0.0;  // V, m/s, >= 0; > 0 to get the frictional power
 };
 
 // Hertz patch convenience entry. The traction bound per element is the exact mean of the chosen pressure law

@@ -17,16 +17,19 @@
 
 namespace conforma {
 
+// The laws above: Constant, F1aExponential (eq. 6), F1bPiecewise (eq. 7), F2 (eq. 8).
 enum class FrictionLawKind { Constant, F1aExponential, F1bPiecewise, F2 };
-const char* to_string(FrictionLawKind kind);
+const char* to_string(FrictionLawKind kind);  // "constant", "f1a", "f1b", "f2"
 
 struct FrictionLaw {
-  FrictionLawKind kind = FrictionLawKind::Constant;
+  FrictionLawKind kind = FrictionLawKind::Constant;  // default: constant mu = 0.3
   // Parameters, in the order of the paper's equations:
   //   Constant: {mu}
   //   F1aExponential: {mu_o, alpha, beta}
   //   F1bPiecewise: {mu_s, mu_d, gamma_c}
   //   F2: {mu_s, alpha, mu_d, beta}
+  // mu values dimensionless, rates alpha / beta per unit gamma (dimensionless), gamma_c dimensionless; unused
+  // entries are ignored.
   std::array<double, 4> parameters{0.3, 0.0, 0.0, 0.0};
 
   static FrictionLaw Constant(double mu);

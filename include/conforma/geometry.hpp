@@ -43,42 +43,48 @@
 
 namespace conforma {
 
+// Left: the wheel/rail on the +y side of the track (side sign +1, index 0); Right: on the -y side (-1, index 1).
 enum class Side { Left = 0, Right = 1 };
 inline double side_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 inline int side_index(Side side) { return static_cast<int>(side); }
-const char* to_string(Side side);
+const char* to_string(Side side);  // "left", "right"
 
+// The wheelset and track (see WHEEL / RAIL PLACEMENT above); validate() checks the ranges given.
 struct TrackSetup {
-  double gauge_m = 1.435;                    // measured gauge_height_m below the top of the rails
-  double gauge_height_m = 0.014;
-  double flange_back_distance_m = 1.360;
-  double flange_back_position_m = -0.070;    // wheel-profile y of the flange back
-  std::array<double, 2> nominal_radius_m{0.46, 0.46};  // [Left, Right]
-  double rail_inclination_rad = 0.0;         // applied to both (uninclined) rail profiles
-  std::array<Profile, 2> wheel;              // [Left, Right], each in the right-side convention
-  std::array<Profile, 2> rail;               // [Left, Right], each in the right-side convention
+  double gauge_m = 1.435;                    // m, > 0, measured gauge_height_m below the top of the rails
+  double gauge_height_m = 0.014;             // m, >= 0: depth below the rail top at which the gauge is measured
+  double flange_back_distance_m = 1.360;     // m, > 0: distance between the two wheels' flange backs
+  double flange_back_position_m = -0.070;    // wheel-profile y of the flange back, m (S1002: -70 mm)
+  std::array<double, 2> nominal_radius_m{0.46, 0.46};  // [Left, Right], m, > 0: taping-line radius r0
+  // rad, |.| <= 0.2: applied to both (uninclined) rail profiles (0 for profiles already canted); 1:40 = 0.025
+  double rail_inclination_rad = 0.0;
+  std::array<Profile, 2> wheel;              // [Left, Right], each in the right-side convention; wheel profiles
+  std::array<Profile, 2> rail;               // [Left, Right], each in the right-side convention; rail profiles
   void validate() const;                     // throws InputError naming the parameter
 };
 // Same wheel and rail profile on both sides.
 TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double rail_inclination_rad = 0.0);
 
+// Wheelset pose in the track frame (see FRAMES above).
 struct WheelsetPose {
-  double lateral_m = 0.0;
-  double vertical_m = 0.0;
-  double roll_rad = 0.0;
-  double yaw_rad = 0.0;
+  double lateral_m = 0.0;   // lateral shift y, m, + towards the left rail
+  double vertical_m = 0.0;  // axle centre height above (rail-top level + mean nominal radius), m
+  double roll_rad = 0.0;    // roll about +x, rad, + raises the left wheel
+  double yaw_rad = 0.0;     // yaw about +z, rad, + turns the heading towards the left rail
 };
 
+// Resolution of the rigid contact search; InputError (WheelsetTrackGeometry constructor) outside the ranges given.
 struct GeometryOptions {
-  double table_spacing_m = 0.1e-3;   // uniform y tables of wheel and rail (cubic Hermite between nodes)
-  double scan_spacing_m = 0.5e-3;    // coarse silhouette scan along the wheel profile (multiple of the above)
-  double max_slope = 12.0;           // |dz/dy| beyond which profile parts are left out (85 deg)
-  double candidate_window_m = 2e-3;  // local minima up to this much above the smallest gap are reported
-  double contact_tolerance_m = 1e-6; // minima within this of the smallest gap count as contact points
+  double table_spacing_m = 0.1e-3;   // m, > 0: uniform y tables of wheel and rail (cubic Hermite between nodes)
+  double scan_spacing_m = 0.5e-3;    // m, > 0: coarse silhouette scan along the wheel profile (multiple of the above)
+  double max_slope = 12.0;           // |dz/dy| beyond which profile parts are left out (85 deg), > 0
+  double candidate_window_m = 2e-3;  // m, >= 0: local minima up to this much above the smallest gap are reported
+  double contact_tolerance_m = 1e-6; // m, >= 0: minima within this of the smallest gap count as contact points
 };
 
+// Ok: at least one rigid contact point (gap minimum) found; NoOverlap: the silhouette does not face the rail head.
 enum class ContactStatus { Ok, NoOverlap /* silhouette does not face the rail head */ };
-const char* to_string(ContactStatus status);
+const char* to_string(ContactStatus status);  // "ok", "no overlap"
 
 struct RigidContactPoint {
   double gap_m = 0.0;               // rigid gap along the rail normal (< 0: interpenetration)
@@ -98,19 +104,21 @@ struct RigidContactPoint {
   double hertz_B_per_m = 0.0;       // (kappa_wheel + kappa_rail) / 2
 };
 
+// The rigid contact of one wheel at a pose (RigidContact).
 struct WheelContactResult {
-  ContactStatus status = ContactStatus::NoOverlap;
+  ContactStatus status = ContactStatus::NoOverlap;  // see ContactStatus
   std::vector<RigidContactPoint> points;  // local gap minima within candidate_window_m, smallest gap first
-  int contact_count = 0;                  // points within contact_tolerance_m of the smallest gap
+  int contact_count = 0;                  // points within contact_tolerance_m of the smallest gap (>= 1 when Ok)
 };
 
 struct WheelsetContactResult {
   std::array<WheelContactResult, 2> wheel;  // [Left, Right]
 };
 
+// InputError for tolerance_m <= 0.
 struct EquilibriumOptions {
-  double tolerance_m = 1e-10;
-  int max_iterations = 60;
+  double tolerance_m = 1e-10;  // m, > 0: the right wheel's smallest vertical gap must be below this at convergence
+  int max_iterations = 60;     // root-finder evaluations of the roll (bracket expansion and Illinois steps together)
   // false: the roll stays at guess.roll_rad and each wheel is lowered onto its own rail independently
   // (both touch, each at its own vertical position; the reported pose has the left wheel touching). Used
   // for the EN 15302 benchmark Delta r (tests/test_conicity_en15302.cpp). true: the rigid wheelset rolls
@@ -120,15 +128,19 @@ struct EquilibriumOptions {
   // steeper flange contact may interpenetrate. Default: every contact point counts (rigid flange).
   double max_touching_contact_angle_rad = 1e300;
 };
+// Converged: both wheels touch within tolerance_m; NotConverged: no roll bracket or tolerance not met in
+// max_iterations (the last iterate is returned); NoContact: a wheel does not face its rail (no gap minimum).
 enum class EquilibriumStatus { Converged, NotConverged, NoContact };
-const char* to_string(EquilibriumStatus status);
+const char* to_string(EquilibriumStatus status);  // "converged", "not converged", "no contact"
 
 struct EquilibriumResult {
-  EquilibriumStatus status = EquilibriumStatus::NoContact;
-  WheelsetPose pose;                   // lateral and yaw as given; vertical and roll solved
-  WheelsetContactResult contact;       // at the solved pose
-  double rolling_radius_difference_m = 0.0;  // r_left - r_right at the smallest-gap contact points
-  int iterations = 0;
+  EquilibriumStatus status = EquilibriumStatus::NoContact;  // see EquilibriumStatus
+  // lateral and yaw as given; vertical and roll solved (include_roll false: roll as guessed, left wheel touching)
+  WheelsetPose pose;
+  WheelsetContactResult contact;       // at the solved pose (include_roll false: each wheel lowered onto its rail)
+  // r_left - r_right at the smallest-gap contact points, m; 0 unless both wheels have a contact point
+  double rolling_radius_difference_m = 0.0;
+  int iterations = 0;                  // root-finder evaluations of the roll; 0 with include_roll false
 };
 
 // Everything that depends only on the track set-up (mounted rails, uniform tables) is prepared once; the

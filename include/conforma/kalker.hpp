@@ -24,10 +24,10 @@
 namespace conforma {
 
 struct CreepCoefficients {
-  double c11 = 0.0;
-  double c22 = 0.0;
-  double c23 = 0.0;
-  double c33 = 0.0;
+  double c11 = 0.0;  // C11, longitudinal (dimensionless, > 0)
+  double c22 = 0.0;  // C22, lateral (dimensionless, > 0)
+  double c23 = 0.0;  // C23 = -C32, lateral-spin coupling (dimensionless, > 0)
+  double c33 = 0.0;  // C33, spin moment (dimensionless); 0 when !c33_available, unverified otherwise
   bool c33_verified = false;   // always false: the C33 values are recalled, not checked against the source
   bool c33_available = false;  // false for a > b (no value recalled)
 };

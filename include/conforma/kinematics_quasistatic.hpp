@@ -50,9 +50,8 @@
 //   max_residual.
 //
 // TANGENT TRACK (c = 0): the equilibrium is solved as above, from tangent_start_offset_m (centred by symmetry for
-// symmetric profiles). The
-// samples are then the centred wheelset moving on a kinematic (Klingel) oscillation of amplitude
-// tangent_amplitude_m: y = A sin(theta), psi = A k cos(theta), dy/dt = V psi, dpsi/dt = -V A k^2 sin(theta),
+// symmetric profiles). The samples are then the centred wheelset moving on a kinematic (Klingel) oscillation of
+// amplitude tangent_amplitude_m: y = A sin(theta), psi = A k cos(theta), dy/dt = V psi, dpsi/dt = -V A k^2 sin(theta),
 // k = 2 pi / L_K, L_K = 2 pi sqrt(r0 b0 / lambda) with the equivalent conicity lambda = -Delta r(-A) / (2 A) of
 // the rigid equilibrium, at tangent_phases equally spaced phases theta (theta = 0 is the centred wheelset) with
 // equal weights 1 / tangent_phases (the time average over one period). A = 0 gives the single centred sample.
@@ -68,89 +67,96 @@
 
 namespace conforma {
 
+// validate() throws InputError outside the ranges given.
 struct QuasiStaticOptions {
   // Model, material, FASTSIM settings. vertical_load_N and friction_coefficient are set per wheel and class.
   WheelContactOptions contact;
-  double gravity_m_s2 = 9.81;
-  double cant_base_m = 1.5;              // a_nc = V^2 / R - g h / cant_base (distance of the rail centres)
+  double gravity_m_s2 = 9.81;            // g, m/s^2, > 0
+  double cant_base_m = 1.5;              // m, > 0: a_nc = V^2 / R - g h / cant_base (distance of the rail centres)
   bool free_axle_rotation = true;        // false: Omega = V / r0 and no axle torque equation
   // Tangent track samples (see the header comment).
-  double tangent_amplitude_m = 3e-3;
-  int tangent_phases = 8;
+  double tangent_amplitude_m = 3e-3;     // A, m, >= 0 (0: one centred sample per wheelset)
+  int tangent_phases = 8;                // phases theta per wheelset, >= 1
   // Lateral shift of all wheelsets and frames at the start of the tangent-track solve. 0: centred start (the
   // exact solution for symmetric profiles; an off-centre start can stall on a contact jump, e.g. S1002/60E1
   // 1:40 with Hertz at |y| = 0.22 mm). The tests start 1 mm off centre to show the centre is found, not assumed.
-  double tangent_start_offset_m = 0.0;
+  double tangent_start_offset_m = 0.0;     // m, finite
   // Solver.
-  int max_iterations = 60;                 // LM iterations per attempt
-  double residual_tolerance = 1e-5;        // max |scaled residual| accepted as converged
-  int continuation_steps = 4;              // steps in c when the direct solve fails (0: none)
+  int max_iterations = 60;                 // LM iterations per attempt, >= 1
+  double residual_tolerance = 1e-5;        // max |scaled residual| accepted as converged, > 0 (dimensionless)
+  int continuation_steps = 4;              // steps in c when the direct solve fails (0: none), >= 0
   // When both fail: starts with the leading wheelset at the outer flange and the trailing one at the inner
   // flange, centred, or at the outer flange (the best attempt is kept).
   bool multi_start = true;
   // A solution with a wheelset more than this beyond its flange-contact shift (the flange of that side becomes
   // the smallest rigid gap) has climbed the flange: it is never Converged, and any admissible attempt beats it.
-  double derailment_margin_m = 3e-3;
+  double derailment_margin_m = 3e-3;       // m, >= 0
   // ... and so is a flange-contact state whose wheelset lateral contact force falls as the wheelset moves on
   // towards the flange faster than this (in Q0 per mm): the wheel is riding up its flange, an unstable
   // equilibrium (the rising flange force of a stable one grows by ~10-50 Q0 per mm).
-  double climbing_slope = 0.05;
-  double flange_contact_angle_rad = 0.5;   // a patch steeper than this is a flange contact
-  // Forward-difference steps of the scaled unknowns (mm, mrad, 1e-3 relative axle speed).
+  double climbing_slope = 0.05;            // Q0 per mm, >= 0
+  double flange_contact_angle_rad = 0.5;   // rad, > 0: a patch steeper than this is a flange contact
+  // Forward-difference steps of the scaled unknowns (mm, mrad, 1e-3 relative axle speed), > 0.
   double difference_step = 1e-3;
   void validate() const;  // throws InputError naming the option
 };
 
+// Converged: max |scaled residual| <= residual_tolerance at an admissible state; NotConverged: the best attempt
+// misses it (or is inadmissible); NoContact: a wheel without contact at every attempt (non-finite residual), or a
+// wheel unloaded by the load transfer (overturning).
 enum class QuasiStaticStatus { Converged, NotConverged, NoContact };
-const char* to_string(QuasiStaticStatus status);
+const char* to_string(QuasiStaticStatus status);  // "converged", "not_converged", "no_contact"
 
+// One wheel at the bogie's solution (SolveWheelContact re-evaluated there).
 struct WheelQuasiStaticReport {
-  WheelContactStatus status = WheelContactStatus::NoContact;
-  int patch_count = 0;
+  WheelContactStatus status = WheelContactStatus::NoContact;  // of the wheel's contact solve
+  int patch_count = 0;                // contact patches of the wheel
   bool flange_contact = false;        // any patch with contact angle > flange_contact_angle_rad
-  double vertical_load_N = 0.0;       // Q
-  double lateral_force_N = 0.0;       // Y in the track frame (+ towards the left rail), on the wheel
-  double longitudinal_force_N = 0.0;  // sum of F_x on the wheel
+  double vertical_load_N = 0.0;       // Q, N: Q0 -/+ the load transfer (vehicle.hpp)
+  double lateral_force_N = 0.0;       // Y in the track frame (+ towards the left rail), on the wheel, N
+  double longitudinal_force_N = 0.0;  // sum of F_x on the wheel, N (patch contact frames)
   // Y/Q with Y positive when the rail pushes the wheel towards the track centre (flange climbing quotient).
   double y_over_q = 0.0;
-  double max_contact_angle_rad = 0.0;
+  double max_contact_angle_rad = 0.0;  // largest contact angle over the patches, rad (0 without patches)
 };
 
 struct WheelsetQuasiStaticReport {
-  int wheelset = 0, bogie = 0;
+  int wheelset = 0, bogie = 0;        // indices within the vehicle (0 = leading); wheelset = 2 bogie + 0 / 1
   WheelsetPose pose;                  // y, psi solved; vertical, roll of the rigid equilibrium
-  WheelsetVelocity velocity;
+  WheelsetVelocity velocity;          // V, lateral 0, yaw rate V c, solved axle angular velocity
   WheelQuasiStaticReport wheel[2];    // [Left, Right]
-  double primary_lateral_force_N = 0.0;  // on the wheelset
-  double primary_yaw_moment_Nm = 0.0;    // on the wheelset
+  double primary_lateral_force_N = 0.0;  // on the wheelset, N: -2 k_y Delta y_j (track frame, + towards left)
+  double primary_yaw_moment_Nm = 0.0;    // on the wheelset, N m: -2 k_x b_x^2 Delta psi_j
 };
 
+// One bogie; bogies with the same carbody yaw share one solve (the counters are those of that solve).
 struct BogieQuasiStaticReport {
-  int bogie = 0;
-  QuasiStaticStatus status = QuasiStaticStatus::NotConverged;
-  double lateral_m = 0.0, yaw_rad = 0.0;  // frame, local track frame at the bogie centre
-  double carbody_yaw_rad = 0.0;           // psi_c used for the secondary yaw moment
+  int bogie = 0;                          // index from the front (0 = leading)
+  QuasiStaticStatus status = QuasiStaticStatus::NotConverged;  // of this bogie's solve, see QuasiStaticStatus
+  double lateral_m = 0.0, yaw_rad = 0.0;  // frame, local track frame at the bogie centre; m, rad
+  double carbody_yaw_rad = 0.0;           // psi_c used for the secondary yaw moment, rad
   // Lateral deflection of the secondary stage, m_c a_nc / k_s,y (the carbody share's lateral force goes
   // through it whatever its stiffness; 0 when the stiffness is 0).
   double secondary_lateral_deflection_m = 0.0;
   int iterations = 0;                     // LM iterations (all attempts)
   int contact_evaluations = 0;            // SolveWheelContact calls
-  double max_residual = 0.0;              // max |scaled residual| at the solution
+  double max_residual = 0.0;              // max |scaled residual| at the solution (dimensionless; inf: no contact)
   // The 8 scaled residuals at the solution: per wheelset j = 0, 1 lateral force / Q0, yaw moment / (Q0 b0),
   // axle torque / (Q0 r0); then the frame's lateral force / Q0 and yaw moment / (Q0 b0).
   std::array<double, 8> residuals{};
-  bool continuation_used = false;
+  bool continuation_used = false;         // the continuation in c = 1/R was tried (the direct solve failed)
   int extra_starts = 0;                   // multi-start attempts made
   bool derailed = false;                  // the kept attempt has a wheelset beyond derailment_margin_m
 };
 
+// When a wheel is unloaded by the load transfer (status NoContact) only unbalanced_acceleration_m_s2 is filled.
 struct QuasiStaticResult {
   QuasiStaticStatus status = QuasiStaticStatus::NotConverged;  // worst over the bogies
-  double unbalanced_acceleration_m_s2 = 0.0;                   // a_nc
+  double unbalanced_acceleration_m_s2 = 0.0;                   // a_nc, m/s^2, + towards the curve centre
   KinematicsSeries series;                                     // one sample per wheelset (curve) or the tangent set
   std::vector<WheelsetQuasiStaticReport> wheelsets;            // equilibrium, one per wheelset
-  std::vector<BogieQuasiStaticReport> bogies;
-  double total_lateral_force_N = 0.0;                          // sum of Y over all wheels (= m_total a_nc)
+  std::vector<BogieQuasiStaticReport> bogies;                  // one per bogie, from the front
+  double total_lateral_force_N = 0.0;                          // sum of Y over all wheels, N (= m_total a_nc)
 };
 
 // The contact evaluation used in the loop (SolveWheelContact or a substitute with the same contract).

@@ -13,17 +13,18 @@ namespace conforma {
 constexpr double kDefaultLoadTolerance = 1e-6;
 
 enum class LoadControlStatus {
-  Ok,
+  Ok,            // |carried load - load| <= 10x the tolerance at push_m (the root finder's own stop is 1x)
   NoBracket,     // no push in the expansion range carries the load (e.g. no contact at all, or a model failure)
   NotConverged,  // the root finder stopped with a load error above 10x the tolerance: the last iterate is returned
 };
-const char* to_string(LoadControlStatus status);
+const char* to_string(LoadControlStatus status);  // "ok", "no_bracket", "not_converged"
 
+// With NoBracket every field is 0 (push_m is then not a solution).
 struct LoadControlResult {
-  LoadControlStatus status = LoadControlStatus::NoBracket;
-  double push_m = 0.0;      // beyond the first guess; carried_load was evaluated here last (Ok / NotConverged)
-  double residual_N = 0.0;  // carried load - load at push_m
-  int iterations = 0;       // root-finder evaluations (not counting the bracket's)
+  LoadControlStatus status = LoadControlStatus::NoBracket;  // see LoadControlStatus
+  double push_m = 0.0;      // m, beyond the first guess; carried_load was evaluated here last (Ok / NotConverged)
+  double residual_N = 0.0;  // carried load - load at push_m, N
+  int iterations = 0;       // root-finder evaluations (not counting the bracket's), >= 0
 };
 
 // carried_load(push) for push in metres beyond the first guess; scale_m (> 0) the size of the first bracket;

@@ -78,8 +78,9 @@ std::vector<FastsimCreepages> StripCreepagesFromKinematics(const RigidBodyMotion
 //   spin(s_j)   = phi0 cos(alpha_j) + omega_t sin(alpha_j)    (omega . (e1 x e2_j), n_j = cos a n0 + sin a t0)
 // omega_t = omega . (n0 x e1) / V [1/m] (= omega . t0 / V when (e1, t0, n0) is right-handed) is the tangent-plane
 // rotation that the normal turn converts into spin (for a wheel rolling about its axle at contact angle delta,
-// |omega_t| = (1 - xi0) cos(delta) / r0); phi0 = omega . (e1 x t0) / V in the same convention. Translational slip variation from yaw/roll rates across the patch is
-// neglected in this mode. r_j and alpha_j are interpolated linearly from the PatchGeometry strips at s_j.
+// |omega_t| = (1 - xi0) cos(delta) / r0); phi0 = omega . (e1 x t0) / V in the same convention. Translational slip
+// variation from yaw/roll rates across the patch is neglected in this mode. r_j and alpha_j are interpolated linearly
+// from the PatchGeometry strips at s_j.
 struct ReferenceCreepages {
   double xi = 0.0, eta = 0.0, phi_per_m = 0.0;  // at the reference point, local frame
   double reference_radius_m = 0.0;             // r0 (> 0)

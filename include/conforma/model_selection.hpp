@@ -3,7 +3,8 @@
 // adequate for it, decided from the undeformed geometry alone (no normal solve).
 //
 // ESTIMATED CONTACT. The elastic contact is estimated by Kik-Piotrowski's virtual interpenetration with the
-// constant eps = 0.55 (docs/physics-reference.md §3.1): the strips whose undeformed gap is below eps * delta, delta the
+// constant eps = 0.55 (docs/physics-reference.md §3.1): the strips whose undeformed gap is below eps * delta, delta
+// the
 // patch's rigid approach (in the pipeline the approach of the Hertz push-down for the wheel load, at which the
 // candidates are taken). For an elliptic patch this region has the width of the Hertz ellipse to a few %.
 //
@@ -48,16 +49,19 @@
 
 namespace conforma {
 
+// The thresholds of the choice (CRITERIA above); validate() throws InputError outside the ranges given.
 struct ModelSelectionOptions {
-  double conformity_threshold_deg = kMeasuredConformityThresholdDeg;  // conformity.hpp
-  double virtual_penetration_factor = 0.55;  // eps of the estimated contact
-  double gap_fit_tolerance = 0.05;           // largest parabola residual / (eps * delta)
-  double curvature_tolerance = 0.10;         // relative, lateral (fit vs Hertz B) and longitudinal (A(s) vs A)
-  int min_strips = 5;
-  double min_hertz_axis_ratio = 0.1;
+  // deg, finite; default 17.7 (conformity.hpp): alpha_c above it -> conformal
+  double conformity_threshold_deg = kMeasuredConformityThresholdDeg;
+  double virtual_penetration_factor = 0.55;  // eps of the estimated contact, in (0, 1]
+  double gap_fit_tolerance = 0.05;           // largest parabola residual / (eps * delta), >= 0 (criterion a)
+  double curvature_tolerance = 0.10;         // relative, >= 0, lateral (fit vs Hertz B) and longitudinal (A(s) vs A)
+  int min_strips = 5;                        // strips in the estimated contact needed to judge (criterion d), >= 3
+  double min_hertz_axis_ratio = 0.1;         // g = min(a,b)/max(a,b) of the Hertz ellipse (criterion e), >= 0
   void validate() const;  // InputError naming the option
 };
 
+// Why a model was chosen ("elliptic", "non_elliptic", ... by to_string).
 enum class ModelSelectionReason {
   Elliptic,          // -> hertz
   NonElliptic,       // -> kpec: gap not a parabola, or curvatures change across the contact
@@ -68,16 +72,18 @@ enum class ModelSelectionReason {
 };
 const char* to_string(ModelSelectionReason reason);
 
+// The choice and the measures behind it. The criteria are evaluated in the order conformity, strips, Hertz point,
+// ellipticity, axis ratio; a measure of a criterion not reached is 0.
 struct ModelSelection {
   ContactModel model = ContactModel::Kpec;  // Hertz, Kpec or Conformal
-  ModelSelectionReason reason = ModelSelectionReason::TooFewStrips;
-  double alpha_c_deg = 0.0;            // estimated conformity index
-  int strips_in_contact = 0;           // strips of the estimated contact
-  double width_m = 0.0;                // estimated contact width along s (strip centres, plus one ds)
-  double gap_fit_residual = 0.0;       // largest parabola residual / (eps * delta)
-  double lateral_curvature_error = 0.0;       // |c2 / B - 1|
-  double longitudinal_curvature_error = 0.0;  // max |A(s) / A - 1|
-  double hertz_axis_ratio = 0.0;              // min(a,b)/max(a,b) of the Hertz ellipse of A, B
+  ModelSelectionReason reason = ModelSelectionReason::TooFewStrips;  // why
+  double alpha_c_deg = 0.0;            // estimated conformity index, deg (always computed)
+  int strips_in_contact = 0;           // strips of the estimated contact (always computed)
+  double width_m = 0.0;                // estimated contact width along s (strip centres, plus one ds), m
+  double gap_fit_residual = 0.0;       // largest parabola residual / (eps * delta), dimensionless
+  double lateral_curvature_error = 0.0;       // |c2 / B - 1|, dimensionless
+  double longitudinal_curvature_error = 0.0;  // max |A(s) / A - 1|, dimensionless
+  double hertz_axis_ratio = 0.0;              // min(a,b)/max(a,b) of the Hertz ellipse of A, B, in (0, 1]
 };
 
 // approach_m: rigid approach of the patch along its reference normal (> 0 for a contact; <= 0 gives kpec with

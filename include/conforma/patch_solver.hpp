@@ -29,46 +29,63 @@ namespace conforma {
 // What a patch is solved on: the curved patch (kp, kpec, conformal, reference) and/or the rigid contact point with
 // its Hertz curvatures A, B (hertz). Not owned; both must outlive the call.
 struct PatchInput {
-  const PatchGeometry* patch = nullptr;
-  const RigidContactPoint* point = nullptr;
+  const PatchGeometry* patch = nullptr;      // kp, kpec, conformal, reference and auto: required (InputError if null)
+  const RigidContactPoint* point = nullptr;  // hertz: required; auto: optional (its Hertz A, B for the choice)
 };
 
-// The normal solution of one patch at one approach, whatever the model.
+// The normal solution of one patch at one approach, whatever the model. The numbers are filled when the model found
+// contact (KP models: also with status "contact_at_patch_boundary"), 0 otherwise; SolvePatch keeps the last iterate's
+// numbers when its load control fails.
 struct PatchNormalSolution {
+  // The patch carries load: hertz: a Hertz solution; KP models: fn_N > 0; reference: normal force > 0. SolvePatch sets
+  // it false when its load control fails.
   bool in_contact = false;
-  std::string status;             // the model's status ("ok", "no_contact", "hertz_regularised", ...)
-  double fn_N = 0.0, fs_N = 0.0;  // on the wheel, along n0 and t0 (the KP models' lateral pressure resultant)
+  // The model's status: hertz "ok" / "hertz_regularised" (B raised to 0.1 A) / HertzStatus; KP models: KpStatus;
+  // reference "ok" / "no_contact" / "not_converged"; "no_contact" for approach <= 0; SolvePatch, load given: the
+  // LoadControlStatus ("no_bracket", "not_converged") when the load control fails.
+  std::string status;
+  // N, on the wheel, along n0 and t0 (fs_N: the KP and reference models' lateral pressure resultant; 0 for hertz)
+  double fn_N = 0.0, fs_N = 0.0;
+  // Pa, Pa, m^2, m, m: maximum pressure; the model's p0 (hertz and reference: = pmax); contact area; extent along s^r
+  // (hertz: 2 b) and along x^r (hertz: 2 a)
   double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0, width_m = 0.0, length_m = 0.0;
-  double a_m = 0.0, b_m = 0.0;    // Hertz semi-axes (hertz only)
-  double alpha_c_deg = 0.0;       // conformity index (docs/physics-reference.md §9.1; KP models and reference)
-  bool is_conformal = false;
-  KpResult kp;                    // KP models: strips and pressure
-  HertzResult hertz;              // hertz
+  double a_m = 0.0, b_m = 0.0;    // Hertz semi-axes, m (hertz only; 0 for the other models)
+  double alpha_c_deg = 0.0;       // conformity index, deg (docs/physics-reference.md §9.1; KP models and reference)
+  bool is_conformal = false;      // alpha_c_deg > WheelContactOptions::conformity_threshold_deg (KP models, reference)
+  KpResult kp;                    // KP models: strips and pressure (default otherwise)
+  HertzResult hertz;              // hertz (default otherwise)
 };
 
 // Creepages of a patch: at the reference point, and for the conformal model optionally one set per KP strip (the
 // rigid slip of each strip from the wheelset kinematics, local_creepage.hpp).
 struct PatchCreepages {
-  FastsimCreepages reference;
-  std::vector<FastsimCreepages> per_strip;  // empty: `reference` on every strip
+  FastsimCreepages reference;               // xi, eta (-), phi (1/m) at the patch reference point (contact frame)
+  std::vector<FastsimCreepages> per_strip;  // empty: `reference` on every strip; else one per KP strip (conformal)
   bool any() const { return reference.xi != 0.0 || reference.eta != 0.0 || reference.phi_per_m != 0.0; }
 };
 
+// The tangential solution of one patch. Every number is 0 (and the vectors empty) unless `solved`.
 struct PatchTangentialSolution {
-  bool solved = false;
+  bool solved = false;  // a model's FASTSIM ran (false: no creepage, or a model without a tangential part)
+  // "not_solved" (no tangential part, or not asked for), "no_creepage" (all three creepages 0), else the FASTSIM
+  // status of the field ("ok", "full_slip", "no_contact"; fastsim.hpp)
   std::string status = "not_solved";
-  double fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;  // on the wheel, patch reference frame (x, t0, n0)
+  double fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;  // on the wheel, patch reference frame (x, t0, n0); N, N, N m
   bool has_equivalent_ellipse = false;         // KP models: a_m, b_m of the SDEC (kbtnh)
-  double a_m = 0.0, b_m = 0.0;
+  double a_m = 0.0, b_m = 0.0;                 // SDEC semi-axes, m (has_equivalent_ellipse only)
+  // m^2, m^2, W. frictional_power_W: sum |p . s| V dA at the wheelset's forward speed; 0 for kp and kpec
+  // (SolveFastsimOnKpPatch gets no rolling speed)
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   FastsimResult field;                         // element traction and slip
-  std::vector<double> element_width_m;         // lateral width of each element of `field`
-  double field_x_offset_m = 0.0;               // x of the field's origin relative to the patch reference point
+  std::vector<double> element_width_m;         // lateral width of each element of `field`, m (hertz: 2b / ny)
+  // Meant as the x of the field's origin relative to the patch reference point, m. No model sets it: always 0
+  // (the pipeline shifts a Hertz field by the rigid point's lead_m itself).
+  double field_x_offset_m = 0.0;
 };
 
 // Registry entry of one contact model.
 struct ContactModelSolver {
-  ContactModel model;
+  ContactModel model;         // the model of this entry
   bool needs_patch_geometry;  // false: solved on the rigid contact point alone (Hertz curvatures)
   bool has_tangential;        // false: normal problem only (reference)
   PatchNormalSolution (*normal)(ContactModel model, const PatchInput& input, double approach_m,
@@ -78,6 +95,8 @@ struct ContactModelSolver {
                                         const WheelContactOptions& options);
   double (*pressure_at)(const PatchNormalSolution& normal, double x_m, double s_m);  // on a solved normal problem
 };
+// normal: the model's normal solve at an approach (m); tangential: its FASTSIM (null without a tangential part);
+// pressure_at: pressure in Pa at (x, s) in m of the patch frame (null when the model keeps no field: reference).
 // The solver of `model` (InputError for auto, which is resolved per patch first: ChoosePatchModel).
 const ContactModelSolver& ContactModelSolverOf(ContactModel model);
 
@@ -100,23 +119,24 @@ double PatchPressureAt(ContactModel model, const PatchNormalSolution& normal, do
 // One patch alone, normal and tangential.
 struct PatchProblem {
   ContactModel model = ContactModel::Conformal;  // auto: ChoosePatchModel at the first-guess approach
-  PatchInput input;
+  PatchInput input;                              // the geometry the model needs (see PatchInput)
   // > 0: approach given (one normal solve); otherwise load given: the normal force along the reference normal
   // equals normal_load_N (the one load control, load_control.hpp), starting from first_guess_approach_m.
-  double approach_m = 0.0;
-  double normal_load_N = 0.0;
+  double approach_m = 0.0;              // m; default 0: load given
+  double normal_load_N = 0.0;           // N, > 0 when load given (InputError otherwise)
+  // m, > 0 when load given (InputError otherwise): start of the load control, its first bracket is 0.1x this
   double first_guess_approach_m = 0.0;
   double selection_approach_m = 0.0;  // auto: the approach at which the model is chosen (0: first_guess_approach_m)
-  PatchCreepages creepages;
-  double rolling_speed_m_per_s = 1.0;
-  bool solve_tangential = true;
+  PatchCreepages creepages;            // all 0 (default): tangential status "no_creepage"
+  double rolling_speed_m_per_s = 1.0;  // V, m/s, for the frictional power (default 1: power per unit speed)
+  bool solve_tangential = true;        // false: normal problem only
 };
 struct PatchSolution {
   ContactModel model = ContactModel::Hertz;  // the model that solved it (auto: the chosen one)
-  double approach_m = 0.0;
+  double approach_m = 0.0;                   // the approach solved at, m (load given: the last iterate)
   LoadControlResult load;                    // load given only
-  PatchNormalSolution normal;
-  PatchTangentialSolution tangential;
+  PatchNormalSolution normal;                // at approach_m
+  PatchTangentialSolution tangential;        // only when solve_tangential and normal.in_contact
 };
 PatchSolution SolvePatch(const PatchProblem& problem, const WheelContactOptions& options);
 

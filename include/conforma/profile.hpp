@@ -22,16 +22,17 @@
 
 namespace conforma {
 
+// Wheel: z is the radial height above the taping line; Rail: z is up from the rail top (coordinates above).
 enum class ProfileKind { Wheel, Rail };
-const char* to_string(ProfileKind kind);
+const char* to_string(ProfileKind kind);  // "wheel", "rail"
 
 struct ProfileFitOptions {
   // Smoothing of the fit through the input points, as the RMS residual allowed per point [m].
   // 0 interpolates the points exactly (after removing duplicates). > 0: parametric cubic smoothing spline
   // (Reinsch; penalised least squares solved with CHOLMOD) whose RMS distance to the points equals this value;
   // set it to the measurement noise level.
-  double smoothing_rms_m = 0.0;
-  // Spacing of the arc-length resampling that the profile stores [m].
+  double smoothing_rms_m = 0.0;  // m, default 0
+  // Spacing of the arc-length resampling that the profile stores [m]; default 0.1 mm.
   double sample_spacing_m = 0.1e-3;
   // If true, the profile must be single-valued in y (z = f(y)): FromPoints sorts the input by y (so unsorted
   // clouds are accepted); the file readers refuse curves folding back in the running surface. If false, input

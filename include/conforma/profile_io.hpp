@@ -35,6 +35,8 @@ namespace conforma {
 
 struct ProfileReadOptions {
   std::optional<ProfileKind> kind;  // required for plain column files; checked against Simpack/MiniProf files
+  // Fit of the loaded points (profile.hpp): smoothing and resampling (LoadProfile); function_of_y also makes the
+  // readers refuse a curve folding back in y
   ProfileFitOptions fit;
   bool mirror_y = false;         // plain column files: y := -y
   bool mirror_z = false;         // plain column files: z := -z

@@ -33,12 +33,12 @@ namespace conforma {
 // The paper-001 sliding mean over 1-5 % of the profile points (about 1.5-7.5 mm on a wheel) has its
 // half-gain wavelength at about 1.66 window widths; the default 5 mm is within that range.
 struct DepthSmoothingOptions {
-  double cutoff_wavelength_m = 5.0e-3;  // half-gain wavelength; 0 disables smoothing
+  double cutoff_wavelength_m = 5.0e-3;  // half-gain wavelength, m, >= 0; 0 disables smoothing
 };
 struct DepthSmoothingResult {
-  WearDistribution depth;
-  double area_in_m2 = 0.0;    // trapezoid area of the input
-  double area_out_m2 = 0.0;   // trapezoid area of the output
+  WearDistribution depth;     // the smoothed depth on the input grid, m, >= 0 (the input when smoothing is off)
+  double area_in_m2 = 0.0;    // trapezoid area of the input, m^2 (depth x arc length)
+  double area_out_m2 = 0.0;   // trapezoid area of the output, m^2 (= area_in_m2 up to rounding)
   size_t clipped_nodes = 0;   // nodes where the smoother went negative and were set to 0
 };
 // Throws InputError for negative or non-finite input depth.
@@ -63,26 +63,29 @@ struct ProfileValidityOptions {
   // Kink criterion: |curvature| must stay below this [1/m] (1/(1 mm)) wherever the previous profile was
   // below it; where the previous profile itself was sharper (e.g. a tight flange radius), the new
   // curvature may not exceed 1.2 x the previous maximum within +-2 mm.
-  double max_curvature_1_m = 1.0e3;
+  double max_curvature_1_m = 1.0e3;  // 1/m, > 0
 };
+// The checks stop at the first failure (non-finite points, self-intersection, new folds, kink); the fields of the
+// later checks then keep their defaults.
 struct ProfileValidity {
-  bool valid = true;
+  bool valid = true;                  // all checks passed
   std::string reason;                 // empty when valid
-  double max_abs_curvature_1_m = 0.0; // of the new profile
-  int y_folds_before = 0, y_folds_after = 0;  // sign changes of dy/ds along the curve
+  double max_abs_curvature_1_m = 0.0; // of the new profile, 1/m
+  int y_folds_before = 0, y_folds_after = 0;  // sign changes of dy/ds along the curve (previous / new profile)
 };
 ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& previous,
                                      const ProfileValidityOptions& options = {});
 
 // ---------------------------------------------------------------- one update step
+// InputError (UpdateProfile) for a cap or distance limit <= 0.
 struct ProfileUpdateOptions {
-  double max_depth_per_step_m = 0.4e-3;  // cap on the largest depth of a step (paper 003 §6: 0.4 mm)
-  // Upper limit of the distance one step may represent (e.g. to land on the target mileage); when it
-  // binds, the max depth of the step is below the cap.
+  double max_depth_per_step_m = 0.4e-3;  // m, > 0: cap on the largest depth of a step (paper 003 §6: 0.4 mm)
+  // Upper limit of the distance one step may represent (e.g. to land on the target mileage), m, > 0 (default
+  // unlimited); when it binds, the max depth of the step is below the cap.
   double max_distance_step_m = std::numeric_limits<double>::infinity();
-  DepthSmoothingOptions smoothing;
-  ProfileValidityOptions validity;
-  double output_spacing_m = 0.0;  // arc-length spacing of the new profile; 0 = that of the old one
+  DepthSmoothingOptions smoothing;  // step 1
+  ProfileValidityOptions validity;  // step 3
+  double output_spacing_m = 0.0;  // arc-length spacing of the new profile, m, >= 0; 0 = that of the old one
   // A profile that was single-valued in y (no folds) and folds after the removal (a flange face worn past
   // vertical: the lip above overhangs the worn band below) gets the lip cut back to the vertical through the
   // band (CutOverhangs): contact would wear it off at once. The cut area is reported; false: invalid instead.
@@ -90,21 +93,25 @@ struct ProfileUpdateOptions {
   int step_index = 0;             // only for messages ("wear step 3: ...")
 };
 
+// Updated: the profile was updated and is valid. NoWear: the smoothed depth is nowhere > 0 (profile unchanged).
+// InvalidProfile: the removal failed (self-intersection) or the new profile failed a validity check.
 enum class ProfileUpdateStatus { Updated, NoWear, InvalidProfile };
-const char* to_string(ProfileUpdateStatus status);
+const char* to_string(ProfileUpdateStatus status);  // "updated", "no wear", "invalid profile"
 
 struct ProfileUpdateResult {
-  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;
-  std::string message;           // names the step and the failed check when status != Updated
+  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;  // see ProfileUpdateStatus
+  std::string message;           // names the step and the failed check when status != Updated; "" otherwise
   Profile profile;               // the new profile (the old one when status != Updated)
-  WearDistribution removed_depth;  // smoothed, scaled depth actually removed [m]
-  double scale_factor = 0.0;     // removed_depth = scale_factor * S(accumulated)
-  double distance_step_m = 0.0;  // distance the step represents = distance_represented * scale_factor
-  double max_depth_m = 0.0;      // max of removed_depth (= cap unless max_distance_step_m binds)
-  double removed_area_m2 = 0.0;  // integral of removed_depth ds
-  double overhang_cut_area_m2 = 0.0;  // extra area removed by cutting overhangs (ProfileUpdateOptions::cut_overhangs)
+  // smoothed, scaled depth actually removed [m] (NoWear: the smoothed depth, unscaled)
+  WearDistribution removed_depth;
+  double scale_factor = 0.0;     // removed_depth = scale_factor * S(accumulated); 0 with NoWear
+  double distance_step_m = 0.0;  // distance the step represents = distance_represented * scale_factor, m
+  double max_depth_m = 0.0;      // max of removed_depth, m (= cap unless max_distance_step_m binds)
+  double removed_area_m2 = 0.0;  // integral of removed_depth ds, m^2
+  // m^2, extra area removed by cutting overhangs (ProfileUpdateOptions::cut_overhangs); 0 when no cut was made
+  double overhang_cut_area_m2 = 0.0;
   DepthSmoothingResult smoothing;  // diagnostics of step 1 (before scaling)
-  ProfileValidity validity;
+  ProfileValidity validity;        // of the new profile (default when NoWear or the removal failed)
 };
 
 // accumulated_depth: the depth the simulated distance `distance_represented_m` removes (e.g. a wheel's

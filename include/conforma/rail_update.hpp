@@ -22,33 +22,37 @@ namespace conforma {
 // averaged with the weights (empty = equal; must sum to 1 within 1e-9 otherwise), and the new node is
 // q - mean(t) n. Returns the mean profile and mean_depth (t averaged, on the base node grid).
 struct NormalAverageResult {
-  Profile profile;
+  Profile profile;                  // the mean profile
   WearDistribution mean_depth;      // mean removal along the base normal [m]
-  double max_intersection_residual_m = 0.0;  // |(v(sigma) - q) . t| after the solve, worst node
+  double max_intersection_residual_m = 0.0;  // |(v(sigma) - q) . t| after the solve, worst node, m
 };
 NormalAverageResult AverageAlongNormals(const Profile& base, const std::vector<Profile>& profiles,
                                         const std::vector<double>& weights = {}, double output_spacing_m = 0.0);
 
 struct RailStepOptions {
   bool keep_rail_fixed = false;          // the rail is never updated (paper 003 §7 keeps a measured rail)
-  double max_depth_per_step_m = 0.1e-3;  // cap on the mean rail depth of one rail step (our default;
+  double max_depth_per_step_m = 0.1e-3;  // m, > 0: cap on the mean rail depth of one rail step (our default;
                                          // docs/physics-reference.md §8.3: the rail uses its own smaller step)
+  // Upper limit of the wheel passages one rail step may represent, > 0 (default unlimited)
   double max_passages_per_step = std::numeric_limits<double>::infinity();
-  DepthSmoothingOptions smoothing;
-  ProfileValidityOptions validity;
-  double output_spacing_m = 0.0;
-  int step_index = 0;
+  DepthSmoothingOptions smoothing;       // of each rail wear distribution
+  ProfileValidityOptions validity;       // of the averaged rail
+  double output_spacing_m = 0.0;         // arc-length spacing of the new rail, m; 0 = that of r_k
+  int step_index = 0;                    // only for messages ("rail step 2: ...")
 };
 
+// status as ProfileUpdateStatus (NoWear also when keep_rail_fixed); the fields below are filled with Updated and,
+// where reached, with InvalidProfile.
 struct RailStepResult {
-  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;
-  std::string message;
+  ProfileUpdateStatus status = ProfileUpdateStatus::NoWear;  // see ProfileUpdateStatus above
+  std::string message;                 // names the step and the reason when status != Updated; "" otherwise
   Profile rail;                        // r_{k+1} (r_k when fixed, without wear, or invalid)
   std::vector<Profile> virtual_rails;  // r_k^j, one per wheel profile
-  WearDistribution mean_removed_depth;  // mean depth along the normals of r_k [m]
-  double scale_factor = 0.0;           // common factor on the smoothed rail wear
+  // mean depth along the normals of r_k [m] (NoWear without keep_rail_fixed: the unscaled smoothed mean)
+  WearDistribution mean_removed_depth;
+  double scale_factor = 0.0;           // common factor on the smoothed rail wear (dimensionless)
   double passages_step = 0.0;          // wheel passages the rail step represents
-  ProfileValidity validity;
+  ProfileValidity validity;            // of the averaged rail
 };
 
 // rail_wear_per_wheel_profile[j]: rail depth (e.g. TrackClassWear::rail_depth_per_passage) while the wheel

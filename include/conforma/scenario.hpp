@@ -42,20 +42,23 @@
 
 namespace conforma {
 
+// The kinematics provider of the scenario (`kinematics.provider` above): QuasiStatic (quasistatic), Centred
+// (centred), Kinematic (kinematic).
 enum class KinematicsProvider { QuasiStatic, Centred, Kinematic };
-const char* to_string(KinematicsProvider provider);
+const char* to_string(KinematicsProvider provider);  // "quasistatic", "centred", "kinematic"
 
+// The `kinematics` map; the fields of QuasiStaticOptions of the same names.
 struct ScenarioKinematics {
-  KinematicsProvider provider = KinematicsProvider::QuasiStatic;
-  double tangent_amplitude_m = 3e-3;
-  int tangent_phases = 8;
-  double cant_base_m = 1.5;
-  bool free_axle_rotation = true;
+  KinematicsProvider provider = KinematicsProvider::QuasiStatic;  // default quasistatic
+  double tangent_amplitude_m = 3e-3;  // m (tangent_amplitude_mm in the file)
+  int tangent_phases = 8;             // phases of the tangent-track oscillation
+  double cant_base_m = 1.5;           // m
+  bool free_axle_rotation = true;     // false: axle speed V / r0
   // Contact model inside the quasi-static curving solve (the multibody side). Unset: the wear step's model (the
   // co-simulation of paper 003 §2). A cheaper model here (e.g. hertz, as a multibody code with its own contact
   // would use) leaves the wear step's contact model unchanged and makes conformal runs several times faster.
-  bool contact_model_set = false;
-  ContactModel contact_model = ContactModel::Hertz;
+  bool contact_model_set = false;                    // kinematics.contact_model given
+  ContactModel contact_model = ContactModel::Hertz;  // read only with contact_model_set
 };
 
 struct ScenarioUpdate {
@@ -67,7 +70,7 @@ struct ScenarioUpdate {
 };
 
 struct ScenarioRail {
-  bool fixed = true;
+  bool fixed = true;        // the rail is not updated (default; paper 003 §7)
   int steps = 0;            // m rail steps (paper 003 Fig. 11) when not fixed
   double cap_m = 0.1e-3;    // RailStepOptions::max_depth_per_step_m
 };

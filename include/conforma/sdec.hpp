@@ -40,28 +40,31 @@ namespace conforma {
 
 // One strip of a patch for the reduction (KpStrip carries the same fields).
 struct SdecStrip {
-  double s_m = 0.0;            // strip centre along s^r
-  double ds_m = 0.0;           // strip width along s^r
-  double x_centre_m = 0.0;     // centre of the strip's contact length
-  double half_length_m = 0.0;  // c_j (0 = strip not in contact)
+  double s_m = 0.0;            // strip centre along s^r, m
+  double ds_m = 0.0;           // strip width along s^r, m, >= 0
+  double x_centre_m = 0.0;     // centre of the strip's contact length, m
+  double half_length_m = 0.0;  // c_j, m, >= 0 (0 = strip not in contact)
 };
 
+// Ok: at least one strip with c_j > 0 and ds_j > 0 (every field of SdecResult filled);
+// NoContact: none (every field 0).
 enum class SdecStatus { Ok, NoContact };
-const char* to_string(SdecStatus status);
+const char* to_string(SdecStatus status);  // "ok", "no_contact"
 
+// The SDEC of a patch (docs/physics-reference.md §6.5). Lengths in m along the patch coordinates of the strips.
 struct SdecResult {
-  SdecStatus status = SdecStatus::NoContact;
-  double area_m2 = 0.0;            // A_c
-  double w1_m = 0.0, w2_m = 0.0;   // widths on the -s and +s side of the longest strip line
-  double w3_m = 0.0;               // longest contact length along x^r
-  double a_m = 0.0, b_m = 0.0;     // SDEC semi-axes (paper 003 §4.2)
-  double b_neg_m = 0.0, b_pos_m = 0.0;
-  double asymmetry = 0.0;          // psi = (b_pos - b_neg) / (2 b)
-  double longest_strip_s_m = 0.0;  // s*
-  double longest_strip_x_m = 0.0;  // x centre of the longest strip
-  double centroid_s_m = 0.0;       // y_c of the SDEC area
+  SdecStatus status = SdecStatus::NoContact;  // see SdecStatus
+  double area_m2 = 0.0;            // A_c, m^2
+  double w1_m = 0.0, w2_m = 0.0;   // widths on the -s and +s side of the longest strip line, m, >= 0
+  double w3_m = 0.0;               // longest contact length along x^r, 2 c_max(s*), m
+  double a_m = 0.0, b_m = 0.0;     // SDEC semi-axes (paper 003 §4.2), m; pi a b = A_c
+  double b_neg_m = 0.0, b_pos_m = 0.0;  // lateral semi-axes of the -s and +s half-ellipses, m; sum 2 b
+  double asymmetry = 0.0;          // psi = (b_pos - b_neg) / (2 b), dimensionless, in [-1, 1]
+  double longest_strip_s_m = 0.0;  // s*, m (parabola vertex through the longest strip and its neighbours)
+  double longest_strip_x_m = 0.0;  // x centre of the longest strip, m
+  double centroid_s_m = 0.0;       // y_c of the SDEC area, m
   CreepCoefficients coefficients;  // Kalker at a / b
-  FastsimFlexibilities flexibilities;  // KalkerFlexibilities(a, b, coefficients, G)
+  FastsimFlexibilities flexibilities;  // KalkerFlexibilities(a, b, coefficients, G), m/Pa
 };
 
 // Throws InputError for NaN, negative widths or half-lengths.
@@ -70,7 +73,7 @@ SdecResult ReduceToSdec(const KpResult& normal, const Material& material);
 
 // Linear-theory forces of the SDEC (see the header comment); the spin centre at s_o = spin_centre_s_m.
 struct SdecLinearForces {
-  double fx_N = 0.0, fy_N = 0.0;
+  double fx_N = 0.0, fy_N = 0.0;  // linear-theory creep forces on the wheel, N; 0 when the SDEC is not Ok
 };
 SdecLinearForces SdecLinearCreepForces(const SdecResult& sdec, const FastsimCreepages& creepages,
                                        double spin_centre_s_m, double shear_modulus_Pa);

@@ -18,6 +18,8 @@ Profile MakeS1002(const ProfileFitOptions& options = {});
 // The exact F(S) of §1.1 [mm] for S in [-70, 60] mm (section by section, no smoothing of the 1e-4 mm steps).
 double S1002Height_mm(double S_mm);
 
+// EN 13674-1 rail sections, by name: R60E1 "60E1" (alias UIC60), R54E1 "54E1", R50E6 "50E6", R50E4 "50E4" (alias
+// UIC50; profile_by_name.hpp).
 enum class RailSection { R60E1, R54E1, R50E6, R50E4 };
 const char* to_string(RailSection section);  // "60E1", "54E1", ...
 

@@ -34,15 +34,16 @@ namespace conforma {
 // restarts from about zero. Negative rates (just above 77.2) are clamped to 0.
 struct UsfdCoefficients {
   double mild_slope = 5.3;                   // [ug/(m mm^2) per N/mm^2]
-  double mild_limit_N_mm2 = 10.4;
+  double mild_limit_N_mm2 = 10.4;            // I_w where the mild branch ends [N/mm^2]
   double severe_rate = 55.0;                 // [ug/(m mm^2)]
-  double severe_limit_N_mm2 = 77.2;
+  double severe_limit_N_mm2 = 77.2;          // I_w where the severe plateau ends [N/mm^2]
   double catastrophic_slope = 61.9;          // [ug/(m mm^2) per N/mm^2]
   double catastrophic_intercept = -4778.7;   // [ug/(m mm^2)]
 };
 
+// USFD regime of a wear index: Mild (I < mild_limit), Severe (mild_limit <= I <= severe_limit), Catastrophic (above).
 enum class WearRegime { Mild, Severe, Catastrophic };
-const char* to_string(WearRegime regime);
+const char* to_string(WearRegime regime);  // "mild", "severe", "catastrophic"
 
 // USFD wear rate K_w [ug/(m mm^2)] at wear index I_w [N/mm^2] (closed form above).
 double usfd_wear_rate(double wear_index_N_mm2, const UsfdCoefficients& c = {});
@@ -59,12 +60,12 @@ double depth_per_rolled_metre_from_rate(double rate_ug_m_mm2, double density_kg_
 // consecutive points with the same I; exactly at a jump the LEFT value (first of the two) applies.
 // Beyond the last point the last segment continues linearly. Rates below 0 are clamped to 0.
 struct WearIndexPoint {
-  double wear_index_N_mm2 = 0.0;
-  double rate_ug_m_mm2 = 0.0;
+  double wear_index_N_mm2 = 0.0;  // I_k [N/mm^2], >= 0
+  double rate_ug_m_mm2 = 0.0;     // K_k [ug/(m mm^2)]
 };
 struct WearIndexLaw {
-  std::string name;
-  std::vector<WearIndexPoint> points;
+  std::string name;                    // for messages and output ("usfd", the file's name line)
+  std::vector<WearIndexPoint> points;  // the breakpoints, at least 2
   // Throws InputError naming the law when the table is malformed (fewer than 2 points, not finite,
   // decreasing I, first I != 0, more than two points at one I).
   void validate() const;
@@ -79,15 +80,15 @@ struct WearIndexLaw {
 // p <= severe_pressure_ratio * H ("mild", regions K2..K4) and for p > severe_pressure_ratio * H
 // (region K1). A value exactly on a bin limit belongs to the lower bin.
 struct ArchardBin {
-  double velocity_upper_m_s = std::numeric_limits<double>::infinity();
+  double velocity_upper_m_s = std::numeric_limits<double>::infinity();  // upper limit of the bin [m/s]
   double k_mild = 0.0;    // [-]
   double k_severe = 0.0;  // [-]
 };
 struct ArchardMap {
-  std::string name;
-  double hardness_Pa = 2.75e9;         // H
+  std::string name;                    // for messages and output
+  double hardness_Pa = 2.75e9;         // H [Pa]
   double severe_pressure_ratio = 0.8;  // p > 0.8 H -> k_severe (paper 000 Table 2)
-  std::vector<ArchardBin> bins;
+  std::vector<ArchardBin> bins;        // velocity bins, upper limits increasing, the last +inf
   void validate() const;  // throws InputError naming the map
   double coefficient(double pressure_Pa, double sliding_velocity_m_s) const;  // k [-]
 
@@ -106,12 +107,13 @@ struct ArchardMap {
 
 // ---------------------------------------------------------------- one law for one body
 
+// WearIndex: T-gamma/A law K_w(I_w) (WearIndexLaw); Archard: coefficient map k(p, v_slip) (ArchardMap).
 enum class WearLawKind { WearIndex, Archard };
-const char* to_string(WearLawKind kind);
+const char* to_string(WearLawKind kind);  // "wear_index", "archard"
 
 struct WearLaw {
   WearLaw();  // wear-index kind with the USFD table; archard = ArchardMap::Jendel()
-  WearLawKind kind = WearLawKind::WearIndex;
+  WearLawKind kind = WearLawKind::WearIndex;  // which of the two below applies
   WearIndexLaw wear_index;  // used when kind == WearIndex
   ArchardMap archard;       // used when kind == Archard
   const std::string& name() const { return kind == WearLawKind::WearIndex ? wear_index.name : archard.name; }

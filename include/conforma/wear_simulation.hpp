@@ -43,30 +43,36 @@ using KinematicsFunction =
 
 // ---------------------------------------------------------------- one step's wear
 struct StepWearOptions {
-  WheelContactOptions contact;  // model, material, discretisation; keep_fields, load and friction are set per call
-  WearModel wear;
-  double grid_spacing_m = 0.1e-3;  // wear grids on the wheel and rail arc lengths
-  // A wheel whose load control ended NotConverged is used when its carried vertical load is within this fraction
-  // of the target (otherwise it is a failed contact, without wear).
+  // model, material, discretisation; keep_fields, solve_tangential, load and friction are set per call
+  WheelContactOptions contact;
+  WearModel wear;                  // wheel and rail wear laws (wear_distribution.hpp)
+  double grid_spacing_m = 0.1e-3;  // m, > 0: wear grids on the wheel and rail arc lengths
+  // A wheel whose load control ended NotConverged is used when its carried vertical load (pressure forces) is within
+  // this fraction of the target (otherwise it is a failed contact, without wear). Dimensionless, default 10 %.
   double load_acceptance = 0.10;
   // A wheel whose load control finds no bracket with the chosen model (NotConverged without patches; seen with the
   // kp/conformal models at flange contact on worn profiles) is solved with the Hertz model instead (counted).
   bool hertz_fallback = true;
 };
 
+// The wear of one step. Depths in m: the wheel's per metre run (m/m), the rail's per passage.
 struct StepWear {
-  TrackClassWear wheel;                    // combined over the classes; wheel depth per metre = mean of the sides
+  // combined over the classes; wheel depth per metre = mean of the sides; its rail depth is the left side's, its
+  // distance and area outside the sums of the two sides
+  TrackClassWear wheel;
   std::array<TrackClassWear, 2> side;      // [Left, Right] combined over the classes (rail: per passage)
-  std::vector<std::array<TrackClassWear, 2>> per_class;
-  int samples = 0;                         // wheel contacts evaluated
+  std::vector<std::array<TrackClassWear, 2>> per_class;  // [class][Left, Right], before the combination
+  int samples = 0;                         // wheel contacts whose wear was used (loaded wheels, Ok or approximate)
   int failed_contacts = 0;                 // NoContact / NotConverged wheels (no wear taken from them)
   int approximate_contacts = 0;            // NotConverged wheels within load_acceptance (used)
   int hertz_fallback_contacts = 0;         // wheels solved with the Hertz model instead (hertz_fallback)
+  // patches of the used wheel contacts; cells passed to the wear laws (cells that remove exactly nothing, e.g. in
+  // adhesion, and cells off the wheel grid are left out)
   int patches = 0, slipping_cells = 0;
   // Patches of the wear samples by the model that solved them (PatchReport::model; with `auto` the chosen one,
   // with the Hertz fallback hertz), indexed by static_cast<int>(ContactModel).
   std::array<int, kContactModelCount> patches_by_model{};
-  double wheel_area_off_grid_m2 = 0.0;     // cells that could not be mapped to the wheel arc length
+  double wheel_area_off_grid_m2 = 0.0;     // m^2, cells that could not be mapped to the wheel arc length
 };
 
 // The wear computation's view of a solved contact cell, at wheel-profile arc length wheel_s_m.
@@ -115,63 +121,68 @@ struct WearSimulationOptions {
   // candidate_strip_width_m, ...). Set per call by the loop from the scenario: material, friction, vertical load,
   // elastic flange (max_touching_contact_angle_rad), keep_fields.
   WheelContactOptions contact;
-  int steps = -1;                    // wheel steps per rail step; < 0: the scenario's
-  double total_km = -1.0;            // < 0: the scenario's (0 = unlimited)
-  double grid_spacing_m = 0.1e-3;
+  int steps = -1;                    // wheel steps per rail step; < 0: the scenario's (InputError when it ends < 1)
+  double total_km = -1.0;            // km run per rail step; < 0: the scenario's (0 = unlimited: `steps` steps)
+  double grid_spacing_m = 0.1e-3;    // m, > 0: wear grids on the wheel and rail arc lengths (StepWearOptions)
   // The accumulated wheel depth is tapered to zero (raised cosine) over this length at both ends of the wheel
   // profile before the update: at the very end of the profile (field-side edge, flange back) the removal along
   // the normal has no neighbour on one side and a worn edge turns into a kink that fails the validity check.
   // 0 disables the taper.
-  double edge_taper_m = 3e-3;
+  double edge_taper_m = 3e-3;        // m, default 3 mm
   // Adaptive step (paper 001 §6.2: "the km_step can be variable and controlled by an adaptive procedure"): when
   // the updated wheel profile fails the validity check (a fold where the flange face is steep, a kink), the step
   // is repeated with half the depth cap, up to this many times (cap / 2^n). The same wear distribution is used:
   // only the distance the step represents shrinks. 0: stop at the first invalid profile.
-  int invalid_step_halvings = 3;
+  int invalid_step_halvings = 3;     // >= 0
   // Called after every wheel step (progress display, streaming output); may be empty.
   std::function<void(const struct WearStepRecord&)> on_step;
 };
 
+// One completed wheel step (a step whose profile update fails ends the run without a record).
 struct WearStepRecord {
-  int rail_step = 0;                 // k
+  int rail_step = 0;                 // k, 0-based
   int step = 0;                      // j, 1-based within the rail step
-  double km = 0.0;                   // cumulative within the rail step
-  double step_km = 0.0;
-  double max_depth_m = 0.0;          // of the removed depth (= cap unless the last step was shortened)
+  double km = 0.0;                   // cumulative within the rail step, km
+  double step_km = 0.0;              // distance the step represents, km
+  double max_depth_m = 0.0;          // of the removed depth, m (= cap unless the last step was shortened)
   WheelDimensions dimensions;        // of the new profile
-  double tread_wear_m = 0.0, flange_wear_m = 0.0;  // see WheelWearDepths
-  double wall_s = 0.0;
+  double tread_wear_m = 0.0, flange_wear_m = 0.0;  // m, against the scenario's initial wheel; see WheelWearDepths
+  double wall_s = 0.0;               // wall-clock time of the step, s (not reproducible)
   Profile wheel;                     // the new wheel profile
-  WearDistribution wheel_depth_per_metre;   // raw (unsmoothed) wheel wear rate of the step [m/m]
+  // raw (unsmoothed, before the edge taper) wheel wear rate of the step [m/m]
+  WearDistribution wheel_depth_per_metre;
   WearDistribution removed_depth;           // smoothed, scaled depth removed [m]
-  std::array<WearDistribution, 2> rail_depth_per_passage;  // [Left, Right]
-  ProfileValidity validity;
+  std::array<WearDistribution, 2> rail_depth_per_passage;  // [Left, Right], m per passage
+  ProfileValidity validity;          // of the new profile (after any halvings)
+  // the StepWear counters of the step
   int samples = 0, failed_contacts = 0, approximate_contacts = 0, hertz_fallback_contacts = 0;
   int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
-  double depth_cap_m = 0.0;          // cap used (the scenario's, or halved by invalid_step_halvings)
-  double overhang_cut_area_m2 = 0.0; // area cut from a flange worn past vertical (ProfileUpdateResult)
+  double depth_cap_m = 0.0;          // cap used, m (the scenario's, or halved by invalid_step_halvings)
+  double overhang_cut_area_m2 = 0.0; // m^2, area cut from a flange worn past vertical (ProfileUpdateResult)
   std::array<int, kContactModelCount> patches_by_model{};  // see StepWear
 };
 
+// Completed: every step ran (or total_km was reached). InvalidProfile: a wheel update stayed invalid after the
+// halvings, or a rail update was invalid (the run stops there). NoWear: a wheel step removed nothing (the run stops).
 enum class WearSimulationStatus { Completed, InvalidProfile, NoWear };
-const char* to_string(WearSimulationStatus status);
+const char* to_string(WearSimulationStatus status);  // "completed", "invalid_profile", "no_wear"
 
 struct WearSimulationResult {
-  WearSimulationStatus status = WearSimulationStatus::Completed;
-  std::string message;
-  Profile initial_wheel;
-  WheelDimensions initial_dimensions;
+  WearSimulationStatus status = WearSimulationStatus::Completed;  // see WearSimulationStatus
+  std::string message;                                // "" when Completed; else "rail step k, wheel step j: ..."
+  Profile initial_wheel;                              // the scenario's wheel
+  WheelDimensions initial_dimensions;                 // Sd/Sh/qR of initial_wheel
   std::array<Profile, 2> initial_rail;               // mounted [Left, Right]
-  std::vector<WearStepRecord> steps;
+  std::vector<WearStepRecord> steps;                  // every completed wheel step, rail step after rail step
   std::vector<std::array<Profile, 2>> rails;          // r_1 .. r_m (empty with a fixed rail)
-  std::vector<RailStepResult> rail_results;
+  std::vector<RailStepResult> rail_results;           // per rail step [Left, Right] in turn (empty with a fixed rail)
 };
 
 // Largest wear depth of `worn` relative to `initial`, measured along the initial profile's normals, over the
 // tread (wheel-profile y > flange_root_y) and over the flange (y <= flange_root_y). flange_root_y = -25 mm
 // (S1002: the flange root lies between y = -26 and -20 mm).
 struct WheelWearDepths {
-  double tread_m = 0.0, flange_m = 0.0;
+  double tread_m = 0.0, flange_m = 0.0;  // largest depth (>= 0, m) over the tread / the flange; 0: no wear there
 };
 WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m = -0.025);
 

@@ -31,57 +31,78 @@
 
 namespace conforma {
 
-// One element of a solved patch (the fields the wear computation needs).
+// One element of a solved patch (the fields the wear computation needs). Lengths in m.
 struct ContactCell {
   double x_m = 0.0;            // along the track, from the wheel's diametral plane
   double s_m = 0.0;            // along the rail profile from the patch reference point (+ towards the field side)
   double rail_s_m = 0.0;       // arc length on the mounted rail profile
   double wheel_y_m = 0.0;      // wheel-profile lateral coordinate facing the cell
-  double area_m2 = 0.0, length_x_m = 0.0;
-  double pressure_Pa = 0.0;
+  double area_m2 = 0.0, length_x_m = 0.0;  // element area (m^2) and its length along x (area / strip width)
+  double pressure_Pa = 0.0;    // normal pressure of the patch's normal solution at the element centre
   double traction_x_Pa = 0.0, traction_s_Pa = 0.0;  // on the wheel, local (x, s) frame
-  double slip_x = 0.0, slip_s = 0.0;                // dimensionless slip (slip velocity / V)
-  bool in_slip = false;
+  double slip_x = 0.0, slip_s = 0.0;                // dimensionless slip (slip velocity / V); 0 in adhesion
+  bool in_slip = false;        // the element slips (traction at the bound mu p)
 };
 
-// Per patch: the keys of `conforma contact --json` (units in the names).
+// Per patch: the keys of `conforma contact --json` (units in the names). A patch is reported only when its normal
+// problem found contact. The tangential fields (fx_N, fy_N, mz_Nm, adhesion_area_m2, slip_area_m2,
+// frictional_power_W, the SDEC a_m / b_m, cells) are 0 / empty unless a FASTSIM ran: not with solve_tangential false,
+// zero creepage (tangential_status "no_creepage") or the reference model ("not_solved").
 struct PatchReport {
   ContactModel model = ContactModel::Hertz;  // the model that solved this patch (auto: the chosen one)
-  double auto_alpha_c_deg = 0.0;             // auto only: the conformity index estimated for the choice
+  double auto_alpha_c_deg = 0.0;             // auto only: the conformity index estimated for the choice, deg; else 0
+  // normal_status: PatchNormalSolution::status ("ok", "hertz_regularised", "contact_at_patch_boundary", ...);
+  // tangential_status: PatchTangentialSolution::status ("ok", "full_slip", "no_creepage", "not_solved", ...)
   std::string normal_status, tangential_status;
+  // N, N, N, N m on the wheel in the patch's contact frame: normal force along the reference normal n0, creep forces
+  // along x and along the rail profile t0 (+ field side), spin moment about n0
   double fn_N = 0.0, fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;
+  // Pa, Pa, m^2: maximum pressure, the model's p0 (patch_solver.hpp), contact area (KP models: on the curved surface)
   double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0;
-  double a_m = 0.0, b_m = 0.0;               // Hertz semi-axes, or the SDEC / equivalent ellipse
-  double width_m = 0.0, length_m = 0.0;      // extent along s^r and along x^r
-  double approach_m = 0.0;                   // approach of this patch along its reference normal
+  // m: Hertz semi-axes (hertz), or the SDEC of the KP patch (kp, kpec, conformal; only when the tangential problem
+  // was solved, else 0); 0 for the reference model
+  double a_m = 0.0, b_m = 0.0;
+  double width_m = 0.0, length_m = 0.0;      // extent along s^r and along x^r, m
+  // Approach of this patch along its reference normal, m. KP models: the solved one. hertz and reference: the rigid
+  // approach at the candidates' pose (load control: the Hertz push-down), without the load control's last push.
+  double approach_m = 0.0;
   double contact_angle_rad = 0.0;            // + towards the gauge side (geometry.hpp)
-  double y_contact_rail_m = 0.0, z_contact_rail_m = 0.0;  // reference point, mounted rail profile
-  double y_contact_wheel_m = 0.0;            // wheel-profile y at the reference point
-  double rolling_radius_m = 0.0;
-  double lead_m = 0.0;                       // longitudinal position of the reference point (yaw lead)
-  double xi = 0.0, eta = 0.0, phi_per_m = 0.0;  // creepages at the reference point
-  double alpha_c_deg = 0.0;                  // conformity index (paper 003 eq. 13)
-  bool is_conformal = false;
+  // Reference point in the mounted rail profile (y towards the field side, z up, origin at the rail top), m
+  double y_contact_rail_m = 0.0, z_contact_rail_m = 0.0;
+  double y_contact_wheel_m = 0.0;            // wheel-profile y at the reference point, m
+  double rolling_radius_m = 0.0;             // wheel rolling radius at the reference point, m
+  double lead_m = 0.0;                       // longitudinal position of the reference point (yaw lead), m
+  // Creepages at the reference point (xi, eta dimensionless, phi in 1/m): the given ones (creepages_given) or from
+  // the wheelset velocities (creepage.hpp)
+  double xi = 0.0, eta = 0.0, phi_per_m = 0.0;
+  double alpha_c_deg = 0.0;                  // conformity index (paper 003 eq. 13), deg; 0 for the hertz model
+  bool is_conformal = false;                 // alpha_c_deg > conformity_threshold_deg (KP and reference models)
+  // m^2, m^2, W; frictional_power_W is 0 for the kp and kpec models (patch_solver.hpp)
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
-  double vertical_force_N = 0.0, lateral_force_N = 0.0;  // normal + tangential force on the wheel, side frame
-  double reference_s_on_rail_m = 0.0;        // arc length of the reference point on the mounted rail
-  std::vector<ContactCell> cells;            // only with WheelContactOptions::keep_fields
+  double vertical_force_N = 0.0, lateral_force_N = 0.0;  // normal + tangential force on the wheel, side frame, N
+  double reference_s_on_rail_m = 0.0;        // arc length of the reference point on the mounted rail, m
+  // Only with WheelContactOptions::keep_fields and a solved tangential problem
+  std::vector<ContactCell> cells;
 };
 
+// Ok: at least one patch in contact (and the load reached in load control). NoContact: no patch (no
+// interpenetration, the wheel does not face the rail, or vertical_load_N == 0). NotConverged: load control failed:
+// no load bracket (no patches reported) or the load missed by more than 10x its tolerance (the last iterate's
+// patches reported).
 enum class WheelContactStatus { Ok, NoContact, NotConverged };
-const char* to_string(WheelContactStatus status);
+const char* to_string(WheelContactStatus status);  // "ok", "no_contact", "not_converged"
 
 struct WheelContactReport {
-  WheelContactStatus status = WheelContactStatus::NoContact;
-  Side side = Side::Left;
-  ContactModel model = ContactModel::Hertz;
+  WheelContactStatus status = WheelContactStatus::NoContact;  // see WheelContactStatus
+  Side side = Side::Left;                    // the wheel solved
+  ContactModel model = ContactModel::Hertz;  // WheelContactOptions::model (auto stays auto; per patch: PatchReport)
   WheelsetPose pose;                 // the pose the patches were solved at (vertical pushed down in load control)
   std::vector<PatchReport> patches;  // ordered along the rail, gauge side first
-  double vertical_force_N = 0.0;     // sum over patches (side frame z), pressure and creep forces
-  // Vertical component of the pressure (normal) forces alone: what load control balances against the load.
+  double vertical_force_N = 0.0;     // sum over patches (side frame z), pressure and creep forces, N
+  // Vertical component of the pressure (normal) forces alone, N: what load control balances against the load.
   double pressure_vertical_force_N = 0.0;
-  double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side)
-  int load_iterations = 0;
+  double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side), N
+  int load_iterations = 0;           // root-finder evaluations of the load control; 0 in approach mode
 };
 
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
@@ -101,7 +122,7 @@ class WheelContactCache {
   ~WheelContactCache();
   WheelContactCache(const WheelContactCache&) = delete;
   WheelContactCache& operator=(const WheelContactCache&) = delete;
-  struct Stats {
+  struct Stats {             // counts of calls since the cache was created
     long report_hits = 0;  // whole report reused
     long normal_hits = 0;  // normal problem reused, tangential solved
     long misses = 0;       // both solved

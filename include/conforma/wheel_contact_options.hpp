@@ -13,23 +13,29 @@
 
 namespace conforma {
 
+// validate() throws InputError outside the ranges given below.
 struct WheelContactOptions {
-  ContactModel model = ContactModel::Hertz;
-  Material material;
-  double friction_coefficient = 0.3;
-  // Load control (default): the wheel is pushed down until the vertical components of its patch forces carry
-  // this load. Set vertical_load_N < 0 to use the pose as given (approach mode, for multibody coupling).
+  ContactModel model = ContactModel::Hertz;  // contact model of every patch (auto: chosen per patch); default hertz
+  Material material;                         // both bodies; default steel G = 82 GPa, nu = 0.28
+  double friction_coefficient = 0.3;         // mu (-), >= 0, constant over the patch
+  // N, finite. Load control (default, 10 kN): the wheel is pushed down until the vertical components of its patch
+  // pressure forces carry this load; 0: unloaded wheel, no contact solved (status NoContact). Set vertical_load_N < 0
+  // to use the pose as given (approach mode, for multibody coupling).
   double vertical_load_N = 10e3;
-  double load_tolerance = kDefaultLoadTolerance;  // relative (load_control.hpp)
-  int fastsim_elements = kDefaultFastsimElements;           // FASTSIM elements per strip (and strips for the Hertz ellipse)
-  int kp_strips = kDefaultKpStrips;                  // strips across the contact of the KP solvers
-  int bem_x_elements = kDefaultBemXElements;             // reference BEM elements along x (strips: the candidate's ds)
+  double load_tolerance = kDefaultLoadTolerance;  // relative (load_control.hpp), > 0; default 1e-6
+  // FASTSIM elements per strip (and strips for the Hertz ellipse), >= 2; default 30
+  int fastsim_elements = kDefaultFastsimElements;
+  int kp_strips = kDefaultKpStrips;                  // strips across the contact of the KP solvers, >= 3; default 31
+  // reference BEM elements along x (strips: the candidate's ds), >= 8; default 64 (bem_reference.hpp)
+  int bem_x_elements = kDefaultBemXElements;
+  // Strip width ds of the candidate patches (PatchGeometry::ds_m, contact_candidates.hpp), m, > 0; default 0.1 mm
   double candidate_strip_width_m = 0.1e-3;
   // Load control, elastic flange: the wheel's reference (touching) position ignores gap minima whose rail
   // contact angle exceeds this, so a flange pressed against the rail interpenetrates and carries its force
   // elastically instead of lifting the wheel rigidly onto it (a worn, steep flange acts as a wall that the
   // rigid model can only pass by climbing). Default: every contact point counts (rigid flange).
-  double max_touching_contact_angle_rad = 1e300;
+  double max_touching_contact_angle_rad = 1e300;  // rad
+  // deg, finite; default 18: sets PatchReport::is_conformal (alpha_c_deg above it) of the KP and reference models
   double conformity_threshold_deg = kConformityThresholdDeg;
   // `conformal` model: virtual-penetration rule. true (default): CONTACT's variable eps (ConformalKpecOptions);
   // false: Kik-Piotrowski's constant eps = 0.55 (ConformalKpOptions). See kik_piotrowski.hpp.
@@ -39,10 +45,12 @@ struct WheelContactOptions {
   ModelSelectionOptions auto_selection;
   bool solve_tangential = true;        // false: normal problem only
   bool keep_fields = false;            // fill PatchReport::cells (pressure, traction, slip per element)
-  FastsimOptions fastsim;              // bound and marching (hertz model)
-  // When set, these creepages are used at every patch instead of the wheelset kinematics.
+  // bound and blend_flexibilities: hertz model only; marching: every model's FASTSIM
+  FastsimOptions fastsim;
+  // When set, these creepages are used at every patch instead of the wheelset kinematics (then no per-strip rigid
+  // slip for the conformal model, and the velocity's forward speed need not be > 0).
   bool creepages_given = false;
-  Creepages creepages;
+  Creepages creepages;                 // xi, eta (-), phi (1/m); finite; read only with creepages_given
   void validate() const;  // InputError naming the option
 };
 

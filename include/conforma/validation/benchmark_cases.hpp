@@ -5,9 +5,9 @@
 //               at the same normal force along the reference normal (fn_bar);
 //   tangential: the conformal model (conformal KP + curved FASTSIM) on a finer grid than any benchmarked one.
 // Cases: Manchester sweep (left wheel, every interpenetration region at the 10 kN Hertz push-down, creepages
-// of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of conforma/validation/analytic_patches.hpp),
-// the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral shifts, and a flange-root two-patch
-// contact of S1002 / 60E1 at 1:40 (both patches).
+// of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of
+// conforma/validation/analytic_patches.hpp), the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral
+// shifts, and a flange-root two-patch contact of S1002 / 60E1 at 1:40 (both patches).
 //
 // Wear index of a patch: W = sum over elements |p_t . s| dA (traction times dimensionless slip), i.e. the
 // frictional power per unit rolling speed [N]; the integrand of the T-gamma / Archard wear laws.
@@ -25,13 +25,14 @@ namespace conforma {
 struct BenchCase {
   std::string name;          // e.g. "mbench_07_p0", "groove_10.05", "worn_y3_p0", "flange_root_p1"
   std::string family;        // "mbench", "groove", "worn", "flange_root"
-  PatchGeometry patch;
-  double normal_load_N = 0.0;  // fn_bar, along the reference normal
+  PatchGeometry patch;         // the single patch every model solves
+  double normal_load_N = 0.0;  // fn_bar, along the reference normal, N
   FastsimCreepages creepages;  // uniform over the patch (reference point values)
-  double hertz_A_per_m = 0.0;  // Hertz curvatures at the smallest rigid gap of the region (the `hertz` model)
+  // Hertz curvatures A, B (1/m) at the smallest rigid gap of the region (the `hertz` model, and `auto`'s choice)
+  double hertz_A_per_m = 0.0;
   double hertz_B_per_m = 0.0;
-  Material material;
-  double friction_coefficient = 0.3;
+  Material material;                  // both bodies
+  double friction_coefficient = 0.3;  // mu (-)
 };
 
 // The fixed case set. shared_data_dir: the shared reference data folder (CONFORMA_SHARED_DATA). Throws InputError
@@ -47,30 +48,34 @@ std::vector<BenchCase> BenchCasesFromPose(const WheelsetTrackGeometry& geometry,
 
 // One model on one case at one grid.
 struct PatchSolveOptions {
-  ContactModel model = ContactModel::Conformal;  // Hertz, Kp, Kpec or Conformal (Reference: InputError)
-  int kp_strips = kDefaultKpStrips;          // strips across the contact (KP models)
-  int fastsim_elements = kDefaultFastsimElements;   // FASTSIM elements per strip (and strips of the Hertz ellipse)
-  double load_tolerance = kDefaultLoadTolerance;  // relative, on fn_bar
-  // > 0: approach given (one normal solve, as a multibody code in penetration mode calls it) instead of the load
+  ContactModel model = ContactModel::Conformal;  // Hertz, Kp, Kpec, Conformal or Auto (Reference: InputError)
+  int kp_strips = kDefaultKpStrips;          // strips across the contact (KP models), >= 3
+  // FASTSIM elements per strip (and strips of the Hertz ellipse), >= 2
+  int fastsim_elements = kDefaultFastsimElements;
+  double load_tolerance = kDefaultLoadTolerance;  // relative, on fn_bar, > 0
+  // m, >= 0. > 0: approach given (one normal solve, as a multibody code in penetration mode calls it) instead of the
+  // load
   double approach_m = 0.0;
   // Conformal model only: KPEC's variable virtual penetration (the pipeline's default, ConformalKpecOptions); false:
   // Kik-Piotrowski's eps = 0.55 (ConformalKpOptions), reported by the bench as the model "conformal_eps055".
   bool variable_epsilon = true;
-  bool solve_tangential = true;
-  void validate() const;
+  bool solve_tangential = true;  // false: normal problem only
+  void validate() const;         // InputError naming the option
 };
 
 // The bench's summary of one patch solve (patch_solver.hpp), in the bench's measures.
+// The normal numbers are 0 unless in_contact; the tangential ones (fx_N, fy_N, wear_index_N) also need a solved
+// tangential problem.
 struct BenchPatchResult {
   ContactModel model = ContactModel::Hertz;  // the model that solved it (auto: the chosen one)
-  bool in_contact = false;
-  std::string normal_status, tangential_status;
-  double pmax_Pa = 0.0, area_m2 = 0.0;
-  double fn_N = 0.0;          // along the reference normal
-  double fx_N = 0.0, fy_N = 0.0;  // tangential force on the wheel, patch reference frame (x, t0)
-  double wear_index_N = 0.0;  // sum |p_t . s| dA
-  double approach_m = 0.0;
-  double alpha_c_deg = 0.0;   // conformity index (KP models; 0 for Hertz)
+  bool in_contact = false;                   // PatchNormalSolution::in_contact
+  std::string normal_status, tangential_status;  // PatchNormalSolution / PatchTangentialSolution::status
+  double pmax_Pa = 0.0, area_m2 = 0.0;       // maximum pressure (Pa) and contact area (m^2) of the model
+  double fn_N = 0.0;          // along the reference normal, N
+  double fx_N = 0.0, fy_N = 0.0;  // tangential force on the wheel, patch reference frame (x, t0), N
+  double wear_index_N = 0.0;  // sum |p_t . s| dA, N
+  double approach_m = 0.0;    // approach solved at (load given) or given, m
+  double alpha_c_deg = 0.0;   // conformity index, deg (KP models; 0 for Hertz)
 };
 // One case through the one patch solver (load given, or approach given with options.approach_m > 0).
 PatchSolution SolveBenchPatch(const BenchCase& bench_case, const PatchSolveOptions& options);
@@ -79,41 +84,50 @@ BenchPatchResult SolveBenchCase(const BenchCase& bench_case, const PatchSolveOpt
 // The same model at a given approach (normal problem only): for the Fn error at the reference BEM's approach.
 double NormalForceAtApproach(const BenchCase& bench_case, const PatchSolveOptions& options, double approach_m);
 
+// The BemResult numbers of the reference solve (bem_reference.hpp).
 struct BemReferenceSolution {
-  std::string status;
+  std::string status;  // to_string(BemStatus): "converged", "not-converged", "no-contact"
+  // max pressure (Pa), contact area (m^2), fn_bar (N, = the case's load), solved approach (m)
   double pmax_Pa = 0.0, area_m2 = 0.0, fn_N = 0.0, approach_m = 0.0;
-  bool contact_at_grid_edge = false;
+  bool contact_at_grid_edge = false;  // the BEM contact reaches its grid's edge (BemResult)
 };
 // Reference BEM (Blanco-Lorenzo coefficients, load control on fn_bar) on the case's patch.
 BemReferenceSolution SolveBenchReference(const BenchCase& bench_case, int bem_x_elements = kDefaultBemXElements);
 
 struct BenchGrid {
-  int kp_strips = kDefaultKpStrips;
-  int fastsim_elements = kDefaultFastsimElements;
+  int kp_strips = kDefaultKpStrips;                // PatchSolveOptions::kp_strips
+  int fastsim_elements = kDefaultFastsimElements;  // PatchSolveOptions::fastsim_elements
   std::string label() const;  // "s31e30"
 };
 // 11/10, 21/20, 31/30 (the models' default), 61/50.
 std::vector<BenchGrid> DefaultBenchGrids();
 
+// One model x grid x case. Times in microseconds (not reproducible); errors dimensionless.
 struct BenchRow {
+  // model name (to_string, or "conformal_eps055"), BenchGrid::label, BenchCase::name, BenchCase::family
   std::string model, grid, case_name, family;
   double time_us = 0.0;       // median wall time per patch: load-controlled normal + tangential solve
-  double time_approach_us = 0.0;  // the same with the approach given (one normal solve) + tangential
-  double time_normal_us = 0.0;    // the approach-given normal solve alone
+  // the same with the approach given (one normal solve) + tangential; 0 when the model found no contact
+  double time_approach_us = 0.0;
+  double time_normal_us = 0.0;    // the approach-given normal solve alone; 0 when the model found no contact
   // Relative errors, signed: (model - reference) / reference; creep forces relative to |F_t| of the reference.
+  // err_fn: the model's fn_bar at the BEM's approach against the BEM's; err_wear against the tangential reference.
   double err_pmax = 0.0, err_area = 0.0, err_fn = 0.0, err_fx = 0.0, err_fy = 0.0, err_wear = 0.0;
-  double alpha_c_deg = 0.0;
-  std::string status;          // normal/tangential status of the model
+  double alpha_c_deg = 0.0;   // the model's conformity index, deg (hertz: that of the tangential reference)
+  // normal/tangential status of the model, "/bem_edge" appended when the BEM contact reaches its grid's edge, and
+  // for auto "/" and the chosen model
+  std::string status;
 };
 
 struct BenchOptions {
+  // models run (Reference is not benchmarked: it is the normal reference; Auto may be included)
   std::vector<ContactModel> models{ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal};
-  std::vector<BenchGrid> grids = DefaultBenchGrids();
+  std::vector<BenchGrid> grids = DefaultBenchGrids();  // each model at each grid
   bool conformal_eps055 = true;  // also run the conformal model with eps = 0.55 ("conformal_eps055")
   BenchGrid tangential_reference{121, 100};  // conformal model on this grid
-  int bem_x_elements = kDefaultBemXElements;
+  int bem_x_elements = kDefaultBemXElements;  // BemOptions::x_elements of the normal reference, >= 2
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)
-  int max_repeats = 201;
+  int max_repeats = 201;                     // ... but at most this many (and at least 5)
 };
 
 // Runs every model x grid x case (sequential, so that the timings are not disturbed). Deterministic apart from

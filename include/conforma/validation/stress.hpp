@@ -35,37 +35,42 @@ namespace conforma {
 
 // The profile pairs, built once (building the geometry tables is the expensive part).
 struct StressSetup {
+  // S1002 / 60E1 at 1:40; worn_high_mileage.prw / site_b_hr.prr; noisy S1002 / 60E1 (see above). Null until Make
   std::unique_ptr<WheelsetTrackGeometry> new_pair, worn_pair, noisy_pair;
   // Reads the worn pair from shared_data_dir; throws InputError when missing.
   static StressSetup Make(const std::string& shared_data_dir, std::uint64_t noise_seed = 7);
 };
 
+// validate() throws InputError outside the ranges given.
 struct StressOptions {
-  long cases = 2000;
-  long first_case = 0;             // run cases first_case ... first_case + cases - 1
-  std::uint64_t seed = 20261122;
+  long cases = 2000;               // number of cases run, >= 0
+  long first_case = 0;             // run cases first_case ... first_case + cases - 1; >= 0
+  std::uint64_t seed = 20261122;   // seed of every case's generator (with the case index)
   bool wheelset_mode = false;      // issue 3's check (see above)
-  int continuity_every = 8;        // 0: no continuity pairs
-  double continuity_step_m = 1e-6;
-  double continuity_bound_fraction = 0.01;
-  double jump_distance_m = 0.1e-3;
+  int continuity_every = 8;        // 0: no continuity pairs; >= 0
+  double continuity_step_m = 1e-6;           // lateral step of a continuity pair, m, > 0
+  double continuity_bound_fraction = 0.01;   // bound on |dF| as a fraction of the load (dimensionless), > 0
+  double jump_distance_m = 0.1e-3;           // reference-point move along the rail counted as a jump, m, > 0
   int threads = 0;                 // OpenMP threads; 0 = the default
   void validate() const;
 };
 
+// Counts over the cases run (a case counts once however many of its wheels or patches are affected).
 struct StressSummary {
-  long cases = 0, wheel_cases = 0, patch_cases = 0, degenerate_cases = 0;
+  long cases = 0, wheel_cases = 0, patch_cases = 0, degenerate_cases = 0;  // cases run, and by kind (see above)
   long patches = 0;              // solved patches (wheel cases) / in-contact patches (patch cases)
   long non_finite = 0;           // any NaN/inf in a result
   long crashes = 0;              // an exception other than InputError
   long input_errors = 0;         // InputError: expected only for degenerate patches
   long unexpected_input_errors = 0;  // InputError on a valid random situation
+  // cases with a wheel (or the patch) without contact / a wheel whose load control did not converge
   long no_contact = 0, not_converged = 0;
+  // continuity pairs solved; of these, skipped as contact-point jumps; above the bound and not shrinking (failures)
   long continuity_pairs = 0, continuity_jumps = 0, continuity_violations = 0;
   long continuity_steep = 0;     // above the bound at 1 um but shrinking with the step: stiff, continuous
   double max_continuity_fraction = 0.0;  // largest |dF| / load among the non-jump pairs
   std::uint64_t digest = 0;      // hash of every result number, in case order
-  double seconds = 0.0;
+  double seconds = 0.0;          // wall-clock time of the run, s (not reproducible)
   std::vector<std::string> failures;  // descriptions of the first failures (NaN, crash, continuity)
   bool passed() const { return non_finite == 0 && crashes == 0 && unexpected_input_errors == 0 && continuity_violations == 0; }
 };

@@ -39,16 +39,17 @@ PlanarComparison ParsePlanarComparison(const std::string& name);
 // The patch as a planar contact model sees it: rail and wheel surfaces of the curvilinear strips (rail points
 // integrated from the tangents t(s) = cos(alpha) t0 - sin(alpha) n0, wheel points displaced by gap(s) along
 // n(s) = cos(alpha) n0 + sin(alpha) t0, patch.hpp / curved_fastsim.hpp) resampled on a uniform lateral grid along t0
-// (spacing ds) with the gap measured along the reference normal n0, alpha = 0. Strips whose normal is turned by 85 deg
-// or more, and any part where the surfaces fold back over t0, are left out. Throws InputError for an inconsistent
-// patch.
+// (spacing ds) with the gap measured along the reference normal n0, alpha = 0. Strips whose normal is turned by
+// 85 deg or more, and any part where the surfaces fold back over t0, are left out. Throws InputError for an
+// inconsistent patch.
 PatchGeometry FlattenPatch(const PatchGeometry& curved);
 
+// validate() throws InputError outside the ranges given.
 struct ThresholdOptions {
-  double tolerance = 0.05;
-  PlanarComparison against = PlanarComparison::FlattenedKp;
-  int kp_strips = kDefaultKpStrips;
-  int fastsim_elements = kDefaultFastsimElements;
+  double tolerance = 0.05;                                   // on d (relative difference, dimensionless), > 0
+  PlanarComparison against = PlanarComparison::FlattenedKp;  // the planar model compared
+  int kp_strips = kDefaultKpStrips;                          // grid of both models: strips across the contact, >= 3
+  int fastsim_elements = kDefaultFastsimElements;            // ... and FASTSIM elements per strip, >= 2
   // Virtual-penetration rule of BOTH models compared. false (default): Kik-Piotrowski's eps = 0.55, the formulation
   // of paper 003 whose 18 deg threshold is examined (conformal KP vs planar KP). true: KPEC's variable eps on both
   // sides (the pipeline's default conformal model vs KPEC); there the Blanco correction changes p_max far less.
@@ -57,11 +58,12 @@ struct ThresholdOptions {
 };
 
 struct ThresholdPoint {
-  std::string name, family;
+  std::string name, family;       // of the BenchCase situation
   double alpha_c_deg = 0.0;       // conformal KP patch
   double contact_angle_deg = 0.0; // reference normal from the track vertical
-  double d_pmax = 0.0, d_area = 0.0, d_creep = 0.0, d_wear = 0.0, d_max = 0.0;
+  double d_pmax = 0.0, d_area = 0.0, d_creep = 0.0, d_wear = 0.0, d_max = 0.0;  // relative differences (above), >= 0
   bool valid = false;             // both models found a contact
+  // "normal/tangential|normal/tangential" statuses of the conformal and the planar model, or "flatten: <error>"
   std::string status;
 };
 
@@ -74,9 +76,9 @@ std::vector<ThresholdPoint> CompareConformalPlanar(const std::vector<BenchCase>&
 struct ThresholdFit {
   double threshold_deg = 0.0;      // alpha* of the step fit (infinity when no point exceeds the tolerance)
   double bracket_low_deg = 0.0;    // largest alpha_c below alpha* (0 if none)
-  int misclassified = 0, points = 0;
+  int misclassified = 0, points = 0;  // points on the wrong side of alpha*; valid points fitted
   int exceeding = 0;               // points with d > tol
-  double power_c = 0.0, power_k = 0.0, power_r2 = 0.0;
+  double power_c = 0.0, power_k = 0.0, power_r2 = 0.0;  // d = c alpha_c^k (alpha_c in deg) and its R^2 in log-log
   double power_threshold_deg = 0.0;  // (tol / c)^(1/k); 0 when the fit is impossible
 };
 // d_of selects the difference (d_max by default: pass nullptr).

@@ -17,17 +17,21 @@
 namespace conforma {
 
 struct En15302Amplitude {
+  // amplitude y_hat (mm) of a ben_E<n>.dat row; our equivalent conicity; the file's reference value and its
+  // tolerance band [lower, upper] (conicities dimensionless, tan(gamma_e))
   double amplitude_mm = 0.0, conicity = 0.0, reference = 0.0, lower = 0.0, upper = 0.0;
   bool ok = false;  // status Ok and inside [lower, upper]
 };
 
 struct En15302Result {
   int combination = 0;                 // 1..9
-  std::vector<double> y_mm, delta_r_mm, reference_delta_r_mm;  // on the reference grid
-  double max_delta_r_error_mm = 0.0;
-  int points_over_tolerance = 0;       // |Delta r - reference| > 0.05 mm
-  std::vector<En15302Amplitude> amplitudes;
-  int outside_band = 0;
+  // lateral shift y, our Delta r (NaN where the equilibrium did not converge) and dr_ce_E<n>.dat's, on the reference
+  // grid (0.1 mm), mm
+  std::vector<double> y_mm, delta_r_mm, reference_delta_r_mm;
+  double max_delta_r_error_mm = 0.0;   // max |Delta r - reference| over the grid, mm (inf when a point is NaN)
+  int points_over_tolerance = 0;       // |Delta r - reference| > 0.05 mm (NaN points included)
+  std::vector<En15302Amplitude> amplitudes;  // one per row of ben_E<n>.dat
+  int outside_band = 0;                // amplitudes not ok
 };
 
 // Runs one combination (1..9). Throws InputError for a bad combination number or unreadable data.

@@ -14,13 +14,14 @@
 
 namespace conforma {
 
+// One row of the reference CSV, in CONTACT's frames and units (columns of the same names; roll: roll_ws_rad).
 struct ManchesterReferenceCase {
-  int id = 0;
-  double y_ws_mm = 0.0, yaw_mrad = 0.0, roll_rad = 0.0;
-  double y_cp_rail_mm = 0.0, delta_cp_rad = 0.0;
-  double fn_N = 0.0, fx_N = 0.0, fs_N = 0.0, mn_Nmm = 0.0;
-  double xi = 0.0, eta = 0.0, phi_per_mm = 0.0;
-  double p_max_MPa = 0.0, area_mm2 = 0.0;
+  int id = 0;                                              // column `case`
+  double y_ws_mm = 0.0, yaw_mrad = 0.0, roll_rad = 0.0;    // wheelset pose (CONTACT's track frame)
+  double y_cp_rail_mm = 0.0, delta_cp_rad = 0.0;           // contact point on the rail profile, contact angle
+  double fn_N = 0.0, fx_N = 0.0, fs_N = 0.0, mn_Nmm = 0.0;  // normal, creep forces (N) and spin moment (N mm)
+  double xi = 0.0, eta = 0.0, phi_per_mm = 0.0;            // creepages (xi, eta dimensionless; spin 1/mm)
+  double p_max_MPa = 0.0, area_mm2 = 0.0;                  // maximum pressure, contact area
 };
 
 // Reads the CSV (InputError naming the file and line on malformed content).
@@ -29,17 +30,18 @@ std::vector<ManchesterReferenceCase> ReadManchesterReference(const std::string& 
 struct ManchesterComparison {
   ManchesterReferenceCase reference;
   WheelContactReport report;  // left wheel
-  // main patch (largest normal force) against the reference, relative errors unless stated
+  // Ours: fn_N, area_mm2, fx_N, fs_N summed over all patches; pmax_MPa, y_cp_mm (CONTACT's rail y) and delta_rad of
+  // the main patch (largest normal force). All 0 without a patch.
   double fn_N = 0.0, pmax_MPa = 0.0, area_mm2 = 0.0, fx_N = 0.0, fs_N = 0.0, y_cp_mm = 0.0, delta_rad = 0.0;
-  double err_fn = 0.0, err_pmax = 0.0, err_area = 0.0;
-  double err_fx_N = 0.0, err_fs_N = 0.0;  // absolute [N]
-  int patches = 0;
+  double err_fn = 0.0, err_pmax = 0.0, err_area = 0.0;  // relative: ours / reference - 1
+  double err_fx_N = 0.0, err_fs_N = 0.0;  // absolute [N]: ours - reference
+  int patches = 0;                        // patches of the wheel
 };
 
 struct ManchesterOptions {
-  ContactModel model = ContactModel::Conformal;
+  ContactModel model = ContactModel::Conformal;  // WheelContactOptions::model
   bool creepages_from_file = true;  // use each case's xi, eta, phi (as the issue asks); else the kinematics
-  int fastsim_elements = kDefaultFastsimElements;
+  int fastsim_elements = kDefaultFastsimElements;  // WheelContactOptions::fastsim_elements, >= 2
 };
 
 // Runs every case (profiles from the shared data folder `shared_data_dir`); cases are independent and run in
