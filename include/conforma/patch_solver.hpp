@@ -78,9 +78,6 @@ struct PatchTangentialSolution {
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   FastsimResult field;                         // element traction and slip
   std::vector<double> element_width_m;         // lateral width of each element of `field`, m (hertz: 2b / ny)
-  // Meant as the x of the field's origin relative to the patch reference point, m. No model sets it: always 0
-  // (the pipeline shifts a Hertz field by the rigid point's lead_m itself).
-  double field_x_offset_m = 0.0;
 };
 
 // Registry entry of one contact model.
