@@ -33,4 +33,23 @@ struct CApiMBenchModel {
         conforma::MakeSymmetricTrack(conforma::LoadProfile(wheel, wo), conforma::LoadProfile(rail, ro), 0.0));
   }
   ~CApiMBenchModel() { conforma_model_destroy(model); }
+
+  // The Manchester pose at lateral shift y_mm (yaw = 2.4 y mrad, 2 m/s, r0 = 0.46 m) and the velocity the C++
+  // pipeline gets for it.
+  static conforma_wheelset_state State(double y_mm) {
+    conforma_wheelset_state s{};
+    s.lateral_m = y_mm * 1e-3;
+    s.yaw_rad = 2.4 * y_mm * 1e-3;
+    s.forward_speed_m_s = 2.0;
+    s.axle_angular_velocity_rad_s = 2.0 / 0.46;
+    return s;
+  }
+  static conforma::WheelsetVelocity Velocity() { return conforma::WheelsetVelocity{2.0, 0.0, 0.0, 2.0 / 0.46}; }
+  // Evaluation options: the defaults with the rigid wheelset equilibrium first (as the reference computes it).
+  static conforma_evaluation_options RigidEquilibriumOptions() {
+    conforma_evaluation_options o;
+    conforma_default_evaluation_options(&o);
+    o.rigid_equilibrium = 1;
+    return o;
+  }
 };

@@ -51,19 +51,13 @@ TEST(CApiFields, EveryCPatchFieldIsTheTableFieldOfItsName) {
 
   int patches = 0, two_patch_wheels = 0;
   for (double y_mm : {0.0, 3.0, 5.0, 6.0, 6.5, 7.0, 8.0}) {
-    conforma_wheelset_state s{};
-    s.lateral_m = y_mm * 1e-3;
-    s.yaw_rad = 2.4 * y_mm * 1e-3;
-    s.forward_speed_m_s = 2.0;
-    s.axle_angular_velocity_rad_s = 2.0 / 0.46;
-    conforma_evaluation_options o;
-    conforma_default_evaluation_options(&o);
-    o.rigid_equilibrium = 1;
+    const conforma_wheelset_state s = CApiMBenchModel::State(y_mm);  // Manchester: yaw = 2.4 y mrad
+    const conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
     conforma_wheelset_result r;
     ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
 
     const conforma::EquilibriumResult eq = geometry.SolveRigidEquilibrium(s.lateral_m, s.yaw_rad);
-    const conforma::WheelsetVelocity v{2.0, 0.0, 0.0, 2.0 / 0.46};
+    const conforma::WheelsetVelocity v = CApiMBenchModel::Velocity();
     for (conforma::Side side : {conforma::Side::Left, conforma::Side::Right}) {
       const conforma::WheelContactReport ref = conforma::SolveWheelContact(geometry, side, eq.pose, v, options);
       const conforma_wheel_result& w = r.wheel[conforma::side_index(side)];
