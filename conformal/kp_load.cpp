@@ -53,7 +53,8 @@ KpResult SolveKikPiotrowskiForLoad(const PatchGeometry& geometry, double load_N,
     current = kp_detail::SolveKikPiotrowskiOnInterpolant(patch, std::max(first_guess + push, 0.0), options.kp);
     return current.fn_N;
   };
-  const LoadControlResult load = SolveLoadControl(carried, load_N, first_guess, options.relative_tolerance);
+  const LoadControlResult load =
+      SolveLoadControl(carried, load_N, first_guess, options.relative_tolerance, LoadResponse::HertzPower);
   // the last evaluation is at the solution's push; a missed load is a status, never a silent result
   if (load.status != LoadControlStatus::Ok && (current.status == KpStatus::Ok ||
                                                current.status == KpStatus::ContactAtPatchBoundary ||

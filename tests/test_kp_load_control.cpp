@@ -37,6 +37,14 @@ TEST(KpLoadControl, OneLoadControlFindsTheAnalyticPush) {
   ASSERT_EQ(r.status, LoadControlStatus::Ok);
   EXPECT_NEAR(g + r.push_m, std::pow(load / C, 2.0 / 3.0), 1e-12 * g);
   EXPECT_LE(std::fabs(r.residual_N), 1e-12 * load);
+  // on N^(2/3), linear in the push for N ~ delta^1.5, false position lands on the root in one step
+  int linear_steps = r.iterations;
+  const LoadControlResult power = SolveLoadControl(carried, load, g, 1e-12, LoadResponse::HertzPower);
+  ASSERT_EQ(power.status, LoadControlStatus::Ok);
+  EXPECT_NEAR(g + power.push_m, std::pow(load / C, 2.0 / 3.0), 1e-12 * g);
+  EXPECT_LE(std::fabs(power.residual_N), 1e-12 * load);
+  EXPECT_LE(power.iterations, 2);
+  EXPECT_LT(power.iterations, linear_steps);
   // a load the contact cannot carry (saturating N) is a status, not a number
   auto saturating = [&](double push) { return 0.5 * load * std::tanh(1e5 * std::max(push, 0.0)); };
   EXPECT_EQ(SolveLoadControl(saturating, load, g, 1e-10).status, LoadControlStatus::NoBracket);

@@ -20,6 +20,11 @@ enum class LoadControlStatus {
 const char* to_string(LoadControlStatus status);  // "ok", "no_bracket", "not_converged"
 
 // With NoBracket every field is 0 (push_m is then not a solution).
+// How the root is sought. Linear: on carried - load. HertzPower: on carried^(2/3) - load^(2/3), which is linear in
+// the push for a Hertzian contact (N ~ delta^1.5, docs/physics-reference.md §1.2), so that false position lands
+// on the root of a near-Hertzian patch in one or two steps; the tolerance is still on the load.
+enum class LoadResponse { Linear, HertzPower };
+
 struct LoadControlResult {
   LoadControlStatus status = LoadControlStatus::NoBracket;  // see LoadControlStatus
   double push_m = 0.0;      // m, beyond the first guess; carried_load was evaluated here last (Ok / NotConverged)
@@ -30,6 +35,6 @@ struct LoadControlResult {
 // carried_load(push) for push in metres beyond the first guess; scale_m (> 0) the size of the first bracket;
 // tolerance: |carried - load| <= relative_tolerance * load. load_N > 0.
 LoadControlResult SolveLoadControl(const std::function<double(double)>& carried_load, double load_N, double scale_m,
-                                   double relative_tolerance);
+                                   double relative_tolerance, LoadResponse response = LoadResponse::Linear);
 
 }  // namespace conforma

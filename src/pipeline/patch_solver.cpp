@@ -92,7 +92,8 @@ PatchSolution SolvePatch(const PatchProblem& problem, const WheelContactOptions&
     };
     // first bracket [0.9, 1.025] x the first guess: a Hertz guess is within a few per cent of the KP answers
     // (docs/physics-reference.md §3.6), and the bracket expands where it is not
-    out.load = SolveLoadControl(carried, problem.normal_load_N, kFirstBracketFraction * guess, options.load_tolerance);
+    out.load = SolveLoadControl(carried, problem.normal_load_N, kFirstBracketFraction * guess, options.load_tolerance,
+                                LoadResponse::HertzPower);
     if (out.load.status != LoadControlStatus::Ok) {
       out.normal.in_contact = false;
       out.normal.status = to_string(out.load.status);
