@@ -12,12 +12,6 @@
 
 namespace conforma::interop {
 
-Profile WheelProfileFrom(const std::string& name_or_file) { return WheelProfileByNameOrFile(name_or_file); }
-
-Profile RailProfileFrom(const std::string& name_or_file, bool* built_in) {
-  return RailProfileByNameOrFile(name_or_file, built_in);
-}
-
 std::unique_ptr<WheelsetTrackGeometry> MakeTrackGeometry(const Profile& wheel, const Profile& rail,
                                                          double inclination_rad, const TrackSpec& d) {
   require_non_negative(inclination_rad, "rail inclination");
@@ -32,9 +26,9 @@ std::unique_ptr<WheelsetTrackGeometry> MakeTrackGeometry(const Profile& wheel, c
 }
 
 std::unique_ptr<WheelsetTrackGeometry> MakeTrackGeometry(const TrackSpec& spec) {
-  const Profile wheel = WheelProfileFrom(spec.wheel);
+  const Profile wheel = WheelProfileByNameOrFile(spec.wheel);
   bool built_in = false;
-  const Profile rail = RailProfileFrom(spec.rail, &built_in);
+  const Profile rail = RailProfileByNameOrFile(spec.rail, &built_in);
   const double inclination = spec.inclination_rad ? *spec.inclination_rad : built_in ? rail_inclination_1in40() : 0.0;
   return MakeTrackGeometry(wheel, rail, inclination, spec);
 }

@@ -11,14 +11,11 @@
 #include <Eigen/Core>
 
 #include "conforma/geometry.hpp"
+#include "conforma/profile_by_name.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma::interop {
 
-// A wheel profile: "S1002" or a profile file.
-Profile WheelProfileFrom(const std::string& name_or_file);
-// A rail profile: "60E1", "54E1", "50E6", "50E4" (uninclined) or a file; *built_in tells which.
-Profile RailProfileFrom(const std::string& name_or_file, bool* built_in);
 
 struct TrackSpec {
   std::string wheel = "S1002";

@@ -144,9 +144,9 @@ Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<d
     py::gil_scoped_release release;
     return Track{interop::MakeTrackGeometry(spec)};
   }
-  Profile w = wheel_is_name ? interop::WheelProfileFrom(wheel.cast<std::string>()) : wheel.cast<Profile>();
+  Profile w = wheel_is_name ? WheelProfileByNameOrFile(wheel.cast<std::string>()) : wheel.cast<Profile>();
   bool built_in = false;
-  Profile r = rail_is_name ? interop::RailProfileFrom(rail.cast<std::string>(), &built_in) : rail.cast<Profile>();
+  Profile r = rail_is_name ? RailProfileByNameOrFile(rail.cast<std::string>(), &built_in) : rail.cast<Profile>();
   if (w.kind() != ProfileKind::Wheel) throw InputError("Track: the wheel profile is a rail profile");
   if (r.kind() != ProfileKind::Rail) throw InputError("Track: the rail profile is a wheel profile");
   const double incl = inclination_rad ? *inclination_rad : built_in ? rail_inclination_1in40() : 0.0;

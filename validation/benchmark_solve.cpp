@@ -57,12 +57,6 @@ double HertzApproach(const BenchCase& c) {
   return h.status == HertzStatus::Ok ? h.approach_m : 0.0;
 }
 
-// `auto` chooses at the patch's rigid approach, or, for a patch built touching (rigid_approach_m = 0, e.g. the
-// analytic grooves), at the Hertz approach for the case's load.
-double SelectionApproach(const BenchCase& c) {
-  return c.patch.rigid_approach_m > 0.0 ? c.patch.rigid_approach_m : HertzApproach(c);
-}
-
 }  // namespace
 
 PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& options) {
@@ -76,7 +70,9 @@ PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& optio
   // the load control starts at the Hertz approach (or the rigid approach where Hertz has no solution)
   const double hertz_approach = HertzApproach(c);
   problem.first_guess_approach_m = hertz_approach > 0.0 ? hertz_approach : std::max(c.patch.rigid_approach_m, 1e-5);
-  problem.selection_approach_m = SelectionApproach(c);
+  // `auto` chooses at the patch's rigid approach, or, for a patch built touching (rigid_approach_m = 0, e.g. the
+  // analytic grooves), at the Hertz approach for the case's load
+  problem.selection_approach_m = c.patch.rigid_approach_m > 0.0 ? c.patch.rigid_approach_m : hertz_approach;
   problem.creepages.reference = c.creepages;
   problem.rolling_speed_m_per_s = 1.0;  // frictional power per unit speed = wear index
   problem.solve_tangential = options.solve_tangential;

@@ -344,7 +344,9 @@ WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTr
           const ProfileMapping map(geometry.mounted_rail(side), hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m,
                                    point.wheel_profile_m.x());
           p.cells = CellsOf(t.field, map, hertz ? point.lead_m : 0.0, [&t](size_t e) { return t.element_width_m[e]; },
-                            [&s, model](double x, double y) { return PatchPressureAt(model, s, x, y); });
+                            [&s, pressure_at = ContactModelSolverOf(model).pressure_at](double x, double y) {
+                              return pressure_at(s, x, y);
+                            });
         }
       }
     } else {
