@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "exit_status.hpp"
 #include "conforma/error.hpp"
 
 int main(int argc, char** argv) {
@@ -14,6 +15,11 @@ int main(int argc, char** argv) {
   app.option_defaults()->always_capture_default();
   app.require_subcommand(1);
   app.set_version_flag("--version", "conforma 0.1.0");
+  // exit 0 with an incomplete result (not converged, partial): the output still carries the status
+  bool allow_partial = false;
+  app.add_flag("--allow-partial", allow_partial,
+               "exit 0 even when the result is incomplete (the output still says what is missing)");
+  app.fallthrough();  // --allow-partial may follow the subcommand
   conforma::cli::RegisterContactCommand(app);
   conforma::cli::RegisterSweepCommand(app);
   conforma::cli::RegisterProfileCommand(app);
@@ -29,12 +35,16 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const conforma::cli::IncompleteResult& e) {
+    std::cerr << "conforma: " << (allow_partial ? "warning" : "error") << ": incomplete result: " << e.what()
+              << (allow_partial ? " (--allow-partial: exit 0)" : "") << "\n";
+    return allow_partial ? 0 : static_cast<int>(e.code());
   } catch (const conforma::InputError& e) {
     std::cerr << "conforma: error: " << e.what() << "\n";
-    return 2;
+    return static_cast<int>(conforma::cli::ExitCode::InputError);
   } catch (const std::exception& e) {
     std::cerr << "conforma: internal error: " << e.what() << "\n";
-    return 3;
+    return static_cast<int>(conforma::cli::ExitCode::InternalError);
   }
   return 0;
 }
