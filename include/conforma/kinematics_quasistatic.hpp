@@ -55,6 +55,9 @@
 // k = 2 pi / L_K, L_K = 2 pi sqrt(r0 b0 / lambda) with the equivalent conicity lambda = -Delta r(-A) / (2 A) of
 // the rigid equilibrium, at tangent_phases equally spaced phases theta (theta = 0 is the centred wheelset) with
 // equal weights 1 / tangent_phases (the time average over one period). A = 0 gives the single centred sample.
+// The axle speed of each sample follows from the axle's torque balance (free rolling, or axle_torque_Nm applied:
+// axle_rolling_speed.hpp, docs/physics-reference.md §12.3), as in curves; a sample whose balance fails makes the
+// status NotConverged (tangent_rolling_failures counts them).
 #include <array>
 #include <functional>
 #include <string>
@@ -74,6 +77,9 @@ struct QuasiStaticOptions {
   double gravity_m_s2 = 9.81;            // g, m/s^2, > 0
   double cant_base_m = 1.5;              // m, > 0: a_nc = V^2 / R - g h / cant_base (distance of the rail centres)
   bool free_axle_rotation = true;        // false: Omega = V / r0 and no axle torque equation
+  // Drive torque applied to every axle (docs/physics-reference.md §12.3): the contact torque sum F_x r_p balances
+  // it, in curves and on tangent track. N m, finite; > 0 traction, < 0 braking, 0 free (unpowered) rolling.
+  double axle_torque_Nm = 0.0;
   // Tangent track samples (see the header comment).
   double tangent_amplitude_m = 3e-3;     // A, m, >= 0 (0: one centred sample per wheelset)
   int tangent_phases = 8;                // phases theta per wheelset, >= 1
@@ -157,6 +163,8 @@ struct QuasiStaticResult {
   std::vector<WheelsetQuasiStaticReport> wheelsets;            // equilibrium, one per wheelset
   std::vector<BogieQuasiStaticReport> bogies;                  // one per bogie, from the front
   double total_lateral_force_N = 0.0;                          // sum of Y over all wheels, N (= m_total a_nc)
+  // Tangent-track samples whose axle torque balance did not converge (their axle speed is the best found).
+  int tangent_rolling_failures = 0;
 };
 
 // The contact evaluation used in the loop (SolveWheelContact or a substitute with the same contract).

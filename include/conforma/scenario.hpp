@@ -6,7 +6,7 @@
 //   name: default_metro
 //   vehicle: { base: metro | minuetto, bogie_count: 5, wheelbase_m: 2.0, ... any VehicleParameters field }
 //   kinematics: { provider: quasistatic | centred | kinematic, tangent_amplitude_mm: 3, tangent_phases: 8,
-//                 cant_base_m: 1.5, free_axle_rotation: true }
+//                 cant_base_m: 1.5, free_axle_rotation: true, axle_torque_Nm: 0 }
 //       quasistatic: kinematics_quasistatic.hpp (Ceres, contact model in the loop) -- the default;
 //       centred:     every wheelset centred and unyawed, yaw rate V/R, pure rolling (fast, for tests);
 //       kinematic:   the kinematic curving estimate of wear_simulation.hpp (flange contact + angle of attack).
@@ -54,6 +54,8 @@ struct ScenarioKinematics {
   int tangent_phases = 8;             // phases of the tangent-track oscillation
   double cant_base_m = 1.5;           // m
   bool free_axle_rotation = true;     // false: axle speed V / r0
+  // Drive torque per axle, N m (+ traction, - braking, 0 free rolling; kinematics_quasistatic.hpp §12.3).
+  double axle_torque_Nm = 0.0;
   // Contact model inside the quasi-static curving solve (the multibody side). Unset: the wear step's model (the
   // co-simulation of paper 003 §2). A cheaper model here (e.g. hertz, as a multibody code with its own contact
   // would use) leaves the wear step's contact model unchanged and makes conformal runs several times faster.

@@ -9,6 +9,7 @@
 
 #include <ceres/ceres.h>
 
+#include "conforma/axle_rolling_speed.hpp"
 #include "conforma/error.hpp"
 
 namespace conforma {
@@ -27,6 +28,7 @@ void QuasiStaticOptions::validate() const {
   require_positive(cant_base_m, "cant_base_m");
   require_non_negative(tangent_amplitude_m, "tangent_amplitude_m");
   require_finite(tangent_start_offset_m, "tangent_start_offset_m");
+  require_finite(axle_torque_Nm, "axle_torque_Nm");
   if (tangent_phases < 1) throw InputError("option 'tangent_phases' must be >= 1");
   if (max_iterations < 1) throw InputError("option 'max_iterations' must be >= 1");
   require_positive(residual_tolerance, "residual_tolerance");
@@ -122,7 +124,9 @@ void BogieResiduals(const BogieContext& ctx, const double* p, const WheelsetForc
     if (s) s->lateral[j] = Fy, s->yaw[j] = Mz;
     r[3 * j] = (f[j].lateral_N + Fy - ctx.m_w * ctx.a_nc) / ctx.Q0;
     r[3 * j + 1] = (f[j].yaw_moment_Nm + Mz) / (ctx.Q0 * ctx.b0);
-    r[3 * j + 2] = ctx.options->free_axle_rotation ? f[j].axle_torque_Nm / (ctx.Q0 * ctx.r0) : p[3 * j + 2];
+    r[3 * j + 2] = ctx.options->free_axle_rotation
+                       ? (f[j].axle_torque_Nm - ctx.options->axle_torque_Nm) / (ctx.Q0 * ctx.r0)
+                       : p[3 * j + 2];
     bogie_lateral -= Fy;
     bogie_yaw -= Mz + x * Fy;
   }
@@ -499,6 +503,12 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   conicity = std::max(conicity, 1e-3);  // a (nearly) cylindrical tread: long wavelength, still finite
   const double k = 1.0 / std::sqrt(base.r0 * base.b0 / conicity);  // 2 pi / L_K (Klingel)
   const double V = track_class.speed_m_s;
+  // Axle speed per phase from the torque balance (§12.3): every wheelset of the vehicle has the same pose,
+  // velocities and loads at a given phase, so each phase is solved once.
+  AxleRollingSpeedOptions rolling;
+  rolling.applied_torque_Nm = options.axle_torque_Nm;
+  rolling.torque_tolerance_Nm = options.residual_tolerance * base.Q0 * base.r0;
+  std::map<int, double> axle_speed;  // phase -> Omega
   for (const WheelsetQuasiStaticReport& w : result.wheelsets) {
     WheelsetPose guess;
     for (int n = 0; n < options.tangent_phases; ++n) {
@@ -517,6 +527,19 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
       s.velocity.lateral_velocity_m_s = V * psi;
       s.velocity.yaw_rate_rad_s = -V * A * k * k * std::sin(theta);
       s.velocity.axle_angular_velocity_rad_s = V / base.r0;
+      if (options.free_axle_rotation) {
+        auto known = axle_speed.find(n);
+        if (known == axle_speed.end()) {
+          const AxleRollingSpeedResult roll = SolveAxleRollingSpeed(geometry, s.pose, s.velocity, base.Q,
+                                                                    base.contact_options, contact, base.r0, rolling);
+          if (roll.status != AxleRollingSpeedStatus::Converged) {
+            ++result.tangent_rolling_failures;
+            if (result.status == QuasiStaticStatus::Converged) result.status = QuasiStaticStatus::NotConverged;
+          }
+          known = axle_speed.emplace(n, roll.axle_angular_velocity_rad_s).first;
+        }
+        s.velocity.axle_angular_velocity_rad_s = known->second;
+      }
       s.vertical_load_N[0] = base.Q[0];
       s.vertical_load_N[1] = base.Q[1];
       s.track_curvature_per_m = 0.0;

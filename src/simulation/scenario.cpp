@@ -289,7 +289,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   if (root["vehicle"]) ParseVehicle(r, root["vehicle"], &s.vehicle);
   if (const YAML::Node k = root["kinematics"]) {
     r.check_keys(k, "kinematics", {"provider", "tangent_amplitude_mm", "tangent_phases", "cant_base_m", "free_axle_rotation",
-                                     "contact_model"});
+                                     "axle_torque_Nm", "contact_model"});
     if (k["provider"]) {
       const std::string p = r.text(k["provider"], "kinematics.provider");
       if (p == "quasistatic") s.kinematics.provider = KinematicsProvider::QuasiStatic;
@@ -301,6 +301,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     if (k["tangent_phases"]) s.kinematics.tangent_phases = r.integer(k["tangent_phases"], "kinematics.tangent_phases");
     if (k["cant_base_m"]) s.kinematics.cant_base_m = r.number(k["cant_base_m"], "kinematics.cant_base_m");
     if (k["free_axle_rotation"]) s.kinematics.free_axle_rotation = r.boolean(k["free_axle_rotation"], "kinematics.free_axle_rotation");
+    if (k["axle_torque_Nm"]) s.kinematics.axle_torque_Nm = r.number(k["axle_torque_Nm"], "kinematics.axle_torque_Nm");
     if (k["contact_model"]) {
       const std::string m = r.text(k["contact_model"], "kinematics.contact_model");
       s.kinematics.contact_model = ModelFromName(r, m, "kinematics.contact_model");

@@ -227,6 +227,7 @@ QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactM
   qo.tangent_phases = scenario.kinematics.tangent_phases;
   qo.cant_base_m = scenario.kinematics.cant_base_m;
   qo.free_axle_rotation = scenario.kinematics.free_axle_rotation;
+  qo.axle_torque_Nm = scenario.kinematics.axle_torque_Nm;
   return qo;
 }
 
@@ -262,7 +263,8 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
       return pipeline ? SolveWheelContactCached(gg, sd, p, v, o, cache) : contact(gg, sd, p, v, o);
     };
     QuasiStaticResult r = SolveQuasiStaticCurving(scenario.vehicle, g, tc, qo, f);
-    bool accept = r.status != QuasiStaticStatus::NoContact && !r.series.samples.empty();
+    bool accept = r.status != QuasiStaticStatus::NoContact && !r.series.samples.empty() &&
+                  r.tangent_rolling_failures == 0;
     for (const BogieQuasiStaticReport& b : r.bogies)
       if (b.derailed || !(b.max_residual <= kAcceptedCurvingResidual)) accept = false;
     std::lock_guard<std::mutex> lock(accepted->mutex);
