@@ -155,6 +155,8 @@ TEST(WheelContactFields, CacheKeysKeepTheFormerContentsAndOrder) {
   EXPECT_EQ(normal, expected);
   const std::vector<double> tail = LegacyReportTail(v, o);
   expected.insert(expected.end(), tail.begin(), tail.end());
+  expected.push_back(static_cast<double>(o.friction_law.kind));  // added after the hand-written key
+  for (double parameter : o.friction_law.parameters) expected.push_back(parameter);
   EXPECT_EQ(ReportCacheKey(normal, v, o), expected);
 }
 

@@ -103,6 +103,9 @@ struct WheelContactReport {
   double pressure_vertical_force_N = 0.0;
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side), N
   int load_iterations = 0;           // root-finder evaluations of the load control; 0 in approach mode
+  // Plausibility warnings, one "code: message" line each (contact_plausibility.hpp): nominal radius far from the
+  // profile's, friction outside 0.05-1, pressure above the material limit, load control not converged
+  std::vector<std::string> warnings;
 };
 
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
