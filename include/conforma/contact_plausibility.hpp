@@ -6,8 +6,8 @@
 //
 //   nominal_radius        a patch on the tread (|contact angle| <= kTreadContactAngleRad) whose rolling radius
 //                         r0 + z_wheel(y_c) is more than kMaxTreadRadiusOffsetM from the nominal radius r0: the
-//                         wheel profile's z origin is not at the taping line, or r0 does not belong to this wheel;
-//                         the creepages (rolling at r0) are then wrong by ~ (r - r0) / r0
+//                         wheel profile's z origin is not at the taping line (profile.hpp), so the axle, rolling at
+//                         V / r0, slips by xi ~ -(r - r0) / r0 under nominally pure rolling
 //   friction_coefficient  mu (the constant one, or the static value mu(0) and the sliding limit of a friction law)
 //                         outside [kMinPlausibleFriction, kMaxPlausibleFriction]
 //   pressure_limit        a patch's maximum pressure above kMaxPlausiblePressurePa

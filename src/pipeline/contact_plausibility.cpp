@@ -46,15 +46,19 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
     const PatchReport& p = report.patches[j];
     // rolling radius on the tread: r = r0 + z_wheel(y_c) (profile.hpp: wheel z above the taping line)
     const double offset = p.rolling_radius_m - r0;
-    if (std::fabs(p.contact_angle_rad) <= kTreadContactAngleRad && std::fabs(offset) > kMaxTreadRadiusOffsetM)
+    if (std::fabs(p.contact_angle_rad) <= kTreadContactAngleRad && std::fabs(offset) > kMaxTreadRadiusOffsetM) {
+      const std::string creepage =
+          options.creepages_given ? "" : Format("; the axle rolling at V / r0 gives xi = %.4f here", p.xi);
       out.push_back(Format(
           "nominal_radius: patch %zu is on the tread (contact angle %.1f deg) at wheel-profile y = %.1f mm, where "
           "the rolling radius r0 + z_wheel = %.1f mm is %+.1f mm from the nominal radius r0 = %.1f mm (limit "
-          "%.0f mm): the wheel profile's z origin is not at the taping line, or r0 is not this wheel's; rolling at "
-          "r0 gives xi = %.4f here. Set the nominal radius (--r0-mm) to the wheel's radius at this point minus "
-          "%+.1f mm, or shift the profile's z to 0 at the taping line",
-          j, p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, p.rolling_radius_m * 1e3,
-          offset * 1e3, r0 * 1e3, kMaxTreadRadiusOffsetM * 1e3, p.xi, offset * 1e3));
+          "%.0f mm): the wheel profile's z origin is not at the taping line (z_wheel = %+.1f mm on the tread)%s. "
+          "Shift the wheel profile's z by %+.1f mm so that z = 0 at the taping line and give the wheel's "
+          "taping-line radius as the nominal radius (--r0-mm); --r0-mm alone does not help, the rolling radius "
+          "is r0 + z_wheel",
+          j, p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, p.rolling_radius_m * 1e3, offset * 1e3,
+          r0 * 1e3, kMaxTreadRadiusOffsetM * 1e3, offset * 1e3, creepage.c_str(), -offset * 1e3));
+    }
     if (p.pmax_Pa > kMaxPlausiblePressurePa)
       out.push_back(Format("pressure_limit: patch %zu has a maximum pressure of %.0f MPa, above %.0f MPa (4 x the "
                            "shakedown limit of rail steel): the profiles are probably noisy or truncated (smooth "
