@@ -61,8 +61,9 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
     }
     if (p.pmax_Pa > kMaxPlausiblePressurePa)
       out.push_back(Format("pressure_limit: patch %zu has a maximum pressure of %.0f MPa, above %.0f MPa (4 x the "
-                           "shakedown limit of rail steel): the profiles are probably noisy or truncated (smooth "
-                           "them) or the patch is a sharp edge",
+                           "shakedown limit of rail steel, docs/physics-reference.md §13): the half-space "
+                           "solution is meaningless here; usually a noisy, truncated or sharp-edged profile (smooth "
+                           "it) or an extreme load",
                            j, p.pmax_Pa * 1e-6, kMaxPlausiblePressurePa * 1e-6));
   }
   return out;
