@@ -178,6 +178,10 @@ TEST(WheelContactFields, ResultVisitorsCoverEveryMember) {
   VisitWheelReportFields(WheelContactReport{}, [&wheel](const char*, const auto&) { ++wheel; });
   EXPECT_EQ(fields_detail::AggregateMemberCount<WheelContactReport>(), wheel + 1)  // + patches
       << "a field was added to WheelContactReport: add it to VisitWheelReportFields";
+  std::set<std::string> cell;
+  VisitCellFields(ContactCell{}, [&cell](const char* key, const auto&) { cell.insert(key); });
+  EXPECT_EQ(fields_detail::AggregateMemberCount<ContactCell>(), cell.size() - kCellDerivedFields)
+      << "a field was added to ContactCell: add it to VisitCellFields (the columns of contact --fields)";
   size_t pose = 0;
   VisitPoseFields(WheelsetPose{}, [&pose](const char*, double) { ++pose; });
   EXPECT_EQ(fields_detail::AggregateMemberCount<WheelsetPose>(), pose)
