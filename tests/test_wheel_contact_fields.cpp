@@ -155,6 +155,8 @@ TEST(WheelContactFields, CacheKeysKeepTheFormerContentsAndOrder) {
   EXPECT_EQ(normal, expected);
   const std::vector<double> tail = LegacyReportTail(v, o);
   expected.insert(expected.end(), tail.begin(), tail.end());
+  expected.push_back(static_cast<double>(o.friction_law.kind));  // added after the hand-written key
+  for (double parameter : o.friction_law.parameters) expected.push_back(parameter);
   EXPECT_EQ(ReportCacheKey(normal, v, o), expected);
 }
 
@@ -176,6 +178,10 @@ TEST(WheelContactFields, ResultVisitorsCoverEveryMember) {
   VisitWheelReportFields(WheelContactReport{}, [&wheel](const char*, const auto&) { ++wheel; });
   EXPECT_EQ(fields_detail::AggregateMemberCount<WheelContactReport>(), wheel + 1)  // + patches
       << "a field was added to WheelContactReport: add it to VisitWheelReportFields";
+  std::set<std::string> cell;
+  VisitCellFields(ContactCell{}, [&cell](const char* key, const auto&) { cell.insert(key); });
+  EXPECT_EQ(fields_detail::AggregateMemberCount<ContactCell>(), cell.size() - kCellDerivedFields)
+      << "a field was added to ContactCell: add it to VisitCellFields (the columns of contact --fields)";
   size_t pose = 0;
   VisitPoseFields(WheelsetPose{}, [&pose](const char*, double) { ++pose; });
   EXPECT_EQ(fields_detail::AggregateMemberCount<WheelsetPose>(), pose)

@@ -73,8 +73,7 @@ struct PatchTangentialSolution {
   double fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;  // on the wheel, patch reference frame (x, t0, n0); N, N, N m
   bool has_equivalent_ellipse = false;         // KP models: a_m, b_m of the SDEC (kbtnh)
   double a_m = 0.0, b_m = 0.0;                 // SDEC semi-axes, m (has_equivalent_ellipse only)
-  // m^2, m^2, W. frictional_power_W: sum |p . s| V dA at the wheelset's forward speed; 0 for kp and kpec
-  // (SolveFastsimOnKpPatch gets no rolling speed)
+  // m^2, m^2, W. frictional_power_W: sum |p . s| V dA at the wheelset's forward speed, every model
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   FastsimResult field;                         // element traction and slip
   std::vector<double> element_width_m;         // lateral width of each element of `field`, m (hertz: 2b / ny)

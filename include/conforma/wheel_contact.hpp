@@ -77,7 +77,7 @@ struct PatchReport {
   double xi = 0.0, eta = 0.0, phi_per_m = 0.0;
   double alpha_c_deg = 0.0;                  // conformity index (paper 003 eq. 13), deg; 0 for the hertz model
   bool is_conformal = false;                 // alpha_c_deg > conformity_threshold_deg (KP and reference models)
-  // m^2, m^2, W; frictional_power_W is 0 for the kp and kpec models (patch_solver.hpp)
+  // m^2, m^2, W; frictional_power_W = sum |traction . slip| V dA over the cells at the forward speed V
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   double vertical_force_N = 0.0, lateral_force_N = 0.0;  // normal + tangential force on the wheel, side frame, N
   double reference_s_on_rail_m = 0.0;        // arc length of the reference point on the mounted rail, m
@@ -103,6 +103,9 @@ struct WheelContactReport {
   double pressure_vertical_force_N = 0.0;
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side), N
   int load_iterations = 0;           // root-finder evaluations of the load control; 0 in approach mode
+  // Plausibility warnings, one "code: message" line each (contact_plausibility.hpp): nominal radius far from the
+  // profile's, friction outside 0.05-1, pressure above the material limit, load control not converged
+  std::vector<std::string> warnings;
 };
 
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach

@@ -8,7 +8,8 @@
 //                           const char* (the model name). Not `cells` and reference_s_on_rail_m (see
 //                           kPatchFieldsNotVisited).
 //   VisitWheelReportFields  WheelContactReport: every field but `patches`; "pose" is passed as the WheelsetPose
-//                           itself (its keys: VisitPoseFields).
+//                           itself (its keys: VisitPoseFields), "warnings" as the std::vector<std::string>.
+//   VisitCellFields         ContactCell (the per-element fields), then the derived wear index.
 //   VisitNormalOptionFields / VisitTangentialOptionFields
 //                           WheelContactOptions, split as the WheelContactCache keys are: everything the normal
 //                           stage reads, then the rest (what only the tangential stage reads). Nested structs are
@@ -27,7 +28,9 @@
 //
 // Adding a field: add it to its struct AND to its visitor here (at the END of a visitor, so that existing key
 // and output orders stay as they are); a nested option struct needs its count added to kOptionLeafFields.
+#include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
@@ -77,6 +80,31 @@ void VisitPatchFields(const PatchReport& p, Visitor&& v) {
 // reads it). tests/test_wheel_contact_fields.cpp checks: members of PatchReport = visited + these.
 constexpr std::size_t kPatchFieldsNotVisited = 2;
 
+// ContactCell (WheelContactOptions::keep_fields): every member with its unit in the name, then the derived wear
+// index; the columns of `conforma contact --fields` (src/app/contact_fields_export.cpp). in_slip is a bool.
+//   wear_index_Pa: T gamma / A of the element, |traction . slip| (Pa x dimensionless slip), the frictional power
+//   per unit area and rolling speed (docs/physics-reference.md §8.4)
+inline double CellWearIndexPa(const ContactCell& c) {
+  return std::fabs(c.traction_x_Pa * c.slip_x + c.traction_s_Pa * c.slip_s);
+}
+template <class Visitor>
+void VisitCellFields(const ContactCell& c, Visitor&& v) {
+  v("x_m", c.x_m);
+  v("s_m", c.s_m);
+  v("rail_s_m", c.rail_s_m);
+  v("wheel_y_m", c.wheel_y_m);
+  v("area_m2", c.area_m2);
+  v("length_x_m", c.length_x_m);
+  v("pressure_Pa", c.pressure_Pa);
+  v("traction_x_Pa", c.traction_x_Pa);
+  v("traction_s_Pa", c.traction_s_Pa);
+  v("slip_x", c.slip_x);
+  v("slip_s", c.slip_s);
+  v("in_slip", c.in_slip);
+  v("wear_index_Pa", CellWearIndexPa(c));
+}
+constexpr std::size_t kCellDerivedFields = 1;  // wear_index_Pa: visited, not a member
+
 template <class Visitor>
 void VisitPoseFields(const WheelsetPose& pose, Visitor&& v) {
   v("y_m", pose.lateral_m);
@@ -95,6 +123,7 @@ void VisitWheelReportFields(const WheelContactReport& r, Visitor&& v) {
   v("pressure_vertical_force_N", r.pressure_vertical_force_N);
   v("lateral_force_N", r.lateral_force_N);
   v("load_iterations", r.load_iterations);
+  v("warnings", r.warnings);  // std::vector<std::string>
 }
 
 // ---- options (the WheelContactCache keys) -------------------------------------------------------------------
@@ -144,6 +173,11 @@ constexpr void VisitTangentialOptionFields(Options& o, Visitor&& v) {
   v("creepages.lateral", o.creepages.lateral);
   v("creepages.spin_per_m", o.creepages.spin_per_m);
   v("material.density_kg_m3", o.material.density_kg_m3);
+  v("friction_law.kind", o.friction_law.kind);
+  v("friction_law.parameters[0]", o.friction_law.parameters[0]);
+  v("friction_law.parameters[1]", o.friction_law.parameters[1]);
+  v("friction_law.parameters[2]", o.friction_law.parameters[2]);
+  v("friction_law.parameters[3]", o.friction_law.parameters[3]);
 }
 
 // ---- the guard ----------------------------------------------------------------------------------------------
@@ -171,11 +205,15 @@ constexpr std::size_t AggregateMemberCount() {
 }
 
 // Leaf fields of WheelContactOptions: its members, each nested option struct counted by its own members.
-constexpr std::size_t kNestedOptionStructs = 4;  // material, auto_selection, fastsim, creepages
+constexpr std::size_t kNestedOptionStructs = 5;  // material, auto_selection, fastsim, creepages, friction_law
+// friction_law's parameter array is one member visited element by element
+constexpr std::size_t kFrictionLawLeafFields =
+    AggregateMemberCount<FrictionLaw>() - 1 + std::tuple_size_v<decltype(FrictionLaw::parameters)>;
 constexpr std::size_t kOptionLeafFields = AggregateMemberCount<WheelContactOptions>() - kNestedOptionStructs +
                                           AggregateMemberCount<Material>() +
                                           AggregateMemberCount<ModelSelectionOptions>() +
-                                          AggregateMemberCount<FastsimOptions>() + AggregateMemberCount<Creepages>();
+                                          AggregateMemberCount<FastsimOptions>() + AggregateMemberCount<Creepages>() +
+                                          kFrictionLawLeafFields;
 
 constexpr std::size_t VisitedOptionFields() {
   const WheelContactOptions o{};

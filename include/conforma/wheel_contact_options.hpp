@@ -6,6 +6,7 @@
 #include "conforma/contact_model.hpp"
 #include "conforma/creepage.hpp"
 #include "conforma/fastsim.hpp"
+#include "conforma/friction_law.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
 #include "conforma/material.hpp"
@@ -17,7 +18,11 @@ namespace conforma {
 struct WheelContactOptions {
   ContactModel model = ContactModel::Hertz;  // contact model of every patch (auto: chosen per patch); default hertz
   Material material;                         // both bodies; default steel G = 82 GPa, nu = 0.28
-  double friction_coefficient = 0.3;         // mu (-), >= 0, constant over the patch
+  double friction_coefficient = 0.3;         // mu (-), >= 0, constant over the patch (with a constant friction_law)
+  // Slip-dependent friction law mu(gamma) of every model's FASTSIM (friction_law.hpp, docs/physics-reference.md
+  // §7.4). Kind Constant (default): friction_coefficient applies and these parameters are ignored; any other kind
+  // replaces friction_coefficient (validated by FrictionLaw::validate).
+  FrictionLaw friction_law;
   // N, finite. Load control (default, 10 kN): the wheel is pushed down until the vertical components of its patch
   // pressure forces carry this load; 0: unloaded wheel, no contact solved (status NoContact). Set vertical_load_N < 0
   // to use the pose as given (approach mode, for multibody coupling).
@@ -52,6 +57,8 @@ struct WheelContactOptions {
   bool creepages_given = false;
   Creepages creepages;                 // xi, eta (-), phi (1/m); finite; read only with creepages_given
   void validate() const;  // InputError naming the option
+  // The law every FASTSIM uses: friction_law, or Constant(friction_coefficient) when friction_law is constant.
+  FrictionLaw effective_friction_law() const;
 };
 
 }  // namespace conforma

@@ -67,6 +67,85 @@ void ContactArgs::add_to(CLI::App* app) {
   app->add_option("--penetration", penetration, "conformal model: virtual penetration rule, variable (KPEC) or "
                                                 "constant (eps = 0.55)")
       ->check(CLI::IsMember({"variable", "constant"}));
+  app->add_option("--friction-law", friction_law,
+                  "slip-dependent friction law mu(gamma), gamma = slip / rolling speed (paper 002): constant (mu); "
+                  "exponential (f1a: mu [r + (1 - r) exp(-decay gamma)]); piecewise-linear (f1b: from mu down to "
+                  "--mu-dynamic at --critical-slip); static-dynamic (f2: mu exp(-decay gamma) + mu_d (1 - exp(-rise "
+                  "gamma))). --mu is the static value mu(0)");
+  app->add_option("--mu-dynamic", mu_dynamic, "friction law: dynamic (sliding) friction coefficient mu_d "
+                                              "(piecewise-linear, static-dynamic)");
+  app->add_option("--mu-ratio", mu_ratio, "friction law exponential: ratio r = mu(infinite slip) / mu, in [0, 1]");
+  app->add_option("--slip-decay", slip_decay, "friction law exponential, static-dynamic: decay rate of the static "
+                                              "part per unit slip");
+  app->add_option("--slip-rise", slip_rise, "friction law static-dynamic: rise rate of the dynamic part per unit slip");
+  app->add_option("--critical-slip", critical_slip, "friction law piecewise-linear: slip gamma_c (> 0) where mu "
+                                                    "reaches --mu-dynamic");
+}
+
+FrictionLaw ContactArgs::friction_law_from_options() const {
+  struct LawName {
+    const char* name;
+    const char* paper_name;
+    FrictionLawKind kind;
+  };
+  static const LawName kLaws[] = {{"constant", "constant", FrictionLawKind::Constant},
+                                  {"exponential", "f1a", FrictionLawKind::F1aExponential},
+                                  {"piecewise-linear", "f1b", FrictionLawKind::F1bPiecewise},
+                                  {"static-dynamic", "f2", FrictionLawKind::F2}};
+  const LawName* law = nullptr;
+  for (const LawName& l : kLaws)
+    if (friction_law == l.name || friction_law == l.paper_name) law = &l;
+  if (law == nullptr)
+    throw InputError("option --friction-law: unknown law '" + friction_law +
+                     "' (expected constant, exponential, piecewise-linear or static-dynamic)");
+  // the parameters of each law, in the order of FrictionLaw::parameters (friction_law.hpp)
+  struct Parameter {
+    const char* option;
+    const std::optional<double>* value;
+  };
+  const double mu = friction;
+  std::vector<Parameter> needed;
+  switch (law->kind) {
+    case FrictionLawKind::Constant: break;
+    case FrictionLawKind::F1aExponential: needed = {{"--mu-ratio", &mu_ratio}, {"--slip-decay", &slip_decay}}; break;
+    case FrictionLawKind::F1bPiecewise: needed = {{"--mu-dynamic", &mu_dynamic}, {"--critical-slip", &critical_slip}}; break;
+    case FrictionLawKind::F2:
+      needed = {{"--slip-decay", &slip_decay}, {"--mu-dynamic", &mu_dynamic}, {"--slip-rise", &slip_rise}};
+      break;
+  }
+  const Parameter all[] = {{"--mu-dynamic", &mu_dynamic}, {"--mu-ratio", &mu_ratio}, {"--slip-decay", &slip_decay},
+                           {"--slip-rise", &slip_rise}, {"--critical-slip", &critical_slip}};
+  std::string list = "--mu";
+  for (const Parameter& p : needed) list += std::string(", ") + p.option;
+  for (const Parameter& p : all) {
+    bool used = false;
+    for (const Parameter& q : needed) used |= q.value == p.value;
+    if (p.value->has_value() && !used)
+      throw InputError(std::string("option ") + p.option + " is not a parameter of --friction-law " + law->name +
+                       " (its parameters: " + list + ")");
+  }
+  for (const Parameter& p : needed) {
+    if (!p.value->has_value())
+      throw InputError(std::string("--friction-law ") + law->name + " needs " + p.option + " (its parameters: " +
+                       list + ")");
+    require_non_negative(**p.value, p.option);
+  }
+  require_non_negative(mu, "--mu");
+  FrictionLaw out;
+  switch (law->kind) {
+    case FrictionLawKind::Constant: out = FrictionLaw::Constant(mu); break;
+    case FrictionLawKind::F1aExponential:
+      if (*mu_ratio > 1.0) throw InputError("option --mu-ratio must be in [0, 1] (got " + std::to_string(*mu_ratio) + ")");
+      out = FrictionLaw::F1a(mu, *mu_ratio, *slip_decay);
+      break;
+    case FrictionLawKind::F1bPiecewise:
+      require_positive(*critical_slip, "--critical-slip");
+      out = FrictionLaw::F1b(mu, *mu_dynamic, *critical_slip);
+      break;
+    case FrictionLawKind::F2: out = FrictionLaw::F2(mu, *slip_decay, *mu_dynamic, *slip_rise); break;
+  }
+  out.validate();
+  return out;
 }
 
 WheelContactOptions ContactArgs::options() const {
@@ -74,6 +153,7 @@ WheelContactOptions ContactArgs::options() const {
   o.model = ParseContactModel(model);
   o.vertical_load_N = load_N;
   o.friction_coefficient = friction;
+  o.friction_law = friction_law_from_options();  // constant: friction_coefficient applies
   o.material.shear_modulus_Pa = shear_modulus_GPa * 1e9;
   o.material.poisson_ratio = poisson;
   o.fastsim_elements = grid;

@@ -2,6 +2,7 @@
 // Command-line options shared by the subcommands: profiles (built-in names or files), track, material, model.
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,8 +30,19 @@ struct ContactArgs {
   double shear_modulus_GPa = 82.0, poisson = 0.28;
   int grid = kDefaultFastsimElements;
   std::string penetration = "variable";  // conformal model: variable (KPEC rule) or constant (eps = 0.55)
+  // Slip-dependent friction law (friction_law.hpp, docs/physics-reference.md §7.4): constant (mu = --mu),
+  // exponential (paper 002 f1a), piecewise-linear (f1b), static-dynamic (f2); the paper's names are accepted too.
+  // --mu is the static value mu(0) of every law; the other parameters only where the law has them.
+  std::string friction_law = "constant";
+  std::optional<double> mu_dynamic;     // mu_d: piecewise-linear, static-dynamic
+  std::optional<double> mu_ratio;       // alpha = mu(infinity) / mu_o, in [0, 1]: exponential
+  std::optional<double> slip_decay;     // per unit slip: beta of exponential, alpha of static-dynamic
+  std::optional<double> slip_rise;      // per unit slip: beta of static-dynamic
+  std::optional<double> critical_slip;  // gamma_c > 0: piecewise-linear
   void add_to(CLI::App* app);
+  // Throws InputError naming the option for a bad value or a parameter the chosen friction law does not have.
   WheelContactOptions options() const;
+  FrictionLaw friction_law_from_options() const;  // the law of --friction-law and its parameters (validated)
   // Pure rolling at the nominal radius r0 at --speed, no lateral or yaw velocity.
   WheelsetVelocity rolling_velocity(double nominal_radius_m) const {
     return {speed_m_s, 0.0, 0.0, speed_m_s / nominal_radius_m};

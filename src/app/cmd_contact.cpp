@@ -5,6 +5,7 @@
 #include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
+#include "contact_fields_export.hpp"
 #include "report_json.hpp"
 
 namespace conforma::cli {
@@ -18,10 +19,13 @@ struct ContactCommand {
   std::string side = "both";
   std::optional<double> xi, eta, phi_per_m;
   bool json = false;
+  ContactFieldsArgs fields;  // --fields DIR, --fields-format
 
   void run() const {
     const auto geometry = track.make_geometry();
     WheelContactOptions options = contact.options();
+    fields.check_writable();  // before solving
+    options.keep_fields = fields.enabled();
     require_finite(y_mm, "--y-mm");
     require_finite(yaw_mrad, "--yaw-mrad");
     if (xi || eta || phi_per_m) {
@@ -37,21 +41,24 @@ struct ContactCommand {
     const double r0 = geometry->setup().nominal_radius_m[0];
     const WheelsetVelocity velocity = contact.rolling_velocity(r0);
     nlohmann::json out = {{"model", contact.model}, {"wheels", nlohmann::json::array()}};
+    if (fields.enabled()) out["fields_files"] = nlohmann::json::array();
     if (!json) {
       std::cout << "conforma contact: wheel " << track.wheel << " on rail " << track.rail << ", model " << contact.model
                 << ", y = " << y_mm << " mm, yaw = " << yaw_mrad << " mrad, roll = " << pose.roll_rad * 1e3
                 << " mrad\n";
-      PrintPatchTableHeader(std::cout);
+      PrintPatchTableHeader(std::cout, "wheel");
     }
     for (Side s : {Side::Left, Side::Right}) {
       if (side != "both" && side != to_string(s)) continue;
       const WheelContactReport r = SolveWheelContact(*geometry, s, pose, velocity, options);
+      for (const std::string& file : fields.write(r, std::cerr)) out["fields_files"].push_back(file);
       if (json) {
         out["wheels"].push_back(ToJson(r));
       } else {
         if (r.patches.empty()) std::cout << "   " << to_string(s) << ": " << to_string(r.status) << "\n";
         for (const PatchReport& p : r.patches) PrintPatchRow(std::cout, to_string(s), p);
       }
+      PrintWarnings(std::cerr, std::string(to_string(s)) + " wheel", r);  // also in the JSON ("warnings")
     }
     if (json) std::cout << out.dump(2) << "\n";
   }
@@ -72,6 +79,7 @@ void RegisterContactCommand(CLI::App& app) {
   sub->add_option("--eta", cmd->eta, "given lateral creepage");
   sub->add_option("--phi-per-m", cmd->phi_per_m, "given spin creepage [1/m]");
   sub->add_flag("--json", cmd->json, "machine-readable output");
+  cmd->fields.add_to(sub);
   sub->callback([cmd]() { cmd->run(); });
 }
 

@@ -57,19 +57,17 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
   co.elements_per_strip = options.fastsim_elements;
   co.marching = options.fastsim.marching;
   co.load_N = normal.kp.fn_surface_N;
-  CurvedFastsimResult t;
-  if (model == ContactModel::Conformal) {
-    CurvedFastsimInput in;
-    in.friction = FrictionLaw::Constant(options.friction_coefficient);
-    in.material = options.material;
-    in.rolling_speed_m_per_s = rolling_speed_m_per_s;
-    in.strip_creepages = creepages.per_strip.empty() ? std::vector<FastsimCreepages>{creepages.reference}
-                                                     : creepages.per_strip;
-    t = SolveCurvedFastsim(normal.kp, in, co);
-  } else {
-    t = SolveFastsimOnKpPatch(normal.kp, creepages.reference, FrictionLaw::Constant(options.friction_coefficient),
-                              options.material, co);
-  }
+  // kp, kpec: FASTSIM with the SDEC flexibilities over the KP patch with the reference creepages (what
+  // SolveFastsimOnKpPatch does), called directly to pass the rolling speed for the frictional power; conformal:
+  // the per-strip rigid slip
+  CurvedFastsimInput in;
+  in.friction = options.effective_friction_law();
+  in.material = options.material;
+  in.rolling_speed_m_per_s = rolling_speed_m_per_s;
+  in.strip_creepages = model == ContactModel::Conformal && !creepages.per_strip.empty()
+                           ? creepages.per_strip
+                           : std::vector<FastsimCreepages>{creepages.reference};
+  const CurvedFastsimResult t = SolveCurvedFastsim(normal.kp, in, co);
   PatchTangentialSolution out;
   out.solved = true;
   out.status = to_string(t.status);

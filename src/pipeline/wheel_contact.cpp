@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 
+#include "conforma/contact_plausibility.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/local_creepage.hpp"
@@ -30,6 +31,7 @@ const char* to_string(WheelContactStatus status) {
 void WheelContactOptions::validate() const {
   material.validate();
   require_non_negative(friction_coefficient, "friction_coefficient");
+  if (!friction_law.is_constant()) friction_law.validate();
   require_finite(vertical_load_N, "vertical_load_N");
   require_positive(load_tolerance, "load_tolerance");
   require_positive(candidate_strip_width_m, "candidate_strip_width_m");
@@ -43,6 +45,10 @@ void WheelContactOptions::validate() const {
     require_finite(creepages.lateral, "creepages.eta");
     require_finite(creepages.spin_per_m, "creepages.phi_per_m");
   }
+}
+
+FrictionLaw WheelContactOptions::effective_friction_law() const {
+  return friction_law.is_constant() ? FrictionLaw::Constant(friction_coefficient) : friction_law;
 }
 
 namespace wheel_contact_detail {
@@ -263,7 +269,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
 }
 
 // Stage 2: creepages and the tangential problem, patch by patch, on a solved normal stage.
-WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
+WheelContactReport SolveTangentialStage(const NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
                                       const WheelsetVelocity& velocity, const WheelContactOptions& options) {
   WheelContactReport report = stage.report;
   if (stage.finished) return report;
@@ -364,6 +370,14 @@ WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTr
   }
   if (report.status != WheelContactStatus::NotConverged)
     report.status = report.patches.empty() ? WheelContactStatus::NoContact : WheelContactStatus::Ok;
+  return report;
+}
+
+// Stage 2 and the plausibility warnings of the finished report.
+WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
+                                      const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+  WheelContactReport report = SolveTangentialStage(stage, geometry, side, velocity, options);
+  report.warnings = ContactPlausibilityWarnings(report, geometry, options);
   return report;
 }
 
