@@ -5,12 +5,13 @@ One wheelset pose (lateral shift 6.25 mm towards the left rail, yaw 2 mrad, 10 k
 wheel touches its rail near the flange root, where wheel and rail are conformal. The script solves the left
 wheel with the Hertz model (ellipse at the rigid contact point, FASTSIM) and with the conformal model (extended
 Kik-Piotrowski in curvilinear rail coordinates, curved-patch FASTSIM), prints the patch forces side by side and
-plots the pressure and the tangential traction of both in the (x, s) coordinates of the patch.
+plots the pressure and the tangential traction of both in the (x, s) coordinates of the patch (the patch's
+2-D grid, patch["grid"]).
 
     python3 examples/conformal_vs_hertz.py [--output-dir DIR] [--lateral-mm 6.25] [--yaw-mrad 2]
 
-Writes DIR/conformal_vs_hertz.png (matplotlib, Agg backend). Needs the `conforma` module on PYTHONPATH
-(build-dir/python).
+Writes DIR/conformal_vs_hertz.png (matplotlib, Agg backend). Needs the `conforma` package (pip install, or
+PYTHONPATH=build-dir/python).
 """
 import argparse
 import os
@@ -62,28 +63,27 @@ def main():
     fig, axes = plt.subplots(2, 3, figsize=(14, 8), constrained_layout=True)
     pmax = max(p["pmax_Pa"] for p in mains.values()) * 1e-6
     for row, (model, p) in enumerate(mains.items()):
-        f = p["fields"]
-        x_mm, s_mm = f["x_m"] * 1e3, f["s_m"] * 1e3
-        sc = axes[row, 0].scatter(x_mm, s_mm, c=f["pressure_Pa"] * 1e-6, s=6, cmap="viridis", vmin=0, vmax=pmax)
-        fig.colorbar(sc, ax=axes[row, 0], label="pressure [MPa]")
+        g = p["grid"]  # the fields as 2-D arrays over (s, x); outside the contact area masked out here
+        x_mm, s_mm, outside = g["x_m"] * 1e3, g["s_m"] * 1e3, ~g["in_contact"]
+        pressure = np.ma.masked_where(outside, g["pressure_Pa"] * 1e-6)
+        mesh = axes[row, 0].pcolormesh(x_mm, s_mm, pressure, shading="nearest", cmap="viridis", vmin=0, vmax=pmax)
+        fig.colorbar(mesh, ax=axes[row, 0], label="pressure [MPa]")
         axes[row, 0].set_title(f"{model}: pressure, Fn = {p['fn_N'] / 1e3:.2f} kN")
-        tau = np.hypot(f["traction_x_Pa"], f["traction_s_Pa"]) * 1e-6
-        sc = axes[row, 1].scatter(x_mm, s_mm, c=tau, s=6, cmap="magma", vmin=0, vmax=0.3 * pmax)
-        adhesion = f["adhesion"]
-        axes[row, 1].scatter(x_mm[adhesion], s_mm[adhesion], s=1, c="cyan", label="adhesion")
-        fig.colorbar(sc, ax=axes[row, 1], label="|traction| [MPa]")
+        tau = np.ma.masked_where(outside, np.hypot(g["traction_x_Pa"], g["traction_s_Pa"]) * 1e-6)
+        mesh = axes[row, 1].pcolormesh(x_mm, s_mm, tau, shading="nearest", cmap="magma", vmin=0, vmax=0.3 * pmax)
+        if g["adhesion"].any():
+            axes[row, 1].contour(x_mm, s_mm, g["adhesion"].astype(float), levels=[0.5], colors="cyan", linewidths=1)
+        fig.colorbar(mesh, ax=axes[row, 1], label="|traction| [MPa] (cyan: adhesion boundary)")
         axes[row, 1].set_title(f"{model}: traction (Fx {p['fx_N'] / 1e3:.2f}, Fs {p['fy_N'] / 1e3:.2f} kN)")
         for ax in axes[row, :2]:
             ax.set_xlabel("x along the track [mm]")
             ax.set_ylabel("s along the rail profile [mm]")
-        # pressure across the patch: the elements nearest to the patch's middle along x
-        mid = 0.5 * (x_mm.min() + x_mm.max())
-        width = np.abs(x_mm - mid)
-        near = width <= np.partition(width, min(len(width) - 1, 40))[min(len(width) - 1, 40)]
-        order = np.argsort(s_mm[near])
-        axes[0, 2].plot(s_mm[near][order], f["pressure_Pa"][near][order] * 1e-6, ".-", label=model)
-        axes[1, 2].plot(s_mm[near][order], f["traction_x_Pa"][near][order] * 1e-6, ".-", label=f"{model} x")
-        axes[1, 2].plot(s_mm[near][order], f["traction_s_Pa"][near][order] * 1e-6, "x--", label=f"{model} s")
+        # across the patch: the grid column nearest to the patch's middle along x (strips outside it: no contact)
+        j = int(np.argmin(np.abs(x_mm - 0.5 * (x_mm.min() + x_mm.max()))))
+        cut = g["in_contact"][:, j]
+        axes[0, 2].plot(s_mm[cut], g["pressure_Pa"][cut, j] * 1e-6, ".-", label=model)
+        axes[1, 2].plot(s_mm[cut], g["traction_x_Pa"][cut, j] * 1e-6, ".-", label=f"{model} x")
+        axes[1, 2].plot(s_mm[cut], g["traction_s_Pa"][cut, j] * 1e-6, "x--", label=f"{model} s")
     axes[0, 2].set_title("pressure across the patch (middle along x)")
     axes[0, 2].set_ylabel("pressure [MPa]")
     axes[1, 2].set_title("tangential traction across the patch")

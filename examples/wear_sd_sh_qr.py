@@ -1,15 +1,18 @@
 #!/usr/bin/env python3
 """Wear run: flange dimensions Sd, Sh, qR of the wheel against the distance run.
 
-Runs the wear loop (conforma.wear) on a scenario -- by default scenarios/default_metro.yaml (S1002 wheels on 50E4
+Runs the wear loop (conforma.wear) on a scenario -- by default default_metro.yaml as installed with the package
+(conforma.scenario_path(), a copy of the repository's scenarios/default_metro.yaml: S1002 wheels on 50E4
 rails at 1:20, a metro vehicle, tangent track and three curve classes) -- and plots Sd, Sh and qR of every wheel
 profile step against km, with the worn wheel profiles beside them. Also writes the steps table as CSV with the
 units in the column names.
 
     python3 examples/wear_sd_sh_qr.py [--output-dir DIR] [--scenario FILE] [--model conformal] [--steps 3]
 
-Writes DIR/wear_sd_sh_qr.png and DIR/wear_sd_sh_qr.csv (matplotlib, Agg backend). Needs the `conforma` module
-on PYTHONPATH (build-dir/python) built with the wear loop; fails with a clear message otherwise.
+Writes DIR/wear_sd_sh_qr.png and DIR/wear_sd_sh_qr.csv (matplotlib, Agg backend). Needs the `conforma` package
+(pip install, or PYTHONPATH=build-dir/python) built with the wear loop; fails with a clear message otherwise. A run
+that is incomplete (stopped early, failed contacts) is printed with its problems and warned about
+(conforma.IncompleteResultWarning).
 """
 import argparse
 import os
@@ -24,19 +27,20 @@ import numpy as np  # noqa: E402
 
 import conforma  # noqa: E402
 
-HERE = pathlib.Path(__file__).resolve().parent
-
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--output-dir", default=os.environ.get("CONFORMA_OUTPUT_DIR", "."))
-    parser.add_argument("--scenario", default=str(HERE.parent / "scenarios" / "default_metro.yaml"))
+    parser.add_argument("--scenario", default=None,
+                        help="scenario YAML file (default: conforma.scenario_path('default_metro'))")
     parser.add_argument("--model", default="", help="hertz, kp, kpec, conformal (default: the scenario's)")
     parser.add_argument("--steps", type=int, default=3, help="wheel profile steps (each removes the cap depth)")
     args = parser.parse_args()
     if not getattr(conforma, "has_wear", False):
         sys.exit("conforma.wear is not available: this build of the Python module has no wear loop "
                  "(include/conforma/wear_simulation.hpp)")
+    if args.scenario is None:
+        args.scenario = conforma.scenario_path("default_metro")
     out_dir = pathlib.Path(args.output_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
 
@@ -46,6 +50,8 @@ def main():
     if run["status"] != "completed" and len(table["km"]) < 2:
         sys.exit(f"wear run stopped: {run['status']} {run['message']}")
     print(f"scenario {scenario['name']}, model {run['model']}, status {run['status']} {run['message']}")
+    for problem in run["problems"]:
+        print(f"  incomplete: {problem}")
     print(f"{'step':>4s} {'km':>9s} {'Sd[mm]':>8s} {'Sh[mm]':>8s} {'qR[mm]':>8s} {'tread[mm]':>9s} {'flange[mm]':>10s}")
     for i in range(len(table["km"])):
         print(f"{int(table['step'][i]):4d} {table['km'][i]:9.1f} {table['sd_mm'][i]:8.3f} {table['sh_mm'][i]:8.3f} "

@@ -73,7 +73,7 @@ py::dict RunWear(const py::object& scenario, const std::string& model, int steps
   // the steps table, with the initial profile as row 0 (km = 0)
   const size_t n = r.steps.size() + 1;
   std::vector<double> rail_step(n), step(n), km(n), step_km(n), depth(n), sd(n), sh(n), qr(n), tread(n), flange(n),
-      samples(n), failed(n);
+      samples(n), failed(n), kinematics_fallbacks(n);
   sd[0] = r.initial_dimensions.sd_m * 1e3, sh[0] = r.initial_dimensions.sh_m * 1e3, qr[0] = r.initial_dimensions.qr_m * 1e3;
   py::list profiles;
   profiles.append(r.initial_wheel);
@@ -83,7 +83,7 @@ py::dict RunWear(const py::object& scenario, const std::string& model, int steps
     depth[i] = s.max_depth_m * 1e3;
     sd[i] = s.dimensions.sd_m * 1e3, sh[i] = s.dimensions.sh_m * 1e3, qr[i] = s.dimensions.qr_m * 1e3;
     tread[i] = s.tread_wear_m * 1e3, flange[i] = s.flange_wear_m * 1e3;
-    samples[i] = s.samples, failed[i] = s.failed_contacts;
+    samples[i] = s.samples, failed[i] = s.failed_contacts, kinematics_fallbacks[i] = s.kinematics_fallbacks;
     profiles.append(s.wheel);
   }
   py::dict table;
@@ -92,6 +92,7 @@ py::dict RunWear(const py::object& scenario, const std::string& model, int steps
   table["sd_mm"] = Column(sd), table["sh_mm"] = Column(sh), table["qr_mm"] = Column(qr);
   table["tread_wear_mm"] = Column(tread), table["flange_wear_mm"] = Column(flange);
   table["samples"] = Column(samples), table["failed_contacts"] = Column(failed);
+  table["kinematics_fallbacks"] = Column(kinematics_fallbacks);
   py::dict out;
   out["scenario"] = sc.name;
   out["model"] = to_string(o.contact.model);
@@ -149,7 +150,8 @@ the scenario's.
 
 Returns a dict: scenario, model, status, message, 'steps' -- NumPy columns with row 0 the initial wheel (km = 0):
 rail_step, step, km, step_km, max_depth_mm, sd_mm, sh_mm, qr_mm, tread_wear_mm, flange_wear_mm, samples,
-failed_contacts -- and 'wheel_profiles' (Profile of every row).)doc");
+failed_contacts (wheels without a solution: no wear taken from them), kinematics_fallbacks (track classes whose
+quasi-static curving was replaced by the kinematic estimate) -- and 'wheel_profiles' (Profile of every row).)doc");
 }
 
 }  // namespace conforma::python
