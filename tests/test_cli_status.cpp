@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -191,6 +193,37 @@ TEST(CliStatus, ValidateWithOnlyTheInitialPointIsPartial) {
   EXPECT_EQ(r.exit_code, 5) << r.out << r.err;
   EXPECT_EQ(r.out.find("over 1 points"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("NO RESULT"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+namespace {
+
+// Item 11: model_difference.png plots the normal distance the report uses, not the z difference: on a 45 degree
+// face two profiles 0.1 mm apart in z are 0.1 cos(45 deg) = 0.0707 mm apart along the normal.
+TEST(CliStatus, CompareDifferencePlotUsesTheNormalDistance) {
+  const char* python = "/usr/bin/python3";
+  if (std::system((std::string(python) + " -c 'import matplotlib, numpy' >/dev/null 2>&1").c_str()) != 0)
+    GTEST_SKIP() << "no python3 with matplotlib and numpy";
+  const fs::path dir = TempDir("normal_distance");
+  const std::string script =
+      "import sys; sys.path.insert(0, '" + std::string(CONFORMA_SOURCE_DIR) + "/scripts')\n"
+      "import numpy as np, plot_compare as pc\n"
+      "y = list(np.linspace(0.0, 10.0, 101))\n"
+      "first, second = (y, [v for v in y]), (y, [v - 0.1 for v in y])\n"
+      "ys, d = pc.normal_distance(first, second)\n"
+      "inner = d[(ys > 2) & (ys < 8)]\n"
+      "print('%.6f %.6f' % (inner.min(), inner.max()))\n";
+  std::ofstream(dir / "check.py") << script;
+  const std::string cmd = std::string(python) + " '" + (dir / "check.py").string() + "' > '" + (dir / "out").string() +
+                          "' 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << Slurp(dir / "out");
+  std::istringstream in(Slurp(dir / "out"));
+  double lo = 0.0, hi = 0.0;
+  in >> lo >> hi;
+  EXPECT_NEAR(std::abs(lo), 0.1 / std::sqrt(2.0), 1e-4);
+  EXPECT_NEAR(std::abs(hi), 0.1 / std::sqrt(2.0), 1e-4);
   fs::remove_all(dir);
 }
 
