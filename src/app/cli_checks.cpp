@@ -33,7 +33,7 @@ void RequirePlotPython(const std::string& python, const std::string& option) {
   if (std::system(cmd.c_str()) != 0)
     throw InputError("option " + option + ": '" + python +
                      "' cannot import matplotlib (is it a Python interpreter? install python3-matplotlib, set "
-                     "CONFORMA_PYTHON or give " + option + ")");
+                     "CONFORMA_PYTHON, give " + option + ", or skip the plots with --no-plot)");
 }
 
 ContactModel ParseWearModel(const std::string& name, const std::string& option) {

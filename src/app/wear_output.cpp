@@ -89,6 +89,8 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
   }
   std::ofstream st(dir + "/status.txt");
   st << to_string(r.status) << "\n" << r.message << "\n";
+  const std::string incomplete = IncompleteReason(r);  // lost contacts too: "completed" alone would hide them
+  if (!incomplete.empty()) st << "incomplete: " << incomplete << "\n";
 }
 
 WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
