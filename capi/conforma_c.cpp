@@ -80,6 +80,9 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   if (e.normal_mode != CONFORMA_LOAD_CONTROL && e.normal_mode != CONFORMA_GIVEN_APPROACH)
     throw InputError("options.normal_mode must be CONFORMA_LOAD_CONTROL (0) or CONFORMA_GIVEN_APPROACH (1), not " +
                      std::to_string(e.normal_mode));
+  if (e.rigid_equilibrium != 0 && e.rigid_equilibrium != 1)
+    throw InputError("options.rigid_equilibrium must be 0 (the state's vertical_m and roll_rad) or 1 (rigid contact "
+                     "of both wheels), not " + std::to_string(e.rigid_equilibrium));
   const bool load_control = e.normal_mode == CONFORMA_LOAD_CONTROL;
   if (load_control) {
     conforma::require_non_negative(e.vertical_load_N[0], "options.vertical_load_N[0] (left)");

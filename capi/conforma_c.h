@@ -131,7 +131,8 @@ typedef struct conforma_evaluation_options {
   double vertical_load_N[2];       /* load control: per wheel [left, right], N, >= 0 (0: no contact); default 10e3 */
   int rigid_equilibrium;           /* 1: vertical_m and roll_rad from the rigid contact of both wheels at the given
                                       lateral_m and yaw_rad (as `conforma contact`; the state's vertical_m and
-                                      roll_rad are the starting guess); 0 (default): as given */
+                                      roll_rad are the starting guess); 0 (default): as given; any other
+                                      value is CONFORMA_ERROR_INPUT */
   double approach_m;               /* rigid_equilibrium with CONFORMA_GIVEN_APPROACH: push-down below rigid contact,
                                       default 5e-5 m */
   double load_tolerance;           /* relative tolerance of load control, > 0; default 1e-6 */

@@ -168,8 +168,8 @@ void ValidateOptions(const BemOptions& o) {
 const char* to_string(BemStatus status) {
   switch (status) {
     case BemStatus::Converged: return "converged";
-    case BemStatus::NotConverged: return "not-converged";
-    case BemStatus::NoContact: return "no-contact";
+    case BemStatus::NotConverged: return "not_converged";
+    case BemStatus::NoContact: return "no_contact";
   }
   return "unknown";
 }

@@ -27,6 +27,32 @@ def read_profile(path):
     return ys, zs
 
 
+def normal_distance(first, second, spacing_mm=0.1):
+    """Signed distance from `first` to `second` along the outward normals of `first` (left of the tangent, as
+    Profile::normal), sampled every spacing_mm of arc length: > 0 where `second` lies inside `first` (deeper). The
+    quantity of report.md's model differences (MeasureWheelWear, src/simulation/wear_simulation.cpp)."""
+    import numpy as np
+
+    def resample(ys, zs):
+        p = np.column_stack([ys, zs])
+        s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(p, axis=0).T))])
+        t = np.arange(0.0, s[-1], spacing_mm)
+        return np.column_stack([np.interp(t, s, p[:, 0]), np.interp(t, s, p[:, 1])])
+
+    a, b = resample(*first), resample(*second)
+    tangent = np.gradient(a, axis=0)
+    tangent /= np.linalg.norm(tangent, axis=1)[:, None]
+    normal = np.column_stack([-tangent[:, 1], tangent[:, 0]])
+    seg0, seg = b[:-1], np.diff(b, axis=0)
+    out = np.empty(len(a))
+    for k, q in enumerate(a):  # nearest point of the second polyline
+        t = np.clip(((q - seg0) * seg).sum(axis=1) / (seg * seg).sum(axis=1), 0.0, 1.0)
+        c = seg0 + t[:, None] * seg
+        j = np.argmin(((c - q) ** 2).sum(axis=1))
+        out[k] = np.dot(q - c[j], normal[k])
+    return a[:, 0], out
+
+
 def read_steps(path):
     with open(path) as f:
         return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
@@ -100,20 +126,16 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(out, "dimensions.png"), dpi=120)
     plt.close(fig)
-    # model differences: z(model) - z(first model) at the same step, and km per step
+    # model differences: the normal distance the report uses (MeasureWheelWear), and km per step
     fig, axes = plt.subplots(1, 2, figsize=(13, 4.2))
     ref = models[0]
-    grid = [-45 + 0.25 * i for i in range(int((55 + 45) / 0.25))]
     for m in models[1:]:
         n = min(len(data[m]["profiles"]), len(data[ref]["profiles"]))
         for i in range(1, n):
-            a, b = data[ref]["profiles"][i], data[m]["profiles"][i]
-            pts = [(y, z_on_face(*b, y), z_on_face(*a, y)) for y in grid]
-            pts = [(y, zb - za) for y, zb, za in pts if zb is not None and za is not None]
-            axes[0].plot([p[0] for p in pts], [p[1] for p in pts], color=plt.cm.viridis(i / max(1, n - 1)), lw=0.9,
-                         label=f"{m} - {ref}, step {i}")
-    axes[0].set_xlabel("y [mm]")
-    axes[0].set_ylabel("z difference [mm]")
+            y, d = normal_distance(data[ref]["profiles"][i], data[m]["profiles"][i])
+            axes[0].plot(y, d, color=plt.cm.viridis(i / max(1, n - 1)), lw=0.9, label=f"{m} vs {ref}, step {i}")
+    axes[0].set_xlabel("y of the first model's profile [mm]")
+    axes[0].set_ylabel("normal distance [mm] (> 0: second model deeper)")
     axes[0].set_title("profile difference between the models (same step)")
     axes[0].grid(alpha=0.3)
     axes[0].legend(fontsize=6)

@@ -67,7 +67,7 @@ enum class BemStatus {
   NotConverged,  // max_iterations reached; the fields hold the last iterate
   NoContact,     // zero load, or an approach that does not close the gap anywhere
 };
-const char* to_string(BemStatus status);          // "converged", "not-converged", "no-contact"
+const char* to_string(BemStatus status);          // "converged", "not_converged", "no_contact"
 const char* to_string(BemInfluence influence);    // "half-space", "blanco"
 
 // InputError outside the ranges given.

@@ -45,7 +45,7 @@ struct CandidateOptions {
 // Ok: at least one candidate; NoContact: the wheel faces the rail but does not interpenetrate it (or no region
 // yields a patch); NoOverlap: the wheel silhouette does not face the rail head.
 enum class CandidateStatus { Ok, NoContact /* no interpenetration */, NoOverlap /* wheel not over the rail */ };
-const char* to_string(CandidateStatus status);  // "ok", "no contact", "no overlap"
+const char* to_string(CandidateStatus status);  // "ok", "no_contact", "no_overlap"
 
 struct ContactCandidate {
   PatchGeometry patch;          // the region's strips (at least 2), reference point at the region's centre

@@ -84,7 +84,7 @@ struct GeometryOptions {
 
 // Ok: at least one rigid contact point (gap minimum) found; NoOverlap: the silhouette does not face the rail head.
 enum class ContactStatus { Ok, NoOverlap /* silhouette does not face the rail head */ };
-const char* to_string(ContactStatus status);  // "ok", "no overlap"
+const char* to_string(ContactStatus status);  // "ok", "no_overlap"
 
 struct RigidContactPoint {
   double gap_m = 0.0;               // rigid gap along the rail normal (< 0: interpenetration)
@@ -131,7 +131,7 @@ struct EquilibriumOptions {
 // Converged: both wheels touch within tolerance_m; NotConverged: no roll bracket or tolerance not met in
 // max_iterations (the last iterate is returned); NoContact: a wheel does not face its rail (no gap minimum).
 enum class EquilibriumStatus { Converged, NotConverged, NoContact };
-const char* to_string(EquilibriumStatus status);  // "converged", "not converged", "no contact"
+const char* to_string(EquilibriumStatus status);  // "converged", "not_converged", "no_contact"
 
 struct EquilibriumResult {
   EquilibriumStatus status = EquilibriumStatus::NoContact;  // see EquilibriumStatus

@@ -186,8 +186,19 @@ struct WheelWearDepths {
 };
 WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m = -0.025);
 
+// Throws InputError for a contact model that cannot drive the wear loop (reference: normal problem only, no
+// creep forces, no wear; IsWearContactModel) and for a depth smoothing the profile update cannot apply.
 WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options,
                                        const WearContactFunction& contact, const KinematicsFunction& kinematics = {});
+// Whether `model` solves the tangential problem the wear laws need (every model but reference).
+bool IsWearContactModel(ContactModel model);
+// The models IsWearContactModel accepts, comma-separated ("hertz, kp, kpec, conformal, auto").
+std::string WearContactModelNames();
+// Wheel contacts of the run that gave no wear (WearStepRecord::failed_contacts summed over the steps).
+int LostContacts(const WearSimulationResult& result);
+// What is missing from the run's result, "" when it is complete: a status other than Completed (the run stopped
+// early, message), or wheel contacts lost in some steps (their count and steps).
+std::string IncompleteReason(const WearSimulationResult& result);
 // With the standard pipeline. Inline so that the core library does not depend on the pipeline library.
 inline WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options) {
   return RunWearSimulation(scenario, options, &SolveWheelContact);

@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
+#include "exit_status.hpp"
 #include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/error.hpp"
 
@@ -44,14 +46,32 @@ void RegisterBenchCommand(CLI::App& app) {
     BenchOptions options;
     options.models.clear();
     std::stringstream ms(*models);
-    for (std::string name; std::getline(ms, name, ',');) options.models.push_back(ParseContactModel(name));
+    for (std::string name; std::getline(ms, name, ',');)
+      if (!name.empty()) options.models.push_back(ParseContactModel(name));
+    if (options.models.empty()) throw InputError("option --models: no contact model given");
+    EnsureOutputFolder(*out_dir, "--out");
+    const std::vector<BenchCase> all_cases = MakeBenchCases(DataDirOr(*data));
+    std::vector<std::string> known;  // the families of the case set, in order
+    for (const BenchCase& c : all_cases)
+      if (std::find(known.begin(), known.end(), c.family) == known.end()) known.push_back(c.family);
+    std::vector<std::string> wanted;
+    std::stringstream fs(*families);
+    for (std::string f; std::getline(fs, f, ',');) {
+      if (f.empty()) continue;
+      if (std::find(known.begin(), known.end(), f) == known.end()) {
+        std::string list;
+        for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+        throw InputError("option --families: unknown case family '" + f + "' (known: " + list + ")");
+      }
+      wanted.push_back(f);
+    }
+    if (wanted.empty()) throw InputError("option --families: no case family given");
     std::vector<BenchCase> cases;
-    for (const BenchCase& c : MakeBenchCases(DataDirOr(*data)))
-      if (("," + *families + ",").find("," + c.family + ",") != std::string::npos) cases.push_back(c);
+    for (const BenchCase& c : all_cases)
+      if (std::find(wanted.begin(), wanted.end(), c.family) != wanted.end()) cases.push_back(c);
     std::printf("bench: %zu patches, %zu models x %zu grids\n", cases.size(), options.models.size(), options.grids.size());
     const std::vector<BenchRow> rows = RunBench(cases, options);
 
-    std::filesystem::create_directories(*out_dir);
     const std::string csv = *out_dir + "/bench.csv";
     std::ofstream f(csv);
     if (!f) throw InputError("bench: cannot write " + csv);
@@ -116,7 +136,8 @@ void RegisterBenchCommand(CLI::App& app) {
     if (*plot) {
       const std::string cmd = PythonOr("") + " '" + PlotScript("plot_bench.py") + "' '" + csv + "' '" + *out_dir +
                               "/bench_pareto.png'";
-      if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "bench: plotting failed (%s)\n", cmd.c_str());
+      if (std::system(cmd.c_str()) != 0)
+        throw IncompleteResult(ExitCode::PartialResult, "bench: the Pareto plot was not produced (" + cmd + ")");
     }
   });
 }

@@ -9,7 +9,9 @@
 #include <memory>
 #include <sstream>
 
+#include "cli_checks.hpp"
 #include "cli_setup.hpp"
+#include "exit_status.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/scenario.hpp"
@@ -27,7 +29,7 @@ struct ModelRun {
 };
 
 void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<ModelRun>& runs, int steps,
-                 bool plots_ok) {
+                 const std::string& plot_note) {
   std::ofstream md(dir + "/report.md");
   if (!md) throw InputError(dir + "/report.md: cannot write");
   md << "# Wear comparison: " << sc.name << "\n\n";
@@ -37,17 +39,29 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
      << sc.classes.size() << " track classes, cap " << sc.update.cap_m * 1e3 << " mm per step, smoothing "
      << sc.update.smoothing_cutoff_m * 1e3 << " mm, rail " << (sc.rail_steps.fixed ? "fixed" : "updated") << ", "
      << steps << " wheel steps per model.\n\n";
-  md << "| model | steps | km | km per step (mean) | run time s | Sd mm | Sh mm | qR mm | tread wear mm | flange wear mm | status |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  // lost wheel contacts first, where nobody can miss them (issue 13: a run that lost contacts is not "completed")
+  for (const ModelRun& r : runs)
+    for (const WearStepRecord& s : r.result.steps)
+      if (s.failed_contacts > 0)
+        md << "**WARNING: " << r.name << " step " << s.step << ": " << s.failed_contacts << " of "
+           << s.failed_contacts + s.samples
+           << " wheel contacts failed; no wear was taken from them (steps.csv failed_contacts).**\n\n";
+  md << "| model | steps | km | km per step (mean) | run time s | Sd mm | Sh mm | qR mm | tread wear mm | flange wear mm | "
+        "failed contacts | kinematics fallbacks | status |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   char buf[512];
   for (const ModelRun& r : runs) {
     const auto& st = r.result.steps;
     const double km = st.empty() ? 0.0 : st.back().km;
     const WheelDimensions d = st.empty() ? r.result.initial_dimensions : st.back().dimensions;
-    std::snprintf(buf, sizeof buf, "| %s | %zu | %.0f | %.0f | %.1f | %.3f | %.3f | %.3f | %.3f | %.3f | %s |\n",
+    int fallbacks = 0;
+    for (const WearStepRecord& s : st) fallbacks += s.kinematics_fallbacks;
+    const int lost = LostContacts(r.result);
+    const std::string status = std::string(to_string(r.result.status)) + (lost > 0 ? ", contacts lost" : "");
+    std::snprintf(buf, sizeof buf, "| %s | %zu | %.0f | %.0f | %.1f | %.3f | %.3f | %.3f | %.3f | %.3f | %d | %d | %s |\n",
                   r.name.c_str(), st.size(), km, st.empty() ? 0.0 : km / st.size(), r.wall_s, d.sd_m * 1e3, d.sh_m * 1e3,
                   d.qr_m * 1e3, st.empty() ? 0.0 : st.back().tread_wear_m * 1e3,
-                  st.empty() ? 0.0 : st.back().flange_wear_m * 1e3, to_string(r.result.status));
+                  st.empty() ? 0.0 : st.back().flange_wear_m * 1e3, lost, fallbacks, status.c_str());
     md << buf;
   }
   for (const ModelRun& r : runs)
@@ -74,11 +88,11 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
       }
     }
   md << "\n## Plots\n\n";
-  if (plots_ok) {
+  if (plot_note.empty()) {
     for (const char* p : {"profiles", "tread_zoom", "flange_zoom", "dimensions", "model_difference", "wear_rate"})
       md << "![" << p << "](" << p << ".png)\n\n";
   } else {
-    md << "(plots not produced: scripts/plot_compare.py failed or matplotlib is missing)\n";
+    md << "**(plots not produced: " << plot_note << ")**\n";
   }
   md << "\nPer-model outputs (steps.csv, profiles of every step .prw/.csv, wear distributions) are in the model "
         "folders.\n";
@@ -92,37 +106,55 @@ void RegisterCompareCommand(CLI::App& app) {
     std::string scenario, out = "compare_out", models = "hertz,conformal";
     int steps = 7;
     std::string python;  // empty: PythonOr's default
+    bool plot = true;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--out", a->out, "output folder");
-  sub->add_option("--models", a->models, "comma-separated contact models (" + ContactModelNames() + ")");
+  sub->add_option("--models", a->models, WearModelHelp("comma-separated contact models"));
   sub->add_option("--steps", a->steps, "wheel steps per model");
   sub->add_option("--python", a->python, kPythonHelp);
+  sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
   sub->callback([a]() {
     const Scenario sc = LoadScenario(a->scenario);
+    // every check before the minutes of computing: models, output folder, plotting interpreter
+    const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
+    if (a->steps < 1) throw InputError("option --steps: must be >= 1");
+    EnsureOutputFolder(a->out, "--out");
+    const std::string python = PythonOr(a->python);
+    if (a->plot) RequirePlotPython(python, "--python");
     std::vector<ModelRun> runs;
     BeginWearOutput(a->out);
-    for (const std::string& m : SplitCommaList(a->models)) {
+    for (const std::string& m : models) {
       ModelRun run;
       run.name = m;
       WearSimulationOptions o;
-      o.contact.model = ParseContactModel(m);
+      o.contact.model = ParseWearModel(m, "--models");
       o.steps = a->steps;
       o.total_km = 0.0;  // compare on the number of steps (each removes the cap)
       run.result = RunWearWithOutput(sc, o, a->out + "/" + m, m, a->steps, &run.wall_s);
       const double km = run.result.steps.empty() ? 0.0 : run.result.steps.back().km;
       std::printf("%s: %zu steps, %.1f km, %.1f s, %s\n", m.c_str(), run.result.steps.size(), km, run.wall_s,
                   to_string(run.result.status));
+      PrintRunWarnings(m, run.result);
       std::fflush(stdout);
       runs.push_back(std::move(run));
     }
-    if (runs.empty()) throw InputError("compare: no models given");
-    const std::string script = PlotScript("plot_compare.py");
-    const std::string cmd = PythonOr(a->python) + " '" + script + "' '" + a->out + "' " + a->models;
-    const bool plots_ok = std::system(cmd.c_str()) == 0;
-    WriteReport(a->out, sc, runs, a->steps, plots_ok);
+    bool plots_ok = false;
+    if (a->plot) {
+      std::string list;
+      for (const std::string& m : models) list += (list.empty() ? "" : ",") + m;
+      const std::string cmd = "'" + python + "' '" + PlotScript("plot_compare.py") + "' '" + a->out + "' " + list;
+      plots_ok = std::system(cmd.c_str()) == 0;
+    }
+    WriteReport(a->out, sc, runs, a->steps,
+                plots_ok ? "" : a->plot ? "scripts/plot_compare.py failed" : "--no-plot");
     std::printf("report: %s/report.md\n", a->out.c_str());
+    std::vector<std::pair<std::string, const WearSimulationResult*>> done;
+    for (const ModelRun& r : runs) done.emplace_back(r.name, &r.result);
+    ThrowIfIncomplete(done);
+    if (a->plot && !plots_ok)
+      throw IncompleteResult(ExitCode::PartialResult, "the plots were not produced (scripts/plot_compare.py failed)");
   });
 }
 

@@ -4,6 +4,7 @@
 
 #include "cli_setup.hpp"
 #include "commands.hpp"
+#include "contact_status.hpp"
 #include "conforma/error.hpp"
 #include "contact_fields_export.hpp"
 #include "report_json.hpp"
@@ -48,19 +49,24 @@ struct ContactCommand {
                 << " mrad\n";
       PrintPatchTableHeader(std::cout, "wheel");
     }
+    std::vector<WheelContactReport> reports;  // for the status check after the output
     for (Side s : {Side::Left, Side::Right}) {
       if (side != "both" && side != to_string(s)) continue;
       const WheelContactReport r = SolveWheelContact(*geometry, s, pose, velocity, options);
+      reports.push_back(r);
       for (const std::string& file : fields.write(r, std::cerr)) out["fields_files"].push_back(file);
       if (json) {
         out["wheels"].push_back(ToJson(r));
       } else {
         if (r.patches.empty()) std::cout << "   " << to_string(s) << ": " << to_string(r.status) << "\n";
         for (const PatchReport& p : r.patches) PrintPatchRow(std::cout, to_string(s), p);
+        if (!r.patches.empty()) PrintWheelStatus(std::cout, r, options.vertical_load_N);
       }
       PrintWarnings(std::cerr, std::string(to_string(s)) + " wheel", r);  // also in the JSON ("warnings")
     }
     if (json) std::cout << out.dump(2) << "\n";
+    std::cout.flush();
+    ThrowIfNotConverged(reports, options.vertical_load_N);
   }
 };
 }  // namespace

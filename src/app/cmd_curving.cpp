@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kinematics_quasistatic.hpp"
@@ -70,13 +71,17 @@ void RegisterCurvingCommand(CLI::App& app) {
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--class", a->track_class, "track class index (default: all)");
-  sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+  sub->add_option("--model", a->model, WearModelHelp("contact model") + "; default: the scenario's");
   sub->add_flag("--equilibrium", a->equilibrium,
                 "also print the quasi-static solve itself: status and residual per bogie, flange-contact shift");
   sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred (default: the scenario's)");
   sub->callback([a]() {
     Scenario sc = LoadScenario(a->scenario);
-    const ContactModel model = a->model.empty() ? sc.model : ParseContactModel(a->model);
+    const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
+    if (!IsWearContactModel(model))
+      throw InputError(std::string("scenario contact_model '") + to_string(model) +
+                       "' solves the normal problem only (no creep forces for the curving equilibrium); usable: " +
+                       WearContactModelNames());
     if (a->provider == "quasistatic") sc.kinematics.provider = KinematicsProvider::QuasiStatic;
     else if (a->provider == "kinematic") sc.kinematics.provider = KinematicsProvider::Kinematic;
     else if (a->provider == "centred") sc.kinematics.provider = KinematicsProvider::Centred;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "conforma/error.hpp"
 #include "conforma/validation/stress.hpp"
 
 namespace conforma::cli {
@@ -57,6 +58,8 @@ void RegisterStressCommand(CLI::App& app) {
   sub->add_option("--data", *data, kDataHelp);
   sub->add_option("--json", *json_path, "write the summary as JSON to this file");
   sub->callback([=]() {
+    if (options->cases < 1) throw InputError("option --cases: must be >= 1 (got " + std::to_string(options->cases) + ")");
+    if (*determinism_cases < 0) throw InputError("option --determinism-cases: must be >= 0");
     const StressSetup setup = StressSetup::Make(DataDirOr(*data));
     const StressSummary s = RunStress(setup, *options);
     Print("stress", s);

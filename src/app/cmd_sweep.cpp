@@ -21,13 +21,17 @@ struct SweepCommand {
   bool csv = false;
 
   void run() {
+    require_finite(from_mm, "--from-mm");
+    require_finite(to_mm, "--to-mm");
     require_positive(step_mm, "--step-mm");
+    if (SplitCommaList(models).empty()) throw InputError("option --models: no contact model given");
     if (to_mm < from_mm) throw InputError("option --to-mm must be >= --from-mm");
     const auto geometry = track.make_geometry();
     std::vector<std::string> names;
     std::vector<WheelContactOptions> model_options;  // built and validated once per model
     std::stringstream ss(models);
     for (std::string m; std::getline(ss, m, ',');) {
+      if (m.empty()) continue;
       ContactArgs c = contact;
       c.model = m;
       model_options.push_back(c.options());  // InputError for an unknown model

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/validation/threshold.hpp"
@@ -74,6 +75,7 @@ void RegisterThresholdCommand(CLI::App& app) {
     options.fastsim_elements = *elements;
     options.against = ParsePlanarComparison(*against);
     require_positive(*load, "--load-N");
+    EnsureOutputFolder(*out_dir, "--out");
     std::vector<ThresholdPoint> all;
     nlohmann::json json = {{"tolerance", *tolerance}, {"against", *against}, {"load_N", *load},
                            {"kp_strips", *strips}, {"fastsim_elements", *elements}};

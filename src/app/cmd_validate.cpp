@@ -18,7 +18,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_checks.hpp"
 #include "cli_setup.hpp"
+#include "exit_status.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/validation/measured_validation.hpp"
@@ -204,7 +206,7 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
       beyond += s[static_cast<int>(d)].beyond_simulation;
     }
     auto cell = [&](int k, bool rms) {
-      if (s[k].points == 0) return std::string("-");
+      if (s[k].points < 2) return std::string("-");  // km 0 alone is no comparison
       return Mm(rms ? s[k].rms_error_m : s[k].max_abs_error_m);
     };
     std::snprintf(buf, sizeof buf, "| %s | %zu | %.0f | %.1f | %s | %s | %s | %s | %s | %s | %d | %s |\n",
@@ -215,6 +217,13 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
   }
   for (const ModelValidation& r : runs)
     if (!r.result.message.empty()) md << "\n" << r.name << " stopped: " << r.result.message << "\n";
+  for (const ModelValidation& r : runs)
+    for (const WearStepRecord& st : r.result.steps)
+      if (st.failed_contacts > 0)
+        md << "\n**WARNING: " << r.name << " step " << st.step << ": " << st.failed_contacts << " of "
+           << st.failed_contacts + st.samples << " wheel contacts failed; no wear was taken from them.**\n";
+  md << "\n(\"-\": fewer than 2 measured points within the simulated distance -- the km-0 point alone is no "
+        "result.)\n";
   const WheelDimensions& d0 = runs.front().result.initial_dimensions;
   md << "\nInitial simulated profile: Sd " << Mm(d0.sd_m) << ", Sh " << Mm(d0.sh_m) << ", qR " << Mm(d0.qr_m)
      << " mm (the error at 0 km is the difference between this profile and the measured start).\n";
@@ -302,6 +311,7 @@ void RegisterValidateCommand(CLI::App& app) {
     std::vector<double> lateral_range_mm;
     bool align_taping_line = false;
     std::string python;  // empty: PythonOr's default
+    bool plot = true;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
@@ -309,7 +319,7 @@ void RegisterValidateCommand(CLI::App& app) {
   sub->add_option("--measured-profile", a->measured_profiles,
                   "measured wheel profile at a distance, FILE@KM (.prw, .whl/.ban MiniProf, or y,z mm columns); "
                   "repeatable");
-  sub->add_option("--models", a->models, "comma-separated contact models");
+  sub->add_option("--models", a->models, WearModelHelp("comma-separated contact models"));
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--km", a->km,
                   "simulate up to this distance (default: the scenario's total_km, or the largest measured km when "
@@ -325,8 +335,10 @@ void RegisterValidateCommand(CLI::App& app) {
                 "shift measured profiles in z to the simulated height at the taping line (profiles without an "
                 "absolute radius, e.g. MiniProf)");
   sub->add_option("--python", a->python, kPythonHelp);
+  sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
   sub->callback([a]() {
     const Scenario sc = LoadScenario(a->scenario);
+    const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
     if (a->measured.empty() && a->measured_profiles.empty())
       throw InputError("validate: give at least one --measured FILE or --measured-profile FILE@KM");
     std::vector<MeasuredDimensions> files;
@@ -358,13 +370,17 @@ void RegisterValidateCommand(CLI::App& app) {
                 sc.name.c_str(), target_km, steps, sc.update.cap_m * 1e3, largest_measured_km);
     std::fflush(stdout);
 
+    EnsureOutputFolder(a->out, "--out");
+    const std::string python = PythonOr(a->python);
+    if (a->plot) RequirePlotPython(python, "--python");
     BeginWearOutput(a->out);
     std::vector<ModelValidation> runs;
-    for (const std::string& m : SplitCommaList(a->models)) {
+    std::vector<std::string> too_short;  // dimensions with only the km-0 point inside the simulated distance
+    for (const std::string& m : models) {
       ModelValidation run;
       run.name = m;
       WearSimulationOptions o;
-      o.contact.model = ParseContactModel(m);
+      o.contact.model = ParseWearModel(m, "--models");
       o.steps = steps;
       o.total_km = target_km;
       const std::string dir = a->out + "/" + m;
@@ -397,9 +413,17 @@ void RegisterValidateCommand(CLI::App& app) {
       for (ReferenceDimension d : kReferenceDimensions) {
         const DimensionErrorSummary s = SummariseDimensionErrors(run.pooled, d);
         if (s.points + s.beyond_simulation == 0) continue;
+        if (s.points < 2) {  // the km-0 point alone compares the initial profiles, not the wear
+          std::printf("  %-2s NO RESULT: %d measured point(s) within the simulated %.0f km (%d beyond the simulation); "
+                      "simulate further (--km, --steps)\n",
+                      to_string(d), s.points, km, s.beyond_simulation);
+          too_short.push_back(m + " " + to_string(d));
+          continue;
+        }
         std::printf("  %-2s RMS error %.3f mm, max |error| %.3f mm over %d points (%d beyond the simulation)\n",
                     to_string(d), s.rms_error_m * 1e3, s.max_abs_error_m * 1e3, s.points, s.beyond_simulation);
       }
+      PrintRunWarnings(m, run.result);
       for (size_t i = 0; i < profiles.size(); ++i)
         std::printf("  profile %s @ %.0f km: RMS %.4f mm, max %.4f mm (%s, %d points)\n", profiles[i].path.c_str(),
                     profiles[i].km, run.distances[i].rms_m * 1e3, run.distances[i].max_m * 1e3,
@@ -410,7 +434,6 @@ void RegisterValidateCommand(CLI::App& app) {
       std::fflush(stdout);
       runs.push_back(std::move(run));
     }
-    if (runs.empty()) throw InputError("validate: no models given (--models)");
     for (size_t i = 0; i < profiles.size(); ++i)
       SaveProfileCsv(profiles[i].profile, a->out + "/measured_profile_" + std::to_string(i + 1) + ".csv");
     WriteCsv(a->out, runs, files);
@@ -425,18 +448,32 @@ void RegisterValidateCommand(CLI::App& app) {
     rs.distance = dopt;
     rs.interpolation = interpolation;
     const std::string script = PlotScript("plot_validate.py");
-    const std::string python = PythonOr(a->python);
-    if (::access(python.c_str(), X_OK) != 0) {
-      rs.plot_note = python + " not found (install python3-matplotlib, set CONFORMA_PYTHON or give --python)";
+    std::string model_list;
+    for (const std::string& m : models) model_list += (model_list.empty() ? "" : ",") + m;
+    if (!a->plot) {
+      rs.plot_note = "--no-plot";
     } else {
-      const std::string cmd = python + " '" + script + "' '" + a->out + "' " + a->models;
+      const std::string cmd = "'" + python + "' '" + script + "' '" + a->out + "' " + model_list;
       const int rc = std::system(cmd.c_str());
       if (rc != 0) rs.plot_note = "scripts/plot_validate.py failed (exit " + std::to_string(rc) + "; is matplotlib installed?)";
     }
-    if (!rs.plot_note.empty()) std::fprintf(stderr, "conforma validate: WARNING: plots not produced: %s\n", rs.plot_note.c_str());
+    if (!rs.plot_note.empty() && a->plot)
+      std::fprintf(stderr, "conforma validate: WARNING: plots not produced: %s\n", rs.plot_note.c_str());
     WriteReport(a->out, sc, runs, files, profiles, rs);
     std::printf("report: %s/report.md, %s/validate.csv, %s/validate.json\n", a->out.c_str(), a->out.c_str(),
                 a->out.c_str());
+    std::vector<std::pair<std::string, const WearSimulationResult*>> done;
+    for (const ModelValidation& r : runs) done.emplace_back(r.name, &r.result);
+    ThrowIfIncomplete(done);
+    if (!too_short.empty()) {
+      std::string what;
+      for (const std::string& t : too_short) what += (what.empty() ? "" : ", ") + t;
+      throw IncompleteResult(ExitCode::PartialResult,
+                             "no measured point beyond km 0 within the simulated distance for: " + what +
+                                 " (simulate further: --km, --steps)");
+    }
+    if (a->plot && !rs.plot_note.empty())
+      throw IncompleteResult(ExitCode::PartialResult, "the plots were not produced: " + rs.plot_note);
   });
 }
 

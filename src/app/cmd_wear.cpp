@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/scenario.hpp"
 #include "conforma/wear_simulation.hpp"
@@ -19,14 +20,15 @@ void RegisterWearCommand(CLI::App& app) {
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file (scenarios/default_metro.yaml)")->required();
-  sub->add_option("--model", a->model, "contact model: hertz, kp, kpec, conformal, auto (default: the scenario's)");
+  sub->add_option("--model", a->model, WearModelHelp("contact model") + "; default: the scenario's");
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--steps", a->steps, "wheel steps (default: the scenario's)");
   sub->add_option("--km", a->km, "stop at this distance (default: the scenario's total_km; 0 = unlimited)");
   sub->callback([a]() {
     const Scenario sc = LoadScenario(a->scenario);
     WearSimulationOptions o;
-    o.contact.model = a->model.empty() ? sc.model : ParseContactModel(a->model);
+    o.contact.model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
+    EnsureOutputFolder(a->out, "--out");
     o.steps = a->steps;
     o.total_km = a->km;
     const int total = a->steps >= 0 ? a->steps : sc.update.steps;
@@ -37,6 +39,8 @@ void RegisterWearCommand(CLI::App& app) {
     std::printf("%s: model %s, %zu steps, %.1f km, status %s, %.1f s -> %s/steps.csv\n", sc.name.c_str(), label.c_str(),
                 r.steps.size(), km, to_string(r.status), wall, a->out.c_str());
     if (!r.message.empty()) std::printf("  %s\n", r.message.c_str());
+    PrintRunWarnings(label, r);
+    ThrowIfIncomplete({{label, &r}});
   });
 }
 

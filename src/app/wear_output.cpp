@@ -10,6 +10,7 @@
 #include <iomanip>
 
 #include "conforma/error.hpp"
+#include "exit_status.hpp"
 #include "conforma/profile_io.hpp"
 
 namespace conforma::cli {
@@ -45,7 +46,7 @@ void WriteWearStep(const std::string& dir, const WearStepRecord& s) {
   std::ofstream out(dir + "/wear_" + tag + ".csv");
   if (!out) throw InputError(dir + "/wear_" + tag + ".csv: cannot write");
   out << "# wear distribution of " << tag << ": wheel arc length s (grid of the profile BEFORE the step), wheel wear "
-         "rate (mean of all wheels, m per m travelled, raw), depth removed in the step (smoothed, scaled to the cap);"
+         "rate (mean of all wheels, mm of depth per km travelled, raw), depth removed in the step (smoothed, scaled to the cap);"
          " rail depth per wheel passage (left/right rail, arc length on the mounted rail)\n";
   out << "s_mm,wheel_rate_mm_per_km,removed_mm\n";
   out << std::setprecision(10);
@@ -88,6 +89,8 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
   }
   std::ofstream st(dir + "/status.txt");
   st << to_string(r.status) << "\n" << r.message << "\n";
+  const std::string incomplete = IncompleteReason(r);  // lost contacts too: "completed" alone would hide them
+  if (!incomplete.empty()) st << "incomplete: " << incomplete << "\n";
 }
 
 WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
@@ -102,6 +105,30 @@ WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationO
   *wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   FinishWearOutput(dir, result);
   return result;
+}
+
+void PrintRunWarnings(const std::string& label, const WearSimulationResult& r) {
+  for (const WearStepRecord& s : r.steps) {
+    if (s.failed_contacts > 0)
+      std::printf("  WARNING: [%s] step %d: %d of %d wheel contacts FAILED (no wear taken from them; steps.csv "
+                  "failed_contacts)\n",
+                  label.c_str(), s.step, s.failed_contacts, s.failed_contacts + s.samples);
+    if (s.kinematics_fallbacks > 0)
+      std::printf("  note: [%s] step %d: %d track class(es) used a kinematics fallback (steps.csv kinematics_fallbacks)\n",
+                  label.c_str(), s.step, s.kinematics_fallbacks);
+  }
+  if (r.status != WearSimulationStatus::Completed)
+    std::printf("  WARNING: [%s] stopped: %s %s\n", label.c_str(), to_string(r.status), r.message.c_str());
+  std::fflush(stdout);
+}
+
+void ThrowIfIncomplete(const std::vector<std::pair<std::string, const WearSimulationResult*>>& runs) {
+  std::string what;
+  for (const auto& [label, result] : runs) {
+    const std::string reason = IncompleteReason(*result);
+    if (!reason.empty()) what += (what.empty() ? "" : "; ") + label + ": " + reason;
+  }
+  if (!what.empty()) throw IncompleteResult(ExitCode::PartialResult, what);
 }
 
 void PrintProgress(const std::string& label, const WearStepRecord& s, int steps_total) {

@@ -2,6 +2,8 @@
 // Output of a wear run (conforma wear / conforma compare): steps.csv, profiles of every step (.prw/.prr + CSV),
 // wear distributions, and a one-line progress display on a terminal.
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "conforma/wear_simulation.hpp"
 
@@ -15,6 +17,12 @@ void WriteWearStep(const std::string& dir, const WearStepRecord& step);
 void FinishWearOutput(const std::string& dir, const WearSimulationResult& result);
 // "\r[model] step j/n  km ..." on stderr when it is a terminal.
 void PrintProgress(const std::string& label, const WearStepRecord& step, int steps_total);
+// One line per step that lost wheel contacts or used a kinematics fallback ("WARNING: [label] step j: ..."), to
+// stdout, so that a run that lost contacts never reads as a clean one.
+void PrintRunWarnings(const std::string& label, const WearSimulationResult& result);
+// Throws IncompleteResult(PartialResult) naming every (label, result) whose IncompleteReason is not empty; call it
+// after all outputs are written.
+void ThrowIfIncomplete(const std::vector<std::pair<std::string, const WearSimulationResult*>>& runs);
 // One run with all of the above in dir (progress labelled `label`, out of steps_total); its wall time in *wall_s.
 WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
                                        const std::string& label, int steps_total, double* wall_s);

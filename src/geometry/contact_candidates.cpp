@@ -12,8 +12,8 @@ namespace conforma {
 const char* to_string(CandidateStatus status) {
   switch (status) {
     case CandidateStatus::Ok: return "ok";
-    case CandidateStatus::NoContact: return "no contact";
-    default: return "no overlap";
+    case CandidateStatus::NoContact: return "no_contact";
+    default: return "no_overlap";
   }
 }
 

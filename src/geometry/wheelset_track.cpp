@@ -10,12 +10,12 @@
 namespace conforma {
 
 const char* to_string(Side side) { return side == Side::Left ? "left" : "right"; }
-const char* to_string(ContactStatus status) { return status == ContactStatus::Ok ? "ok" : "no overlap"; }
+const char* to_string(ContactStatus status) { return status == ContactStatus::Ok ? "ok" : "no_overlap"; }
 const char* to_string(EquilibriumStatus status) {
   switch (status) {
     case EquilibriumStatus::Converged: return "converged";
-    case EquilibriumStatus::NotConverged: return "not converged";
-    default: return "no contact";
+    case EquilibriumStatus::NotConverged: return "not_converged";
+    default: return "no_contact";
   }
 }
 

@@ -55,6 +55,40 @@ WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, do
   return d;
 }
 
+bool IsWearContactModel(ContactModel model) { return model != ContactModel::Reference; }
+
+std::string WearContactModelNames() {
+  std::string names;
+  for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal,
+                         ContactModel::Reference, ContactModel::Auto})
+    if (IsWearContactModel(m)) names += (names.empty() ? "" : ", ") + std::string(to_string(m));
+  return names;
+}
+
+int LostContacts(const WearSimulationResult& result) {
+  int lost = 0;
+  for (const WearStepRecord& s : result.steps) lost += s.failed_contacts;
+  return lost;
+}
+
+std::string IncompleteReason(const WearSimulationResult& result) {
+  std::string reason;
+  if (result.status != WearSimulationStatus::Completed)
+    reason = std::string("status ") + to_string(result.status) + " after " + std::to_string(result.steps.size()) +
+             " step(s)" + (result.message.empty() ? "" : ": " + result.message);
+  const int lost = LostContacts(result);
+  if (lost > 0) {
+    std::string steps;
+    for (const WearStepRecord& s : result.steps)
+      if (s.failed_contacts > 0)
+        steps += (steps.empty() ? "" : ", ") + std::to_string(s.step) + " (" + std::to_string(s.failed_contacts) +
+                 " of " + std::to_string(s.failed_contacts + s.samples) + ")";
+    reason += (reason.empty() ? "" : "; ") + std::to_string(lost) +
+              " wheel contact(s) failed (no wear taken from them) in step(s) " + steps;
+  }
+  return reason;
+}
+
 namespace {
 
 TrackSetup SetupWith(const Scenario& sc, const Profile& wheel, const std::array<Profile, 2>& mounted_rails) {
@@ -73,6 +107,17 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   const int steps = options.steps >= 0 ? options.steps : scenario.update.steps;
   const double total_km = options.total_km >= 0.0 ? options.total_km : scenario.update.total_km;
   if (steps < 1) throw InputError("wear simulation: steps must be >= 1");
+  if (!IsWearContactModel(options.contact.model))
+    throw InputError(std::string("contact model '") + to_string(options.contact.model) +
+                     "' solves the normal problem only (no creep forces, no wear); the wear loop needs one of " +
+                     WearContactModelNames());
+  // A depth smoothing wavelength longer than the wheel profile flattens the whole distribution and makes the
+  // smoothing spline's matrix singular (seen at 10 m): an input error, not an internal one.
+  if (scenario.update.smoothing_cutoff_m > scenario.wheel.length())
+    throw InputError("scenario " + scenario.source + ": update.smoothing_mm = " +
+                     std::to_string(scenario.update.smoothing_cutoff_m * 1e3) +
+                     " mm is longer than the wheel profile (arc length " + std::to_string(scenario.wheel.length() * 1e3) +
+                     " mm); use 0 (no smoothing) up to that length, typically 1.5-7.5 mm");
   auto fallbacks = std::make_shared<std::atomic<int>>(0);
   const KinematicsFunction kinematics =
       kinematics_in ? kinematics_in

@@ -86,7 +86,7 @@ double NormalForceAtApproach(const BenchCase& bench_case, const PatchSolveOption
 
 // The BemResult numbers of the reference solve (bem_reference.hpp).
 struct BemReferenceSolution {
-  std::string status;  // to_string(BemStatus): "converged", "not-converged", "no-contact"
+  std::string status;  // to_string(BemStatus): "converged", "not_converged", "no_contact"
   // max pressure (Pa), contact area (m^2), fn_bar (N, = the case's load), solved approach (m)
   double pmax_Pa = 0.0, area_m2 = 0.0, fn_N = 0.0, approach_m = 0.0;
   bool contact_at_grid_edge = false;  // the BEM contact reaches its grid's edge (BemResult)

@@ -1,0 +1,62 @@
+// Checks made before computing (cli_checks.hpp).
+#include "cli_checks.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "cli_setup.hpp"
+#include "conforma/error.hpp"
+#include "conforma/wear_simulation.hpp"
+
+namespace conforma::cli {
+
+void EnsureOutputFolder(const std::string& dir, const std::string& option) {
+  if (dir.empty()) throw InputError("option " + option + ": empty output folder");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    throw InputError("option " + option + " " + dir + ": cannot create the output folder" +
+                     (ec ? ": " + ec.message() : std::string()));
+  const std::filesystem::path probe = std::filesystem::path(dir) / ".conforma_write_check";
+  {
+    std::ofstream f(probe);
+    if (!(f << "x") || !(f.flush()))
+      throw InputError("option " + option + " " + dir + ": the output folder is not writable");
+  }
+  std::filesystem::remove(probe, ec);
+}
+
+void RequirePlotPython(const std::string& python, const std::string& option) {
+  const std::string cmd = "'" + python + "' -c 'import matplotlib' >/dev/null 2>&1";
+  if (std::system(cmd.c_str()) != 0)
+    throw InputError("option " + option + ": '" + python +
+                     "' cannot import matplotlib (is it a Python interpreter? install python3-matplotlib, set "
+                     "CONFORMA_PYTHON, give " + option + ", or skip the plots with --no-plot)");
+}
+
+ContactModel ParseWearModel(const std::string& name, const std::string& option) {
+  ContactModel m;
+  try {
+    m = ParseContactModel(name);
+  } catch (const InputError&) {
+    throw InputError("option " + option + ": unknown contact model '" + name + "' (usable: " +
+                     WearContactModelNames() + ")");
+  }
+  if (!IsWearContactModel(m))
+    throw InputError("option " + option + ": contact model '" + name +
+                     "' solves the normal problem only (no creep forces, no wear); usable: " + WearContactModelNames());
+  return m;
+}
+
+std::vector<std::string> ParseWearModelList(const std::string& list, const std::string& option) {
+  const std::vector<std::string> names = SplitCommaList(list);
+  if (names.empty()) throw InputError("option " + option + ": no contact model given (usable: " + WearContactModelNames() + ")");
+  for (const std::string& n : names) ParseWearModel(n, option);
+  return names;
+}
+
+std::string WearModelHelp(const std::string& what) { return what + " (" + WearContactModelNames() + ")"; }
+
+}  // namespace conforma::cli

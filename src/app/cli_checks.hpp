@@ -1,0 +1,24 @@
+#pragma once
+// Checks a command makes BEFORE it computes, so that a user mistake is an input error at once and not an internal
+// error after minutes (issue 13): the output folder, the plotting interpreter, the contact models of a wear run.
+#include <string>
+#include <vector>
+
+#include "conforma/contact_model.hpp"
+
+namespace conforma::cli {
+
+// Creates `dir` (and its parents) and checks that a file can be written in it; InputError naming `option` otherwise.
+void EnsureOutputFolder(const std::string& dir, const std::string& option);
+// Runs `python -c "import matplotlib"`; InputError naming `option` when the interpreter is missing or lacks
+// matplotlib (the plots of compare / validate would be missing).
+void RequirePlotPython(const std::string& python, const std::string& option);
+// A contact model that can drive the wear loop (IsWearContactModel); InputError naming `option` and the usable
+// models otherwise (reference: normal problem only).
+ContactModel ParseWearModel(const std::string& name, const std::string& option);
+// A comma-separated list of such models (at least one); the names as given.
+std::vector<std::string> ParseWearModelList(const std::string& list, const std::string& option);
+// Help text of a wear run's --model(s) option: "<what> (hertz, kp, kpec, conformal, auto)".
+std::string WearModelHelp(const std::string& what);
+
+}  // namespace conforma::cli

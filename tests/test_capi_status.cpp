@@ -1,0 +1,55 @@
+// The C API's statuses agree with the command line (issue 13, item 11): rigid_equilibrium is a flag (0 or 1, anything
+// else is CONFORMA_ERROR_INPUT naming it), and a load no pose can carry is NOT_CONVERGED, as `conforma contact`
+// reports it, not NO_CONTACT.
+// test-links: pipeline  (CMakeLists.txt links the test with this library only; the layers below come with it)
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "conforma/wheel_contact.hpp"
+#include "capi_mbench_model.hpp"
+#include "conforma_c.h"
+
+namespace {
+
+TEST(CApiStatus, RigidEquilibriumMustBeZeroOrOne) {
+  CApiMBenchModel mbench;
+  ASSERT_NO_FATAL_FAILURE(mbench.Create());
+  const conforma_wheelset_state s = CApiMBenchModel::State(3.0);
+  conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
+  conforma_wheelset_result r;
+  for (int flag : {0, 1}) {
+    o.rigid_equilibrium = flag;
+    EXPECT_NE(conforma_evaluate(mbench.model, &s, &o, &r), CONFORMA_ERROR_INPUT) << flag << ": " << r.error_message;
+  }
+  for (int flag : {5, -1, 2}) {
+    o.rigid_equilibrium = flag;
+    EXPECT_EQ(conforma_evaluate(mbench.model, &s, &o, &r), CONFORMA_ERROR_INPUT) << flag;
+    EXPECT_NE(std::string(r.error_message).find("rigid_equilibrium"), std::string::npos) << r.error_message;
+  }
+}
+
+TEST(CApiStatus, UnreachableLoadIsNotConverged) {
+  // the default track (S1002 on 60E1), as `conforma contact --load-N 1e9` (not_converged, exit 4)
+  conforma_track_params track;
+  conforma_contact_params contact;
+  conforma_default_track_params(&track);
+  conforma_default_contact_params(&contact);
+  conforma_model* model = nullptr;
+  char error[CONFORMA_ERROR_TEXT];
+  ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
+  struct Destroy { conforma_model* m; ~Destroy() { conforma_model_destroy(m); } } destroy{model};
+  const conforma_wheelset_state s = CApiMBenchModel::State(0.0);
+  for (int rigid : {0, 1}) {
+    conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
+    o.rigid_equilibrium = rigid;
+    o.vertical_load_N[0] = o.vertical_load_N[1] = 1e9;
+    conforma_wheelset_result r;
+    ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+    for (int k = 0; k < 2; ++k)
+      EXPECT_EQ(r.wheel[k].status, CONFORMA_WHEEL_NOT_CONVERGED) << "rigid_equilibrium " << rigid << " wheel " << k;
+  }
+}
+
+}  // namespace
