@@ -66,6 +66,22 @@ TEST(CliStatus, ContactNotConvergedIsShownAndExits4) {
   EXPECT_EQ(RunCli("--allow-partial " + args).exit_code, 0);
 }
 
+// Item 1 in `sweep`: the same non-converged wheel in a one-point sweep is shown in the text and CSV and exits 4.
+TEST(CliStatus, SweepNotConvergedIsShownAndExits4) {
+  const std::string args = "sweep --models kpec --side right --wheel '" +
+                           conforma::test::SharedData("profiles/contact/testbank/profiles/Car7358_0001r.whl") +
+                           "' --rail 50E4 --from-mm 11.103 --to-mm 11.103 --yaw-per-y " + std::to_string(-13.5 / 11.103) +
+                           " --load-N 163143.77 --mu 0.254";
+  const auto r = RunCli(args);
+  EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
+  EXPECT_NE(r.out.find("right wheel: status not_converged"), std::string::npos) << r.out;
+  const auto c = RunCli(args + " --csv");
+  EXPECT_EQ(c.exit_code, 4) << c.err;
+  EXPECT_NE(c.out.find(",wheel_status\n"), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find(",not_converged\n"), std::string::npos) << c.out;
+  EXPECT_EQ(RunCli(args + " --allow-partial").exit_code, 0);
+}
+
 // Item 2: a wear run whose wear distribution lost contacts says so (stdout, steps.csv) and exits 5.
 TEST(CliStatus, WearWithLostContactsIsPartial) {
   const fs::path out = TempDir("wear_lost");

@@ -105,6 +105,7 @@ class Wheel(TypedDict):
     lateral_force_N: float
     load_iterations: int
     patches: List[Patch]
+    warnings: List[str]       # plausibility warnings "code: message" (docs/physics-reference.md §13)
     complete: bool            # no problem below
     problems: List[str]       # what did not converge or failed ([] when complete)
 

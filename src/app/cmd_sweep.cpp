@@ -7,6 +7,7 @@
 #include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
+#include "contact_status.hpp"
 #include "report_json.hpp"
 
 namespace conforma::cli {
@@ -41,7 +42,7 @@ struct SweepCommand {
     const WheelsetVelocity velocity = contact.rolling_velocity(geometry->setup().nominal_radius_m[0]);
     if (csv) {
       std::cout << "model,y_mm,yaw_mrad,delta_r_mm,patch,y_cp_rail_mm,contact_angle_rad,rolling_radius_mm,fn_N,pmax_MPa,"
-                   "area_mm2,width_mm,alpha_c_deg,is_conformal,fx_N,fy_N,mz_Nm\n";
+                   "area_mm2,width_mm,alpha_c_deg,is_conformal,fx_N,fy_N,mz_Nm,wheel_status\n";
     } else {
       std::cout << "conforma sweep: wheel " << track.wheel << " on rail " << track.rail << " ("
                 << (track.inclination.empty() ? "default inclination" : track.inclination) << "), " << side
@@ -49,6 +50,7 @@ struct SweepCommand {
                 << contact.friction << "\n";
     }
     WheelsetPose guess;
+    std::vector<WheelContactReport> reports;  // every wheel solved, for the status check after the table
     for (int k = 0; from_mm + k * step_mm <= to_mm + 1e-9; ++k) {
       const double y_mm = from_mm + k * step_mm, yaw_mrad = yaw_per_y_mrad_per_mm * y_mm;
       const EquilibriumResult eq = geometry->SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3, guess);
@@ -67,6 +69,7 @@ struct SweepCommand {
       for (size_t m = 0; m < names.size(); ++m) {
         const std::string& name = names[m];
         const WheelContactReport r = SolveWheelContact(*geometry, s, eq.pose, velocity, model_options[m]);
+        reports.push_back(r);
         if (r.patches.empty() && !csv) std::cout << std::string(8 - std::min<size_t>(8, name.size()), ' ') << name
                                                  << ": " << to_string(r.status) << "\n";
         int j = 0;
@@ -76,13 +79,17 @@ struct SweepCommand {
                       << j++ << ',' << p.y_contact_rail_m * 1e3 << ',' << p.contact_angle_rad << ','
                       << p.rolling_radius_m * 1e3 << ',' << p.fn_N << ',' << p.pmax_Pa * 1e-6 << ','
                       << p.area_m2 * 1e6 << ',' << p.width_m * 1e3 << ',' << p.alpha_c_deg << ',' << p.is_conformal
-                      << ',' << p.fx_N << ',' << p.fy_N << ',' << p.mz_Nm << '\n';
+                      << ',' << p.fx_N << ',' << p.fy_N << ',' << p.mz_Nm << ',' << to_string(r.status) << '\n';
           } else {
             PrintPatchRow(std::cout, name, p);
           }
         }
+        if (!csv && !r.patches.empty()) PrintWheelStatus(std::cout, r, contact.load_N);
+        PrintWarnings(std::cerr, name + " at y = " + std::to_string(y_mm) + " mm", r);
       }
     }
+    std::cout.flush();
+    ThrowIfNotConverged(reports, contact.load_N);  // the table is complete; a non-converged wheel is exit 4
   }
 };
 }  // namespace
