@@ -46,6 +46,10 @@ void FillWheel(const conforma::WheelsetTrackGeometry& geometry, Side side, const
   w->patches_found = static_cast<int>(r.patches.size());
   w->vertical_position_m = r.pose.vertical_m;
   w->load_iterations = r.load_iterations;
+  w->warning_count = static_cast<int>(r.warnings.size());
+  std::string warnings;
+  for (const std::string& text : r.warnings) warnings += (warnings.empty() ? "" : "\n") + text;
+  CopyText(warnings, w->warnings, sizeof w->warnings);
   const Eigen::Vector3d centre = conforma::interop::WheelCentre(geometry, side, r.pose);
   Store(w->wheel_centre_track_m, centre);
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();

@@ -67,9 +67,10 @@ extern "C" {
 #endif
 
 /* Version of this interface; bumped on any incompatible change of a struct or function below. */
-#define CONFORMA_C_API_VERSION 1
+#define CONFORMA_C_API_VERSION 2  /* 2: conforma_wheel_result gained warning_count and warnings */
 #define CONFORMA_MAX_PATCHES 4    /* patches stored per wheel (more are counted in patches_found) */
 #define CONFORMA_ERROR_TEXT 256   /* size of the error texts, including the terminating 0 */
+#define CONFORMA_WARNING_TEXT 1024 /* size of a wheel's warnings text, including the terminating 0 */
 #define CONFORMA_LEFT 0
 #define CONFORMA_RIGHT 1
 
@@ -153,7 +154,7 @@ typedef struct conforma_patch_result {
   double rolling_radius_m;
   double approach_m;               /* approach of the patch along its reference normal (as PatchReport::approach_m) */
   /* contact state */
-  double area_m2, pmax_Pa, adhesion_area_m2, slip_area_m2, frictional_power_W;  /* frictional power 0: kp, kpec */
+  double area_m2, pmax_Pa, adhesion_area_m2, slip_area_m2, frictional_power_W;
   double creepage_longitudinal, creepage_lateral, creepage_spin_per_m;  /* at the reference point */
   double conformity_index_deg;     /* alpha_c (paper 003 eq. 13); 0 for the Hertz model */
   int is_conformal;                /* 1 when alpha_c > 18 deg (KP and reference models; a flag only) */
@@ -169,6 +170,11 @@ typedef struct conforma_wheel_result {
   double wheel_centre_track_m[3];  /* the wheel centre (axle point in the taping-line plane), track frame, m */
   double vertical_position_m;      /* the pose's vertical_m the wheel was solved at (pushed down in load control) */
   int load_iterations;             /* root-finder evaluations of load control; 0 in approach mode */
+  /* Plausibility warnings of the solve (docs/physics-reference.md section 13: nominal radius far from the
+   * profile's, mu outside 0.05-1, p_max above 5 GPa, load not reached), as `conforma contact --json` lists them:
+   * one "code: message" line each, joined by '\n', truncated to CONFORMA_WARNING_TEXT; "" when none. */
+  int warning_count;
+  char warnings[CONFORMA_WARNING_TEXT];
 } conforma_wheel_result;
 
 typedef struct conforma_wheelset_result {

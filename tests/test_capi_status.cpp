@@ -1,6 +1,6 @@
 // The C API's statuses agree with the command line (issue 13, item 11): rigid_equilibrium is a flag (0 or 1, anything
 // else is CONFORMA_ERROR_INPUT naming it), and a load no pose can carry is NOT_CONVERGED, as `conforma contact`
-// reports it, not NO_CONTACT.
+// reports it, not NO_CONTACT; the wheel results carry the plausibility warnings.
 // test-links: pipeline  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>
@@ -50,6 +50,45 @@ TEST(CApiStatus, UnreachableLoadIsNotConverged) {
     for (int k = 0; k < 2; ++k)
       EXPECT_EQ(r.wheel[k].status, CONFORMA_WHEEL_NOT_CONVERGED) << "rigid_equilibrium " << rigid << " wheel " << k;
   }
+}
+
+// The plausibility warnings reach the C API as `conforma contact --json` lists them (issue 13: all warnings in every
+// output): mu = 5 and a 1e9 N load (p_max far above the material limit) are named; a plain evaluation has none.
+TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
+  conforma_track_params track;
+  conforma_contact_params contact;
+  conforma_default_track_params(&track);
+  conforma_default_contact_params(&contact);
+  contact.model = "hertz";
+  const conforma_wheelset_state s = CApiMBenchModel::State(0.0);
+  conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
+  for (double mu : {0.3, 5.0}) {
+    contact.friction_coefficient = mu;
+    conforma_model* model = nullptr;
+    char error[CONFORMA_ERROR_TEXT];
+    ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
+    struct Destroy { conforma_model* m; ~Destroy() { conforma_model_destroy(m); } } destroy{model};
+    conforma_wheelset_result r;
+    ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+    for (int k = 0; k < 2; ++k) {
+      const std::string text = r.wheel[k].warnings;
+      if (mu == 0.3) {
+        EXPECT_EQ(r.wheel[k].warning_count, 0) << text;
+        EXPECT_EQ(text, "");
+      } else {
+        EXPECT_EQ(r.wheel[k].warning_count, 1) << text;
+        EXPECT_EQ(text.rfind("friction_coefficient:", 0), 0u) << text;
+      }
+    }
+    if (mu == 0.3) {
+      o.vertical_load_N[0] = o.vertical_load_N[1] = 1e9;
+      ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+      // Hertz carries it, at ~26 GPa: named as above the material limit
+      EXPECT_NE(std::string(r.wheel[0].warnings).find("pressure_limit:"), std::string::npos) << r.wheel[0].warnings;
+      o = CApiMBenchModel::RigidEquilibriumOptions();
+    }
+  }
+  EXPECT_EQ(conforma_api_version(), 2);
 }
 
 }  // namespace
