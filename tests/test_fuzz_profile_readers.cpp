@@ -115,12 +115,12 @@ TEST(FuzzProfileReaders, MutatedFilesLoadOrThrowInputError) {
   struct Source {
     const char* file;
     ProfileKind kind;
-    bool folds = false;  // measured profile that folds back in y: read with function_of_y = false
+    double smoothing_m = 0.0;  // measured profile with noise: read with smoothing (profile_checks refuses it raw)
   };
   const Source sources[] = {{"worn_high_mileage.prw", ProfileKind::Wheel}, {"site_b_hr.prr", ProfileKind::Rail},
                             {"MBench_S1002_v3.prw", ProfileKind::Wheel}, {"avg_HR.BAN", ProfileKind::Rail},
-                            {"avg_wheel.whl", ProfileKind::Wheel},       {"Car7216_0001r.whl", ProfileKind::Wheel, true},
-                            {"rail_left_iter288.ban", ProfileKind::Rail, true}, {"os_l.csv", ProfileKind::Rail}};
+                            {"avg_wheel.whl", ProfileKind::Wheel, 0.01e-3}, {"Car7216_0001r.whl", ProfileKind::Wheel},
+                            {"rail_left_iter288.ban", ProfileKind::Rail},   {"os_l.csv", ProfileKind::Rail}};
   const fs::path dir = fs::temp_directory_path() / ("conforma_fuzz_" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::mt19937 rng(12345);
@@ -130,7 +130,7 @@ TEST(FuzzProfileReaders, MutatedFilesLoadOrThrowInputError) {
     ASSERT_TRUE(fs::exists(original)) << original;
     ProfileReadOptions options;
     options.kind = src.kind;
-    options.fit.function_of_y = !src.folds;
+    options.fit.smoothing_rms_m = src.smoothing_m;
     // the unmodified file must load
     try {
       EXPECT_TRUE(ProfileIsFinite(LoadProfile(original.string(), options))) << src.file;
