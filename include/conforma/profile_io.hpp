@@ -41,8 +41,13 @@
 
 namespace conforma {
 
-// File format; Auto takes it from the extension (.prw .prr: Simpack; .whl .ban: MiniProf; .txt .dat .csv: columns).
-enum class ProfileFormat { Auto, Simpack, MiniProf, Columns };
+// File format of a profile file.
+enum class ProfileFormat {
+  Auto,      // from the extension (.prw .prr: Simpack; .whl .ban: MiniProf; .txt .dat .csv: columns)
+  Simpack,   // Simpack rail-wheel profile (§2.1)
+  MiniProf,  // MiniProf new or old style (§2.2)
+  Columns    // plain two columns y z
+};
 // "auto", "simpack", "miniprof", "columns"; ParseProfileFormat throws InputError for other names.
 const char* to_string(ProfileFormat format);
 ProfileFormat ParseProfileFormat(const std::string& name);
