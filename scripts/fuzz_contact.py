@@ -112,7 +112,7 @@ def mutate_text(text, rng, nprng):
         out = []
         for l in lines:
             ms = list(NUMBER.finditer(l))
-            if len(ms) >= 2 and not re.search(r"[A-Za-df-z=]", l):
+            if len(ms) >= 2 and not re.search(r"[A-DF-Za-df-z=]", l):
                 vals = [float(m.group(0)) for m in ms[:2]]
                 new = fn(vals)
                 rest = l[ms[1].end():]
