@@ -115,12 +115,15 @@ TEST(FuzzProfileReaders, MutatedFilesLoadOrThrowInputError) {
   struct Source {
     const char* file;
     ProfileKind kind;
-    bool folds = false;  // measured profile that folds back in y: read with function_of_y = false
+    double smoothing_m = 0.0;  // measured profile with noise: read with smoothing (profile_checks refuses it raw)
+    bool z_down = false;       // file with z pointing down (EN 15302 wheels): read with mirror_z
   };
   const Source sources[] = {{"worn_high_mileage.prw", ProfileKind::Wheel}, {"site_b_hr.prr", ProfileKind::Rail},
                             {"MBench_S1002_v3.prw", ProfileKind::Wheel}, {"avg_HR.BAN", ProfileKind::Rail},
-                            {"avg_wheel.whl", ProfileKind::Wheel},       {"Car7216_0001r.whl", ProfileKind::Wheel, true},
-                            {"rail_left_iter288.ban", ProfileKind::Rail, true}, {"os_l.csv", ProfileKind::Rail}};
+                            {"avg_wheel.whl", ProfileKind::Wheel, 0.01e-3}, {"Car7216_0001r.whl", ProfileKind::Wheel},
+                            {"rail_left_iter288.ban", ProfileKind::Rail},   {"os_l.csv", ProfileKind::Rail},
+                            {"../../../en15302/RUIC519A.dat", ProfileKind::Wheel, 0.0, true},
+                            {"Car7422_0001r.whl", ProfileKind::Wheel}};
   const fs::path dir = fs::temp_directory_path() / ("conforma_fuzz_" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::mt19937 rng(12345);
@@ -130,7 +133,8 @@ TEST(FuzzProfileReaders, MutatedFilesLoadOrThrowInputError) {
     ASSERT_TRUE(fs::exists(original)) << original;
     ProfileReadOptions options;
     options.kind = src.kind;
-    options.fit.function_of_y = !src.folds;
+    options.fit.smoothing_rms_m = src.smoothing_m;
+    options.mirror_z = src.z_down;
     // the unmodified file must load
     try {
       EXPECT_TRUE(ProfileIsFinite(LoadProfile(original.string(), options))) << src.file;
@@ -142,7 +146,7 @@ TEST(FuzzProfileReaders, MutatedFilesLoadOrThrowInputError) {
     for (int k = 0; k < 120; ++k) {
       std::string mutated = Mutate(text, rng);
       if (rng() % 4 == 0) mutated = Mutate(mutated, rng);  // sometimes two mutations
-      const fs::path path = dir / (std::to_string(k) + "_" + src.file);
+      const fs::path path = dir / (std::to_string(k) + "_" + fs::path(src.file).filename().string());
       std::ofstream(path, std::ios::binary) << mutated;
       try {
         const Profile p = LoadProfile(path.string(), options);

@@ -170,24 +170,27 @@ TEST(ProfileIo, MalformedFilesNameFileAndLine) {
   ProfileReadOptions rail;
   rail.kind = ProfileKind::Rail;
   struct Case { std::string name, text, expect; };
-  const std::string good = "  point.begin\n-10 1\n-5 0.2\n0 0\n5 0.2\n10 1\n";
+  const std::string good = "  point.begin\n-10 1\n-5 0.2\n0 0\n5 0.2\n10 1\n point.end\n";
   const std::vector<Case> cases = {
       {"empty.prr", "header.begin\n type = 0\nheader.end\nspline.begin\n point.begin\n point.end\nspline.end\n",
        "empty.prr: no profile points"},
       {"abc.prr", "header.begin\n type = 0\nheader.end\nspline.begin\n point.begin\n-10 1\n-5 abc\n0 0\n",
        "abc.prr:7: non-numeric value 'abc'"},
-      {"key.prr", "header.begin\n type = 0\nheader.end\nspline.begin\n shift.y = 1.0x\n" + good,
+      {"trunc.prr", "header.begin\n type = 0\nheader.end\nspline.begin\n point.begin\n-10 1\n-5 0.2\n0 0\n5 0.2\n10 1\n",
+       "trunc.prr:10: the file ends inside the point.begin block of line 5 (no point.end): truncated file?"},
+      {"key.prr", "header.begin\n type = 0\nheader.end\nspline.begin\n shift.y = 1.0x\n" + good + "spline.end\n",
        "key.prr:5: non-numeric value '1.0x'"},
-      {"rot.prr", "spline.begin\n rotate = 0.1\n" + good, "rot.prr:2: rotate != 0 is not supported"},
+      {"rot.prr", "spline.begin\n rotate = 0.1\n" + good + "spline.end\n", "rot.prr:2: rotate != 0 is not supported"},
       {"type.prr", "header.begin\n type = 1\nheader.end\n" + good, "type.prr:2: header type says wheel"},
-      {"fold.prr", "point.begin\n-10 1\n-5 0.2\n0 0\n-2 0.1\n5 0.2\n10 1\n", "fold.prr:5: profile folds back"},
+      {"fold.prr", "point.begin\n-2 0\n-1 0\n0 0\n-0.5 0.001\n1 0.002\n2 0.003\npoint.end\n",
+       "fold.prr:4: the curve turns back on itself"},
       {"cols.csv", "y_mm,z_mm\n-10,1\n-5,0.2\n0,x\n5,0.2\n", "cols.csv:4: non-numeric value 'x'"},
       {"one.csv", "-10,1\n-5\n", "one.csv:2: expected two columns"},
       {"nopts.csv", "# nothing here\ny,z\n", "nopts.csv: no profile points"},
       {"short.ban", "ColumnDef=X,Y\n\n1 2\n2 3\n3 zz\n", "short.ban:5: non-numeric value 'zz'"},
       {"cdef.ban", "ColumnDef=A,C\n\n1 2\n", "cdef.ban:1: ColumnDef 'A,C' has no X and Y columns"},
       {"few.whl", "ColumnDef=X,Y\n\n1 2\n2 3\n", "few.whl: no profile points found"},
-      {"nan.prr", "point.begin\n-10 1\n-5 nan\n0 0\n5 1\n", "nan.prr:3: non-numeric value 'nan'"},
+      {"nan.prr", "point.begin\n-10 1\n-5 nan\n0 0\n5 1\npoint.end\n", "nan.prr:3: non-numeric value 'nan'"},
       {"foo.xyz", "1 2\n", "foo.xyz: unknown profile file type"},
   };
   for (const auto& c : cases) {
@@ -199,9 +202,11 @@ TEST(ProfileIo, MalformedFilesNameFileAndLine) {
   ProfileReadOptions fold_ok;
   fold_ok.fit.function_of_y = false;
   const std::string msg =
-      load_error(tmp.file("cross.prr", "point.begin\n-10 0\n0 0\n0 -1\n-4 -1\n-4 1\n-3 1\n10 2\n"), fold_ok);
+      load_error(tmp.file("cross.prr", "point.begin\n-10 0\n0 0\n0 -1\n-4 -1\n-4 1\n-3 1\n10 2\npoint.end\n"), fold_ok);
   EXPECT_NE(msg.find("cross.prr:5: profile self-intersects: the segment starting at line 2"), std::string::npos) << msg;
   // a column file without a kind is refused, a missing file too
-  EXPECT_NE(load_error(tmp.path("cols.csv")).find("set ProfileReadOptions::kind"), std::string::npos);
+  const std::string no_kind = load_error(tmp.path("cols.csv"));
+  EXPECT_NE(no_kind.find("give the kind (command line: --wheel FILE or --rail FILE, `profile info --kind wheel|rail`"),
+            std::string::npos) << no_kind;
   EXPECT_NE(load_error(tmp.path("missing.prr")).find("cannot open"), std::string::npos);
 }

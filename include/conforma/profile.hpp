@@ -34,9 +34,9 @@ struct ProfileFitOptions {
   double smoothing_rms_m = 0.0;  // m, default 0
   // Spacing of the arc-length resampling that the profile stores [m]; default 0.1 mm.
   double sample_spacing_m = 0.1e-3;
-  // If true, the profile must be single-valued in y (z = f(y)): FromPoints sorts the input by y (so unsorted
-  // clouds are accepted); the file readers refuse curves folding back in the running surface. If false, input
-  // order defines the curve.
+  // If true, FromPoints sorts the input by y (so unsorted clouds are accepted); the file readers sort an unordered
+  // cloud but keep a curve that folds back (measured flange tips, undercut gauge faces) in its order, parametrised
+  // by arc length. If false, input order defines the curve.
   bool function_of_y = true;
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "conforma/profile.hpp"
+#include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 
 namespace conforma {
@@ -19,11 +20,14 @@ const char* BuiltInRailNames();
 
 // `resolve_file` maps a file name to the path to read (e.g. relative to a scenario file); default: as given.
 // `what` names the setting in errors ("option --rail", "track.rail", ...). InputError when the name is neither
-// built in nor an existing file, or when the file is malformed.
+// built in nor an existing file, or when the file is malformed (profile_io.hpp: the checks shared by every
+// entry point). `read` applies to files (its kind is set here); a built-in name with file options (mirroring,
+// units, smoothing, format: HasFileReadOptions) is an InputError.
 using FileResolver = std::function<std::string(const std::string&)>;
 Profile WheelProfileByNameOrFile(const std::string& name_or_file, const std::string& what = "wheel profile",
-                                 const FileResolver& resolve_file = {});
+                                 const FileResolver& resolve_file = {}, const ProfileReadOptions& read = {});
 Profile RailProfileByNameOrFile(const std::string& name_or_file, bool* built_in = nullptr,
-                                const std::string& what = "rail profile", const FileResolver& resolve_file = {});
+                                const std::string& what = "rail profile", const FileResolver& resolve_file = {},
+                                const ProfileReadOptions& read = {});
 
 }  // namespace conforma

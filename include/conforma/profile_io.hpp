@@ -18,10 +18,18 @@
 //                         flange back (y_file = 0); we shift to y_ours = y_file - T, T = WheelDiameterTaperline
 //                         header value or 70 mm, and shift z so that z(taping line) = 0.
 //  .txt .dat .csv  plain two-column y z (comma, semicolon, tab or space separated; '#' comments; an optional
-//                non-numeric header line before the data). Values in units of length_unit_m; mirror_y/mirror_z
-//                applied; kind must be given in ProfileReadOptions::kind.
-// Errors: InputError "<file>:<line>: <what>" for no points, non-numeric data, self-intersection, and a fold
-// (y running backwards by more than 0.05 mm) when options.fit.function_of_y is true. rotate != 0 is refused.
+//                non-numeric header line before the data). Values in units of length_unit_m; kind must be given
+//                in ProfileReadOptions::kind (command line: --wheel/--rail set it; `profile info --kind`).
+// ProfileReadOptions::format overrides the extension. mirror_y / mirror_z are applied to every format after its
+// own conversion (a wheel or rail file stored the other way round).
+// A curve that folds back in y (measured flange tips, undercut gauge faces) is kept in its file order and
+// parametrised by arc length (a note says where); an unordered point cloud is sorted by y.
+// Validation shared by every entry point (docs/profiles-and-formats.md §3): the file must be complete (Simpack
+// point/spline blocks closed, MiniProf XYPoints count, no truncated last line), the points distinct and spaced at
+// most 2 mm on the running surface without reversals, the orientation right (wheel flange, when there is one,
+// pointing to +z at negative y; rail head on top), and the points not noisy unless smoothing is asked for.
+// Errors: InputError "<file>:<line>: <what>" naming the command-line flag that fixes it where there is one
+// (--wheel-mirror, --wheel-z-down, --wheel-smooth-mm, --rail-...). rotate != 0 is refused.
 #include <map>
 #include <optional>
 #include <string>
@@ -33,15 +41,33 @@
 
 namespace conforma {
 
+// File format of a profile file.
+enum class ProfileFormat {
+  Auto,      // from the extension (.prw .prr: Simpack; .whl .ban: MiniProf; .txt .dat .csv: columns)
+  Simpack,   // Simpack rail-wheel profile (§2.1)
+  MiniProf,  // MiniProf new or old style (§2.2)
+  Columns    // plain two columns y z
+};
+// "auto", "simpack", "miniprof", "columns"; ParseProfileFormat throws InputError for other names.
+const char* to_string(ProfileFormat format);
+ProfileFormat ParseProfileFormat(const std::string& name);
+
 struct ProfileReadOptions {
   std::optional<ProfileKind> kind;  // required for plain column files; checked against Simpack/MiniProf files
   // Fit of the loaded points (profile.hpp): smoothing and resampling (LoadProfile); function_of_y also makes the
   // readers refuse a curve folding back in y
   ProfileFitOptions fit;
-  bool mirror_y = false;         // plain column files: y := -y
-  bool mirror_z = false;         // plain column files: z := -z
-  double length_unit_m = 1e-3;   // plain column files: file length unit in metres
+  bool mirror_y = false;         // every format, after its own conversion: y := -y (command line --wheel-mirror)
+  bool mirror_z = false;         // every format, after its own conversion: z := -z (command line --wheel-z-down)
+  double length_unit_m = 1e-3;   // plain column files: file length unit in metres (other formats: must stay 1e-3)
+  ProfileFormat format = ProfileFormat::Auto;  // file format; Auto: from the extension
+  // Refuse noisy points (profile_checks) unless fit.smoothing_rms_m > 0; false only for tests of the raw reader
+  bool check_noise = true;
 };
+
+// True when `options` differ from the defaults in a way that only makes sense for a profile file (mirroring,
+// units, smoothing, format): built-in profile names refuse them.
+bool HasFileReadOptions(const ProfileReadOptions& options);
 
 // Points of a profile file converted to our convention (metres), in curve order from small to large y.
 struct ProfilePoints {

@@ -11,7 +11,10 @@
 //       centred:     every wheelset centred and unyawed, yaw rate V/R, pure rolling (fast, for tests);
 //       kinematic:   the kinematic curving estimate of wear_simulation.hpp (flange contact + angle of attack).
 //   track: { gauge_mm: 1435, rail_inclination: "1:20" | 0.05 (rad) }
-//   profiles: { wheel: S1002 | <file>, rail: 50E4 | 60E1 | 54E1 | 50E6 | <file>, wheel_radius_mm: 355.5 }
+//   profiles: { wheel: S1002 | <file>, rail: 50E4 | 60E1 | 54E1 | 50E6 | <file>, wheel_radius_mm: 355.5,
+//               wheel_mirror / rail_mirror: false, wheel_z_down / rail_z_down: false, wheel_units / rail_units: mm | m,
+//               wheel_smoothing_mm / rail_smoothing_mm: 0, wheel_format / rail_format: auto }  (how a profile file
+//               is read, as --wheel-mirror ... on the command line; docs/profiles-and-formats.md §3)
 //       a built-in rail is generated UNINCLINED and mounted with track.rail_inclination; a rail file is mounted
 //       with the inclination too (give rail_inclination: 0 for files that are already canted).
 //   material: { shear_modulus_Pa, poisson_ratio, density_kg_m3 }

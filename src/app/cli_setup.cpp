@@ -38,12 +38,38 @@ void TrackArgs::add_to(CLI::App* app) {
   app->add_option("--flange-back-mm", flange_back_mm, "flange-back distance");
   app->add_option("--flange-back-position-mm", flange_back_position_mm, "wheel-profile y of the flange back");
   app->add_option("--r0-mm", nominal_radius_mm, "nominal (taping-line) wheel radius");
+  for (auto* side : {&wheel_file, &rail_file}) {
+    const std::string k = side == &wheel_file ? "wheel" : "rail";
+    app->add_flag("--" + k + "-mirror", side->mirror, k + " file stored mirrored in y: y := -y");
+    app->add_flag("--" + k + "-z-down", side->z_down,
+                  k + " file with z pointing the other way (" +
+                      (k == "wheel" ? "flange tip at negative z" : "rail head upside down") + "): z := -z");
+    app->add_option("--" + k + "-units", side->units, k + " plain column file: length unit")
+        ->check(CLI::IsMember({"mm", "m"}));
+    app->add_option("--" + k + "-smooth-mm", side->smooth_mm,
+                    k + " file: smooth noisy points, RMS distance of the fit to the points [mm] (the noise level)");
+    app->add_option("--" + k + "-format", side->format, k + " file format instead of the extension's")
+        ->check(CLI::IsMember({"auto", "simpack", "miniprof", "columns"}));
+  }
+}
+
+ProfileReadOptions TrackArgs::FileOptions::read_options() const {
+  ProfileReadOptions o;
+  o.mirror_y = mirror;
+  o.mirror_z = z_down;
+  if (units == "m") o.length_unit_m = 1.0;
+  else if (units != "mm") throw InputError("profile units must be mm or m, got '" + units + "'");
+  if (!(std::isfinite(smooth_mm) && smooth_mm >= 0 && smooth_mm <= 1.0))
+    throw InputError("profile smoothing must be between 0 and 1 mm (the noise level of the points)");
+  o.fit.smoothing_rms_m = smooth_mm * 1e-3;
+  o.format = ParseProfileFormat(format);
+  return o;
 }
 
 std::unique_ptr<WheelsetTrackGeometry> TrackArgs::make_geometry() const {
-  const Profile wheel_profile = WheelProfileByNameOrFile(wheel, "option --wheel");
+  const Profile wheel_profile = WheelProfileByNameOrFile(wheel, "option --wheel", {}, wheel_file.read_options());
   bool built_in = false;
-  const Profile rail_profile = RailProfileByNameOrFile(rail, &built_in, "option --rail");
+  const Profile rail_profile = RailProfileByNameOrFile(rail, &built_in, "option --rail", {}, rail_file.read_options());
   // built-in rails are uninclined: the track cants them (1:40 by default); files are taken as measured (canted)
   const double incl = inclination.empty() ? (built_in ? rail_inclination_1in40() : 0.0) : ParseInclination(inclination);
   TrackSetup setup = MakeSymmetricTrack(wheel_profile, rail_profile, incl);

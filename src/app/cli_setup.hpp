@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "conforma/geometry.hpp"
+#include "conforma/profile_io.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma::cli {
@@ -17,6 +18,16 @@ struct TrackArgs {
   std::string inclination = "";    // "1:40", "1:20", "0"; default 1:40 for built-in rails, 0 for files
   double gauge_mm = 1435.0, gauge_height_mm = 14.0, flange_back_mm = 1360.0, flange_back_position_mm = -70.0;
   double nominal_radius_mm = 460.0;
+  // How a profile file is read (--wheel-mirror, --wheel-z-down, --wheel-units, --wheel-smooth-mm, --wheel-format
+  // and the same for --rail); profile_io.hpp.
+  struct FileOptions {
+    bool mirror = false, z_down = false;  // y := -y, z := -z after the format's own conversion
+    std::string units = "mm";             // plain column files: mm or m
+    double smooth_mm = 0.0;               // RMS smoothing of noisy points [mm], 0 = interpolate
+    std::string format = "auto";          // auto (extension), simpack, miniprof, columns
+    ProfileReadOptions read_options() const;  // InputError for a bad unit or smoothing value
+  };
+  FileOptions wheel_file, rail_file;
   void add_to(CLI::App* app);
   // Throws InputError for an unknown name, unreadable profile or bad inclination.
   std::unique_ptr<WheelsetTrackGeometry> make_geometry() const;

@@ -24,32 +24,44 @@ bool IsBuiltInWheel(const std::string& name) { return name == "S1002"; }
 const char* BuiltInRailNames() { return "60E1 (UIC60), 54E1, 50E6, 50E4 (UIC50)"; }
 
 namespace {
+void RefuseFileOptions(const std::string& name, const std::string& what, const ProfileReadOptions& read) {
+  if (HasFileReadOptions(read))
+    throw InputError(what + ": '" + name + "' is a built-in profile; mirroring, units, smoothing and format options " +
+                     "apply to profile files only");
+}
+
 Profile ProfileFile(const std::string& name, ProfileKind kind, const std::string& what, const std::string& built_in,
-                    const FileResolver& resolve_file) {
+                    const FileResolver& resolve_file, const ProfileReadOptions& read) {
   const std::string path = resolve_file ? resolve_file(name) : name;
   if (!std::filesystem::exists(path))
     throw InputError(what + ": '" + name + "' is neither " + built_in + " nor a file" +
                      (path != name ? " (looked for " + path + ")" : std::string()));
-  ProfileReadOptions o;
+  ProfileReadOptions o = read;
   o.kind = kind;
   return LoadProfile(path, o);
 }
 }  // namespace
 
 Profile WheelProfileByNameOrFile(const std::string& name_or_file, const std::string& what,
-                                 const FileResolver& resolve_file) {
-  if (IsBuiltInWheel(name_or_file)) return MakeS1002();
-  return ProfileFile(name_or_file, ProfileKind::Wheel, what, "the built-in wheel S1002", resolve_file);
+                                 const FileResolver& resolve_file, const ProfileReadOptions& read) {
+  if (IsBuiltInWheel(name_or_file)) {
+    RefuseFileOptions(name_or_file, what, read);
+    return MakeS1002();
+  }
+  return ProfileFile(name_or_file, ProfileKind::Wheel, what, "the built-in wheel S1002", resolve_file, read);
 }
 
 Profile RailProfileByNameOrFile(const std::string& name_or_file, bool* built_in, const std::string& what,
-                                const FileResolver& resolve_file) {
+                                const FileResolver& resolve_file, const ProfileReadOptions& read) {
   RailSection section;
   const bool named = FindBuiltInRail(name_or_file, &section);
   if (built_in != nullptr) *built_in = named;
-  if (named) return MakeRail(section, 0.0);
+  if (named) {
+    RefuseFileOptions(name_or_file, what, read);
+    return MakeRail(section, 0.0);
+  }
   return ProfileFile(name_or_file, ProfileKind::Rail, what,
-                     std::string("a built-in rail (") + BuiltInRailNames() + ")", resolve_file);
+                     std::string("a built-in rail (") + BuiltInRailNames() + ")", resolve_file, read);
 }
 
 }  // namespace conforma

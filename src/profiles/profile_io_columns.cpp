@@ -9,13 +9,15 @@ namespace profile_io {
 
 ProfilePoints read_columns(const std::string& path, const ProfileReadOptions& options) {
   if (!options.kind)
-    throw InputError(path, 0, "plain column profile files do not say wheel or rail: set ProfileReadOptions::kind");
+    throw InputError(path, 0,
+                     "plain column profile files do not say wheel or rail: give the kind (command line: --wheel FILE "
+                     "or --rail FILE, `profile info --kind wheel|rail`; Python/C++: ProfileReadOptions::kind)");
   const auto lines = read_lines(path);
   ProfilePoints out;
   out.source = path;
   out.kind = *options.kind;
   const double u = options.length_unit_m;
-  const double sy = options.mirror_y ? -u : u, sz = options.mirror_z ? -u : u;
+  const double sy = u, sz = u;  // mirror_y / mirror_z: applied by ReadProfilePoints for every format
   bool in_data = false;
   for (size_t li = 0; li < lines.size(); ++li) {
     const int ln = static_cast<int>(li) + 1;

@@ -21,8 +21,15 @@ ProfilePoints read_simpack(const std::string& path, const ProfileReadOptions& op
 ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& options);
 ProfilePoints read_columns(const std::string& path, const ProfileReadOptions& options);
 
-// Common post-processing: ordering from small to large y (sorting unordered clouds when function_of_y),
-// fold and self-intersection checks with file line numbers.
+// Common post-processing: ordering from small to large y (sorting unordered clouds when function_of_y; a curve
+// that folds back keeps its order), removal of repeated points, self-intersection check with file line numbers.
 void finish_points(ProfilePoints& p, const ProfileFitOptions& fit);
+
+// profile_checks.cpp: validation shared by every reader (docs/profiles-and-formats.md §3).
+// A last data line cut short: the file does not end with a line break and a number of its last data line has
+// fewer digits (fraction or exponent) than the same column on the two data lines before it, or fewer columns.
+void check_last_line(const std::string& path, const std::vector<int>& data_lines);
+// Spacing, reversals, orientation and noise of the finished points (curve order, our convention).
+void check_points(ProfilePoints& p, const ProfileReadOptions& options);  // adds a note on the running surface
 
 }  // namespace conforma::profile_io

@@ -122,7 +122,8 @@ void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
       if (pts[i].x() >= run_max) { run_max = pts[i].x(); i_max = i; }
     }
     if (first_back) {
-      // Either an unordered point cloud (sort it) or an ordered curve that folds back (refuse).
+      // Either an unordered point cloud (sort it) or an ordered curve that folds back (keep its order: the
+      // profile is parametrised by arc length, and the geometry tabulates its longest function-like part).
       std::vector<size_t> idx(pts.size());
       std::iota(idx.begin(), idx.end(), 0);
       std::stable_sort(idx.begin(), idx.end(), [&](size_t a, size_t b) { return pts[a].x() < pts[b].x(); });
@@ -134,14 +135,15 @@ void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
       }
       if (path_length(pts) <= 1.5 * path_length(sorted)) {
         std::ostringstream m;
-        m << "profile folds back: y decreases by " << std::setprecision(3) << mm(run_max - pts[first_back].x())
-          << " mm " << where(p, first_back) << "; a " << to_string(p.kind)
-          << " profile must be single-valued in y (set ProfileFitOptions::function_of_y = false to allow folds)";
-        throw InputError(p.source, lines[first_back], m.str());
+        m << "line " << lines[first_back] << ": the curve folds back (y decreases by " << std::setprecision(3)
+          << mm(run_max - pts[first_back].x()) << " mm " << where(p, first_back)
+          << "); kept in file order and parametrised by arc length";
+        p.notes.push_back(m.str());
+      } else {
+        pts.swap(sorted);
+        lines.swap(sorted_lines);
+        p.notes.push_back("points were not ordered along the curve; sorted by y");
       }
-      pts.swap(sorted);
-      lines.swap(sorted_lines);
-      p.notes.push_back("points were not ordered along the curve; sorted by y");
     }
   }
   // drop exact repeats of the previous point (common at the ends of measured files)
@@ -152,6 +154,8 @@ void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
       kept.push_back(pts[i]);
       kept_lines.push_back(lines[i]);
     }
+  if (kept.size() < pts.size())
+    p.notes.push_back(std::to_string(pts.size() - kept.size()) + " repeated point(s) dropped");
   pts.swap(kept);
   lines.swap(kept_lines);
   if (pts.size() < 4)
@@ -173,17 +177,59 @@ void finish_points(ProfilePoints& p, const ProfileFitOptions& fit) {
 
 }  // namespace profile_io
 
+const char* to_string(ProfileFormat format) {
+  switch (format) {
+    case ProfileFormat::Auto: return "auto";
+    case ProfileFormat::Simpack: return "simpack";
+    case ProfileFormat::MiniProf: return "miniprof";
+    case ProfileFormat::Columns: return "columns";
+  }
+  return "?";
+}
+
+ProfileFormat ParseProfileFormat(const std::string& name) {
+  for (ProfileFormat f : {ProfileFormat::Auto, ProfileFormat::Simpack, ProfileFormat::MiniProf, ProfileFormat::Columns})
+    if (profile_io::lower(name) == to_string(f)) return f;
+  throw InputError("unknown profile file format '" + name + "' (auto, simpack, miniprof, columns)");
+}
+
+bool HasFileReadOptions(const ProfileReadOptions& o) {
+  return o.mirror_y || o.mirror_z || o.length_unit_m != 1e-3 || o.format != ProfileFormat::Auto ||
+         o.fit.smoothing_rms_m != 0.0;
+}
+
 ProfilePoints ReadProfilePoints(const std::string& path, const ProfileReadOptions& options) {
   require_positive(options.length_unit_m, "length_unit_m");
   const std::string ext = profile_io::extension_of(path);
+  ProfileFormat format = options.format;
+  if (format == ProfileFormat::Auto) {
+    if (ext == "prw" || ext == "prr") format = ProfileFormat::Simpack;
+    else if (ext == "whl" || ext == "ban") format = ProfileFormat::MiniProf;
+    else if (ext == "txt" || ext == "dat" || ext == "csv") format = ProfileFormat::Columns;
+    else
+      throw InputError(path, 0, "unknown profile file type '." + ext +
+                                    "' (expected .prw .prr .ban .whl .txt .dat .csv; command line: --wheel-format or "
+                                    "--rail-format simpack|miniprof|columns)");
+  }
+  if (format != ProfileFormat::Columns && options.length_unit_m != 1e-3)
+    throw InputError(path, 0, std::string("the length unit is set by the ") + to_string(format) +
+                                  " file itself; --wheel-units/--rail-units apply to plain column files only");
   ProfilePoints p;
-  if (ext == "prw" || ext == "prr") p = profile_io::read_simpack(path, options);
-  else if (ext == "whl" || ext == "ban") p = profile_io::read_miniprof(path, options);
-  else if (ext == "txt" || ext == "dat" || ext == "csv") p = profile_io::read_columns(path, options);
-  else
-    throw InputError(path, 0, "unknown profile file type '." + ext +
-                                  "' (expected .prw .prr .ban .whl .txt .dat .csv)");
+  if (format == ProfileFormat::Simpack) p = profile_io::read_simpack(path, options);
+  else if (format == ProfileFormat::MiniProf) p = profile_io::read_miniprof(path, options);
+  else p = profile_io::read_columns(path, options);
+  profile_io::check_last_line(path, p.lines);
+  if (options.mirror_y || options.mirror_z) {
+    for (auto& q : p.points_m) {
+      if (options.mirror_y) q.x() = -q.x();
+      if (options.mirror_z) q.y() = -q.y();
+    }
+    p.notes.push_back(std::string("mirrored") + (options.mirror_y ? " in y" : "") +
+                      (options.mirror_y && options.mirror_z ? " and" : "") + (options.mirror_z ? " in z" : "") +
+                      " as asked");
+  }
   profile_io::finish_points(p, options.fit);
+  profile_io::check_points(p, options);
   return p;
 }
 

@@ -34,7 +34,12 @@ ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& o
   const auto lines = read_lines(path);
   ProfilePoints out;
   out.source = path;
-  out.kind = extension_of(path) == "whl" ? ProfileKind::Wheel : ProfileKind::Rail;
+  const std::string ext = extension_of(path);
+  out.kind = ext == "whl" ? ProfileKind::Wheel : ProfileKind::Rail;
+  if (ext != "whl" && ext != "ban") {
+    if (!options.kind) throw InputError(path, 0, "a MiniProf file without .whl/.ban extension: give the kind");
+    out.kind = *options.kind;
+  }
   if (options.kind && *options.kind != out.kind)
     throw InputError(path, 0, std::string("expected a ") + to_string(*options.kind) + " profile, a ." +
                                   extension_of(path) + " file holds a " + to_string(out.kind) + " profile");
@@ -103,6 +108,16 @@ ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& o
     out.lines.push_back(ln);
   }
   out.header["format"] = old_style ? "MiniProf old style" : "MiniProf new style";
+  // New style: XYPoints gives the number of data rows; fewer rows means a truncated file (more: an edited file, noted).
+  if (auto it = out.header.find("XYPoints"); it != out.header.end()) {
+    double count;
+    if (parse_number(it->second, count) && count > 0 && static_cast<double>(mm.size()) < count)
+      throw InputError(path, out.lines.empty() ? 0 : out.lines.back(),
+                       "XYPoints=" + it->second + " but the file has only " + std::to_string(mm.size()) +
+                           " data rows: truncated file?");
+    if (parse_number(it->second, count) && static_cast<double>(mm.size()) > count)
+      out.notes.push_back("XYPoints=" + it->second + " but the file has " + std::to_string(mm.size()) + " data rows");
+  }
   if (mm.size() < 4) throw InputError(path, 0, "no profile points found (" + std::to_string(mm.size()) + " data rows)");
   std::vector<double> zs(mm.size()), ys(mm.size());
   for (size_t i = 0; i < mm.size(); ++i) { ys[i] = mm[i].x(); zs[i] = mm[i].y(); }

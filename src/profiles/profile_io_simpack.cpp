@@ -46,16 +46,19 @@ ProfilePoints read_simpack(const std::string& path, const ProfileReadOptions& op
   int header_type_line = 0;
   std::vector<RawPoint> raw;
   bool saw_points_block = false;
+  // line of each *.begin whose *.end has not come yet (0: closed); a truncated file ends inside a block
+  int header_open = 0, spline_open = 0, point_open = 0;
   for (size_t li = 0; li < lines.size(); ++li) {
     const int ln = static_cast<int>(li) + 1;
     const std::string t = trim(strip_comment(lines[li]));
     if (t.empty()) continue;
     const std::string tl = lower(t);
-    if (tl == "header.begin") { block = Block::Header; continue; }
-    if (tl == "spline.begin") { block = Block::Spline; continue; }
-    if (tl == "point.begin") { block = Block::Points; saw_points_block = true; continue; }
-    if (tl == "point.end") { block = Block::Spline; continue; }
-    if (tl == "header.end" || tl == "spline.end") { block = Block::None; continue; }
+    if (tl == "header.begin") { block = Block::Header; header_open = ln; continue; }
+    if (tl == "spline.begin") { block = Block::Spline; spline_open = ln; continue; }
+    if (tl == "point.begin") { block = Block::Points; saw_points_block = true; point_open = ln; continue; }
+    if (tl == "point.end") { block = Block::Spline; point_open = 0; continue; }
+    if (tl == "header.end") { block = Block::None; header_open = 0; continue; }
+    if (tl == "spline.end") { block = Block::None; spline_open = 0; continue; }
     const auto eq = t.find('=');
     if (block != Block::Points && eq != std::string::npos) {
       const std::string key = lower(trim(t.substr(0, eq)));
@@ -90,13 +93,26 @@ ProfilePoints read_simpack(const std::string& path, const ProfileReadOptions& op
     }
     throw InputError(path, ln, "unexpected line '" + t + "'");
   }
-  // profile kind: header type (0 rail, 1 wheel) must agree with the extension
-  const ProfileKind ext_kind = ext == "prw" ? ProfileKind::Wheel : ProfileKind::Rail;
+  for (const auto& [open, name] : {std::pair<int, const char*>{point_open, "point"}, {spline_open, "spline"},
+                                    {header_open, "header"}})
+    if (open)
+      throw InputError(path, static_cast<int>(lines.size()),
+                       std::string("the file ends inside the ") + name + ".begin block of line " +
+                           std::to_string(open) + " (no " + name + ".end): truncated file?");
+  // profile kind: header type (0 rail, 1 wheel) must agree with the extension (another extension: the kind asked
+  // for, else the header type)
+  const bool known_ext = ext == "prw" || ext == "prr";
+  ProfileKind ext_kind = ext == "prw" ? ProfileKind::Wheel : ProfileKind::Rail;
+  if (!known_ext) {
+    if (options.kind) ext_kind = *options.kind;
+    else if (header_type) ext_kind = *header_type == 1 ? ProfileKind::Wheel : ProfileKind::Rail;
+    else throw InputError(path, 0, "a Simpack file without header type and without .prw/.prr extension: give the kind");
+  }
   if (header_type) {
     if (*header_type != 0 && *header_type != 1)
       throw InputError(path, header_type_line, "header type must be 0 (rail) or 1 (wheel)");
     const ProfileKind k = *header_type == 1 ? ProfileKind::Wheel : ProfileKind::Rail;
-    if (k != ext_kind)
+    if (k != ext_kind && known_ext)
       throw InputError(path, header_type_line, std::string("header type says ") + to_string(k) +
                                                    " but the extension ." + ext + " means " + to_string(ext_kind));
   }

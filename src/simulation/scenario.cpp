@@ -96,12 +96,40 @@ double ParseInclination(const Reader& r, const YAML::Node& n) {
   return r.number(n, "track.rail_inclination");
 }
 
-Profile BuiltInOrFileRail(const Reader& r, const std::string& name) {
-  return RailProfileByNameOrFile(name, nullptr, "rail profile", [&r](const std::string& f) { return r.path(f); });
+Profile BuiltInOrFileRail(const Reader& r, const std::string& name, const ProfileReadOptions& read) {
+  return RailProfileByNameOrFile(name, nullptr, "rail profile", [&r](const std::string& f) { return r.path(f); }, read);
 }
 
-Profile BuiltInOrFileWheel(const Reader& r, const std::string& name) {
-  return WheelProfileByNameOrFile(name, "wheel profile", [&r](const std::string& f) { return r.path(f); });
+Profile BuiltInOrFileWheel(const Reader& r, const std::string& name, const ProfileReadOptions& read) {
+  return WheelProfileByNameOrFile(name, "wheel profile", [&r](const std::string& f) { return r.path(f); }, read);
+}
+
+// profiles.<kind>_mirror, _z_down, _units (mm | m), _smoothing_mm, _format: how a profile file is read, as the
+// command line's --wheel-mirror, --wheel-z-down, --wheel-units, --wheel-smooth-mm, --wheel-format.
+ProfileReadOptions FileReadOptions(const Reader& r, const YAML::Node& p, const std::string& kind) {
+  ProfileReadOptions o;
+  if (!p) return o;
+  const std::string k = "profiles." + kind;
+  if (p[kind + "_mirror"]) o.mirror_y = r.boolean(p[kind + "_mirror"], k + "_mirror");
+  if (p[kind + "_z_down"]) o.mirror_z = r.boolean(p[kind + "_z_down"], k + "_z_down");
+  if (p[kind + "_units"]) {
+    const std::string u = r.text(p[kind + "_units"], k + "_units");
+    if (u == "m") o.length_unit_m = 1.0;
+    else if (u != "mm") r.fail(k + "_units", "expected mm or m, got '" + u + "'");
+  }
+  if (p[kind + "_smoothing_mm"]) {
+    const double v = r.number(p[kind + "_smoothing_mm"], k + "_smoothing_mm");
+    if (!(v >= 0 && v <= 1.0)) r.fail(k + "_smoothing_mm", "must be between 0 and 1 mm (the noise level of the points)");
+    o.fit.smoothing_rms_m = 1e-3 * v;
+  }
+  if (p[kind + "_format"]) {
+    try {
+      o.format = ParseProfileFormat(r.text(p[kind + "_format"], k + "_format"));
+    } catch (const InputError& e) {
+      r.fail(k + "_format", e.what());
+    }
+  }
+  return o;
 }
 
 // Contact model by name (ParseContactModel), the error naming the key.
@@ -316,18 +344,22 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   s.wheel_name = "S1002";
   s.rail_name = "60E1";
   if (const YAML::Node p = root["profiles"]) {
-    r.check_keys(p, "profiles", {"wheel", "rail", "wheel_radius_mm"});
+    r.check_keys(p, "profiles", {"wheel", "rail", "wheel_radius_mm", "wheel_mirror", "wheel_z_down", "wheel_units",
+                                 "wheel_smoothing_mm", "wheel_format", "rail_mirror", "rail_z_down", "rail_units",
+                                 "rail_smoothing_mm", "rail_format"});
     if (p["wheel"]) s.wheel_name = r.text(p["wheel"], "profiles.wheel");
     if (p["rail"]) s.rail_name = r.text(p["rail"], "profiles.rail");
     if (p["wheel_radius_mm"]) s.vehicle.nominal_wheel_radius_m = 1e-3 * r.number(p["wheel_radius_mm"], "profiles.wheel_radius_mm");
   }
+  const ProfileReadOptions wheel_read = FileReadOptions(r, root["profiles"], "wheel");
+  const ProfileReadOptions rail_read = FileReadOptions(r, root["profiles"], "rail");
   try {
-    s.wheel = BuiltInOrFileWheel(r, s.wheel_name);
+    s.wheel = BuiltInOrFileWheel(r, s.wheel_name, wheel_read);
   } catch (const InputError& e) {
     r.fail("profiles.wheel", e.what());
   }
   try {
-    s.rail = BuiltInOrFileRail(r, s.rail_name);
+    s.rail = BuiltInOrFileRail(r, s.rail_name, rail_read);
   } catch (const InputError& e) {
     r.fail("profiles.rail", e.what());
   }
