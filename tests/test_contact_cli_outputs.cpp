@@ -235,7 +235,7 @@ TEST(ContactCliOutputs, FieldsAsNpyReadBackWithNumpy) {
 TEST(ContactCliOutputs, FieldsFolderCheckedBeforeSolving) {
   const fs::path blocker = FreshFolder("file");
   { std::ofstream(blocker.string()) << "a file, not a folder"; }
-  for (const std::string folder : {std::string("/proc/conforma_fields"), blocker.string(),
+  for (const std::string& folder : {std::string("/proc/conforma_fields"), blocker.string(),
                                    (blocker / "sub").string()}) {
     const auto run = RunCli("contact --model conformal --fields " + folder);
     EXPECT_EQ(run.exit_code, 2) << folder << "\n" << run.err;

@@ -37,7 +37,10 @@ struct ContactCommand {
     const EquilibriumResult eq = geometry->SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3);
     if (eq.status == EquilibriumStatus::NoContact) throw InputError("no rigid contact at --y-mm " + std::to_string(y_mm));
     WheelsetPose pose = eq.pose;
-    if (roll_mrad) pose.roll_rad = *roll_mrad * 1e-3;
+    if (roll_mrad) {
+      require_finite(*roll_mrad, "--roll-mrad");
+      pose.roll_rad = *roll_mrad * 1e-3;
+    }
     if (options.vertical_load_N < 0.0) pose.vertical_m -= approach_mm * 1e-3;  // approach mode
     const double r0 = geometry->setup().nominal_radius_m[0];
     const WheelsetVelocity velocity = contact.rolling_velocity(r0);
@@ -58,15 +61,16 @@ struct ContactCommand {
       if (json) {
         out["wheels"].push_back(ToJson(r));
       } else {
-        if (r.patches.empty()) std::cout << "   " << to_string(s) << ": " << to_string(r.status) << "\n";
+        if (r.patches.empty() && r.status == WheelContactStatus::NoContact && options.vertical_load_N <= 0.0)
+          std::cout << "   " << to_string(s) << ": " << to_string(r.status) << "\n";
         for (const PatchReport& p : r.patches) PrintPatchRow(std::cout, to_string(s), p);
-        if (!r.patches.empty()) PrintWheelStatus(std::cout, r, options.vertical_load_N);
+        PrintWheelStatus(std::cout, r, options.vertical_load_N);
       }
       PrintWarnings(std::cerr, std::string(to_string(s)) + " wheel", r);  // also in the JSON ("warnings")
     }
     if (json) std::cout << out.dump(2) << "\n";
     std::cout.flush();
-    ThrowIfNotConverged(reports, options.vertical_load_N);
+    ThrowIfIncomplete(reports, options.vertical_load_N);
   }
 };
 }  // namespace

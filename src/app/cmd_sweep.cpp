@@ -84,12 +84,12 @@ struct SweepCommand {
             PrintPatchRow(std::cout, name, p);
           }
         }
-        if (!csv && !r.patches.empty()) PrintWheelStatus(std::cout, r, contact.load_N);
+        if (!csv) PrintWheelStatus(std::cout, r, contact.load_N);
         PrintWarnings(std::cerr, name + " at y = " + std::to_string(y_mm) + " mm", r);
       }
     }
     std::cout.flush();
-    ThrowIfNotConverged(reports, contact.load_N);  // the table is complete; a non-converged wheel is exit 4
+    ThrowIfIncomplete(reports, contact.load_N);  // the table is complete; a non-converged wheel is exit 4
   }
 };
 }  // namespace

@@ -10,8 +10,9 @@ namespace conforma {
 namespace {
 template <class... Args>
 std::string Format(const char* format, Args... args) {
-  char text[512];
-  std::snprintf(text, sizeof text, format, args...);
+  const int n = std::snprintf(nullptr, 0, format, args...);  // the whole message, never truncated
+  std::string text(n > 0 ? static_cast<size_t>(n) : 0u, '\0');
+  if (n > 0) std::snprintf(text.data(), text.size() + 1, format, args...);
   return text;
 }
 }  // namespace
