@@ -57,7 +57,7 @@ struct ScenarioKinematics {
   int tangent_phases = 8;             // phases of the tangent-track oscillation
   double cant_base_m = 1.5;           // m
   bool free_axle_rotation = true;     // false: axle speed V / r0
-  // Drive torque per axle, N m (+ traction, - braking, 0 free rolling; kinematics_quasistatic.hpp §12.3).
+  // Drive torque per axle, N m (+ traction, - braking, 0 free rolling; docs/physics-reference.md §12.3).
   double axle_torque_Nm = 0.0;
   // Contact model inside the quasi-static curving solve (the multibody side). Unset: the wear step's model (the
   // co-simulation of paper 003 §2). A cheaper model here (e.g. hertz, as a multibody code with its own contact
