@@ -13,20 +13,14 @@
 #include "conforma/kinematics_quasistatic.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/wheel_contact.hpp"
+#include "metro_test_track.hpp"
 
 namespace conforma {
 namespace {
 
-constexpr double kRadius = 0.711 / 2.0;  // metro wheel (paper 003 Table 1)
+constexpr double kRadius = test::kMetroWheelRadius;  // metro wheel (paper 003 Table 1)
 
-const WheelsetTrackGeometry& Geometry() {
-  static const WheelsetTrackGeometry g([] {
-    TrackSetup s = MakeSymmetricTrack(MakeS1002(), MakeRail(RailSection::R50E4, 0.0), rail_inclination_1in20());
-    s.nominal_radius_m = {kRadius, kRadius};
-    return s;
-  }());
-  return g;
-}
+const WheelsetTrackGeometry& Geometry() { return test::MetroTrackGeometry(); }
 
 TrackClass Curve(double R, double V, double cant = 0.0) {
   TrackClass t;
