@@ -14,6 +14,11 @@
 
 namespace conforma {
 
+// The largest wheel load accepted (N): 10 MN is ~1,000 t on one wheel, 50 times the heaviest axle loads (~40 t per
+// axle); above it the number is a unit mistake, and the load control's first push (Hertz, delta ~ N^(2/3)) would
+// be astronomically large (a 1e308 N load kept the reference BEM busy for more than 300 s).
+constexpr double kMaxWheelLoadN = 1e7;
+
 // validate() throws InputError outside the ranges given below.
 struct WheelContactOptions {
   ContactModel model = ContactModel::Hertz;  // contact model of every patch (auto: chosen per patch); default hertz
@@ -23,7 +28,7 @@ struct WheelContactOptions {
   // §7.4). Kind Constant (default): friction_coefficient applies and these parameters are ignored; any other kind
   // replaces friction_coefficient (validated by FrictionLaw::validate).
   FrictionLaw friction_law;
-  // N, finite. Load control (default, 10 kN): the wheel is pushed down until the vertical components of its patch
+  // N, finite, <= kMaxWheelLoadN. Load control (default, 10 kN): the wheel is pushed down until the vertical components of its patch
   // pressure forces carry this load; 0: unloaded wheel, no contact solved (status NoContact). Set vertical_load_N < 0
   // to use the pose as given (approach mode, for multibody coupling).
   double vertical_load_N = 10e3;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -33,6 +34,13 @@ void WheelContactOptions::validate() const {
   require_non_negative(friction_coefficient, "friction_coefficient");
   if (!friction_law.is_constant()) friction_law.validate();
   require_finite(vertical_load_N, "vertical_load_N");
+  if (vertical_load_N > kMaxWheelLoadN)
+  {
+    char text[160];
+    std::snprintf(text, sizeof text, "vertical_load_N = %.6g N is above %.6g N (10 MN, ~1,000 t on one wheel): "
+                  "not a wheel load (unit?)", vertical_load_N, kMaxWheelLoadN);
+    throw InputError(text);
+  }
   require_positive(load_tolerance, "load_tolerance");
   require_positive(candidate_strip_width_m, "candidate_strip_width_m");
   require_finite(conformity_threshold_deg, "conformity_threshold_deg");
