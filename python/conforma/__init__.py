@@ -51,12 +51,12 @@ if has_wear:
 __version__ = "0.1.0"
 
 
-def _finish_wheel(wheel):
+def _finish_wheel(wheel, load_N=None):
     """Adds complete / problems to a wheel dict and the 2-D grid to each patch that has fields."""
     for p in wheel["patches"]:
         if "fields" in p:
             p["grid"] = patch_grid(p["fields"])
-    problems = wheel_problems(wheel)
+    problems = wheel_problems(wheel, load_N)
     wheel["complete"] = not problems
     wheel["problems"] = problems
     return problems
@@ -65,14 +65,16 @@ def _finish_wheel(wheel):
 def contact(track, *args, strict=False, **kwargs):
     problems = []
     wheels = _core.contact(track, *args, **kwargs)
+    # the prescribed load: keyword, or the 6th positional argument after track (the signature in _core.pyi)
+    load_N = kwargs.get("load_N", args[4] if len(args) > 4 else 10000.0)
     for w in wheels:
-        problems += _finish_wheel(w)
+        problems += _finish_wheel(w, load_N)
     return _flag(wheels, problems, "contact", strict)
 
 
 contact.__doc__ = _core.contact.__doc__ + """
 No silent failures: each wheel dict also has ``complete`` (bool) and ``problems`` (list of str: a wheel status
-"not_converged", a patch normal_status other than "ok" / "hertz_regularised", a tangential_status other than "ok",
+"not_converged", "no_contact" under a positive load_N, a patch normal_status other than "ok" / "hertz_regularised", a tangential_status other than "ok",
 "full_slip", "no_creepage", "not_solved"); an incomplete result emits conforma.IncompleteResultWarning, or with
 strict=True raises conforma.IncompleteResultError (its .result holds the wheels). Bad input raises InputError.
 
@@ -85,7 +87,8 @@ Outside the contact area pressure, traction and wear index are 0, slip is NaN, a
 
 def contact_at_pose(track, *args, strict=False, **kwargs):
     wheel = _core.contact_at_pose(track, *args, **kwargs)
-    return _flag(wheel, _finish_wheel(wheel), "contact_at_pose", strict)
+    load_N = kwargs.get("load_N", args[10] if len(args) > 10 else -1.0)  # _core.pyi: 11th after track
+    return _flag(wheel, _finish_wheel(wheel, load_N), "contact_at_pose", strict)
 
 
 contact_at_pose.__doc__ = _core.contact_at_pose.__doc__ + """

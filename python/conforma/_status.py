@@ -2,7 +2,8 @@
 (``complete``, ``problems``) and, unless the caller asked for strictness, with an ``IncompleteResultWarning``.
 
 The statuses come from the C++ core (the keys of `conforma contact --json`):
-  wheel ``status``          "ok" | "no_contact" (physics: the wheel does not touch its rail) | "not_converged"
+  wheel ``status``          "ok" | "no_contact" (physics: the wheel does not touch its rail; incomplete under a
+                            positive prescribed load, which it does not carry) | "not_converged"
                             (the load control did not reach the load: the forces are those of the last iterate)
   patch ``normal_status``   complete: "ok", "hertz_regularised" (Hertz with B raised to 0.1 A, a documented
                             regularisation); anything else is incomplete: "contact_at_patch_boundary" (the patch was
@@ -37,11 +38,15 @@ class IncompleteResultError(RuntimeError):
         self.problems = problems
 
 
-def wheel_problems(wheel):
-    """What is incomplete in one wheel dict of contact() / contact_at_pose(): a list of strings ([] = complete)."""
+def wheel_problems(wheel, load_N=None):
+    """What is incomplete in one wheel dict of contact() / contact_at_pose(): a list of strings ([] = complete).
+    load_N: the prescribed wheel load (None or < 0: pose given); a wheel without contact under a positive load did
+    not carry it (the rule of `conforma contact`, src/app/contact_status.hpp)."""
     side = wheel.get("side", "?")
     problems = []
-    if wheel["status"] not in WHEEL_COMPLETE:
+    if wheel["status"] == "no_contact" and load_N is not None and load_N > 0:
+        problems.append(f"{side} wheel: status no_contact: the prescribed load {load_N:.6g} N is not carried")
+    elif wheel["status"] not in WHEEL_COMPLETE:
         problems.append(f"{side} wheel: status {wheel['status']} (vertical pressure force "
                         f"{wheel.get('pressure_vertical_force_N', float('nan')):.6g} N)")
     for j, p in enumerate(wheel.get("patches", [])):

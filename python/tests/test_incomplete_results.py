@@ -114,3 +114,14 @@ def test_failed_wear_contacts_make_the_run_partial():
            "steps": {"step": np.array([0.0, 1.0, 2.0]), "failed_contacts": np.array([0.0, 0.0, 9.0]),
                      "kinematics_fallbacks": np.array([0.0, 1.0, 0.0])}}
     assert conforma.wear_problems(run) == ["9 wheel contact(s) failed (no wear taken from them) in step(s) 2 (9)"]
+
+
+def test_no_contact_under_a_positive_load_is_incomplete():
+    # the rule of `conforma contact` (exit 4): a wheel that finds no contact does not carry a prescribed load; in
+    # the pose-given mode (load < 0 or None) and at load 0, no contact is the answer to the question asked
+    from conforma._status import wheel_problems
+    wheel = {"side": "left", "status": "no_contact", "patches": []}
+    assert wheel_problems(wheel, 1e4) and "not carried" in wheel_problems(wheel, 1e4)[0]
+    assert wheel_problems(wheel) == []
+    assert wheel_problems(wheel, -1.0) == []
+    assert wheel_problems(wheel, 0.0) == []
