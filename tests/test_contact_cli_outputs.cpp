@@ -61,6 +61,13 @@ TEST(ContactCliOutputs, NominalRadiusWarningInJsonAndOnStderr) {
   ASSERT_EQ(other_r0.exit_code, 0) << other_r0.err;
   for (const nlohmann::json& w : nlohmann::json::parse(other_r0.out)["wheels"])
     EXPECT_NE(WarningsOf(w).at(0).find("+35.3 mm from the nominal radius r0 = 425.0 mm"), std::string::npos);
+  // the shift the warning names removes it, and with it the spurious full slip (issue 13 item 10)
+  const auto shifted = RunCli(args + " --wheel-z-shift-mm -35.3 --json");
+  ASSERT_EQ(shifted.exit_code, 0) << shifted.err;
+  for (const nlohmann::json& w : nlohmann::json::parse(shifted.out)["wheels"]) {
+    EXPECT_TRUE(WarningsOf(w).empty()) << w.dump(1);
+    for (const nlohmann::json& p : w["patches"]) EXPECT_LT(std::fabs(p["xi"].get<double>()), 2e-3) << p.dump(1);
+  }
   // a new wheel on the tread: no warning
   const auto s1002 = RunCli("contact --rail 50E4 --json");
   ASSERT_EQ(s1002.exit_code, 0) << s1002.err;

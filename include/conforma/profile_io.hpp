@@ -59,6 +59,10 @@ struct ProfileReadOptions {
   ProfileFitOptions fit;
   bool mirror_y = false;         // every format, after its own conversion: y := -y (command line --wheel-mirror)
   bool mirror_z = false;         // every format, after its own conversion: z := -z (command line --wheel-z-down)
+  // every format, after the mirroring: z := z + z_shift_m, m, finite (command line --wheel-z-shift-mm): puts a
+  // wheel profile's z origin at the taping line (a measured profile whose z = 0 lies elsewhere gets the rolling
+  // radius r0 + z wrong; the nominal_radius warning of contact_plausibility.hpp measures the shift)
+  double z_shift_m = 0.0;
   double length_unit_m = 1e-3;   // plain column files: file length unit in metres (other formats: must stay 1e-3)
   ProfileFormat format = ProfileFormat::Auto;  // file format; Auto: from the extension
   // Refuse noisy points (profile_checks) unless fit.smoothing_rms_m > 0; false only for tests of the raw reader

@@ -44,6 +44,9 @@ void TrackArgs::add_to(CLI::App* app) {
     app->add_flag("--" + k + "-z-down", side->z_down,
                   k + " file with z pointing the other way (" +
                       (k == "wheel" ? "flange tip at negative z" : "rail head upside down") + "): z := -z");
+    app->add_option("--" + k + "-z-shift-mm", side->z_shift_mm,
+                    k + " file: add this to every z [mm] (wheel: put z = 0 at the taping line, as the "
+                        "nominal_radius warning measures it)");
     app->add_option("--" + k + "-units", side->units, k + " plain column file: length unit")
         ->check(CLI::IsMember({"mm", "m"}));
     app->add_option("--" + k + "-smooth-mm", side->smooth_mm,
@@ -57,6 +60,8 @@ ProfileReadOptions TrackArgs::FileOptions::read_options() const {
   ProfileReadOptions o;
   o.mirror_y = mirror;
   o.mirror_z = z_down;
+  if (!std::isfinite(z_shift_mm)) throw InputError("option --wheel-z-shift-mm / --rail-z-shift-mm must be finite");
+  o.z_shift_m = z_shift_mm * 1e-3;
   if (units == "m") o.length_unit_m = 1.0;
   else if (units != "mm") throw InputError("profile units must be mm or m, got '" + units + "'");
   if (!(std::isfinite(smooth_mm) && smooth_mm >= 0 && smooth_mm <= 1.0))

@@ -22,6 +22,7 @@ struct TrackArgs {
   // and the same for --rail); profile_io.hpp.
   struct FileOptions {
     bool mirror = false, z_down = false;  // y := -y, z := -z after the format's own conversion
+    double z_shift_mm = 0.0;              // z := z + shift after the mirroring [mm] (--wheel-z-shift-mm)
     std::string units = "mm";             // plain column files: mm or m
     double smooth_mm = 0.0;               // RMS smoothing of noisy points [mm], 0 = interpolate
     std::string format = "auto";          // auto (extension), simpack, miniprof, columns

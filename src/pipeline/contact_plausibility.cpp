@@ -54,9 +54,8 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
           "nominal_radius: patch %zu is on the tread (contact angle %.1f deg) at wheel-profile y = %.1f mm, where "
           "the rolling radius r0 + z_wheel = %.1f mm is %+.1f mm from the nominal radius r0 = %.1f mm (limit "
           "%.0f mm): the wheel profile's z origin is not at the taping line (z_wheel = %+.1f mm on the tread)%s. "
-          "Shift the wheel profile's z by %+.1f mm so that z = 0 at the taping line and give the wheel's "
-          "taping-line radius as the nominal radius (--r0-mm); --r0-mm alone does not help, the rolling radius "
-          "is r0 + z_wheel",
+          "Shift the wheel profile's z by %+.1f mm so that z = 0 at the taping line (--wheel-z-shift-mm) and give the wheel's taping-line radius as the "
+          "nominal radius (--r0-mm); --r0-mm alone does not help, the rolling radius is r0 + z_wheel",
           j, p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, p.rolling_radius_m * 1e3, offset * 1e3,
           r0 * 1e3, kMaxTreadRadiusOffsetM * 1e3, offset * 1e3, creepage.c_str(), -offset * 1e3));
     }

@@ -194,12 +194,13 @@ ProfileFormat ParseProfileFormat(const std::string& name) {
 }
 
 bool HasFileReadOptions(const ProfileReadOptions& o) {
-  return o.mirror_y || o.mirror_z || o.length_unit_m != 1e-3 || o.format != ProfileFormat::Auto ||
+  return o.mirror_y || o.mirror_z || o.z_shift_m != 0.0 || o.length_unit_m != 1e-3 || o.format != ProfileFormat::Auto ||
          o.fit.smoothing_rms_m != 0.0;
 }
 
 ProfilePoints ReadProfilePoints(const std::string& path, const ProfileReadOptions& options) {
   require_positive(options.length_unit_m, "length_unit_m");
+  require_finite(options.z_shift_m, "z_shift_m");
   const std::string ext = profile_io::extension_of(path);
   ProfileFormat format = options.format;
   if (format == ProfileFormat::Auto) {
@@ -227,6 +228,10 @@ ProfilePoints ReadProfilePoints(const std::string& path, const ProfileReadOption
     p.notes.push_back(std::string("mirrored") + (options.mirror_y ? " in y" : "") +
                       (options.mirror_y && options.mirror_z ? " and" : "") + (options.mirror_z ? " in z" : "") +
                       " as asked");
+  }
+  if (options.z_shift_m != 0.0) {
+    for (auto& q : p.points_m) q.y() += options.z_shift_m;
+    p.notes.push_back("z shifted by " + std::to_string(options.z_shift_m * 1e3) + " mm as asked");
   }
   profile_io::finish_points(p, options.fit);
   profile_io::check_points(p, options);
