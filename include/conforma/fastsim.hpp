@@ -148,5 +148,10 @@ FastsimResult SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOpt
 // Same, reusing *patch and *result (for loops over many patches without allocation).
 void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& options, FastsimPatch* patch,
                        FastsimResult* result);
+// Its two halves, for another strip kernel on the same mesh (the slip-dependent friction of fastsim_ext):
+// the mesh and the traction bound scaled to the load (an empty patch for N = 0; InputError as above), and the
+// flexibilities (Kalker's three, blended at input.friction_coefficient when options.blend_flexibilities).
+void BuildFastsimHertzPatch(const FastsimHertzInput& input, const FastsimOptions& options, FastsimPatch* patch);
+FastsimFlexibilities FastsimHertzFlexibilities(const FastsimHertzInput& input, const FastsimOptions& options);
 
 }  // namespace conforma

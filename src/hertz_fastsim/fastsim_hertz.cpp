@@ -22,9 +22,8 @@ void ClearResult(FastsimResult* r) {
 
 }  // namespace
 
-void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& options, FastsimPatch* patch,
-                       FastsimResult* result) {
-  if (patch == nullptr || result == nullptr) throw InputError("SolveFastsimHertz: patch and result must not be null");
+void BuildFastsimHertzPatch(const FastsimHertzInput& input, const FastsimOptions& options, FastsimPatch* patch) {
+  if (patch == nullptr) throw InputError("SolveFastsimHertz: patch must not be null");
   require_positive(input.a_m, "a_m");
   require_positive(input.b_m, "b_m");
   require_non_negative(input.normal_force_N, "normal_force_N");
@@ -39,7 +38,6 @@ void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& opt
     patch->strips.clear();
     patch->bound_pressure_Pa.clear();
     patch->friction_coefficient.clear();
-    ClearResult(result);
     return;
   }
   const double a = input.a_m, b = input.b_m, N = input.normal_force_N;
@@ -87,14 +85,28 @@ void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& opt
   // Discrete load = N exactly (the correction is O(1/ny^2) from the lateral midpoint rule).
   const double scale = N / load;
   for (double& p : patch->bound_pressure_Pa) p *= scale;
+}
 
+FastsimFlexibilities FastsimHertzFlexibilities(const FastsimHertzInput& input, const FastsimOptions& options) {
+  const double a = input.a_m, b = input.b_m;
   const CreepCoefficients coefficients = KalkerCoefficients(a / b, input.material.poisson_ratio);
   FastsimFlexibilities flexibilities = KalkerFlexibilities(a, b, coefficients, input.material.shear_modulus_Pa);
   if (options.blend_flexibilities)
     flexibilities = BlendedFlexibilities(flexibilities, a, b, coefficients, input.material.shear_modulus_Pa,
-                                         input.friction_coefficient, N, input.creepages);
-  SolveFastsimStrips(*patch, flexibilities, input.creepages, input.friction_coefficient, input.rolling_speed_m_per_s,
-                     options, result);
+                                         input.friction_coefficient, input.normal_force_N, input.creepages);
+  return flexibilities;
+}
+
+void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& options, FastsimPatch* patch,
+                       FastsimResult* result) {
+  if (result == nullptr) throw InputError("SolveFastsimHertz: patch and result must not be null");
+  BuildFastsimHertzPatch(input, options, patch);
+  if (patch->strips.empty()) {  // N = 0
+    ClearResult(result);
+    return;
+  }
+  SolveFastsimStrips(*patch, FastsimHertzFlexibilities(input, options), input.creepages, input.friction_coefficient,
+                     input.rolling_speed_m_per_s, options, result);
 }
 
 FastsimResult SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& options) {

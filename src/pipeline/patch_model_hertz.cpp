@@ -5,7 +5,6 @@
 #include "conforma/error.hpp"
 #include "conforma/fastsim.hpp"
 #include "conforma/friction_law.hpp"
-#include "conforma/kalker.hpp"
 #include "conforma/hertz.hpp"
 #include "patch_models.hpp"
 
@@ -53,19 +52,19 @@ PatchTangentialSolution SolveHertzPatchTangential(ContactModel, const PatchNorma
   in.nx = in.ny = options.fastsim_elements;
   in.rolling_speed_m_per_s = rolling_speed_m_per_s;
   PatchTangentialSolution out;
-  FastsimPatch patch;
-  SolveFastsimHertz(in, options.fastsim, &patch, &out.field);
-  if (!options.friction_law.is_constant() && !patch.strips.empty()) {
-    // slip-dependent friction (docs/physics-reference.md §7.4): the same Hertz mesh and flexibilities (those of
-    // SolveFastsimHertz, blended at the law's static value), the variable-friction kernel on it
-    const FrictionLaw& law = options.friction_law;
-    const CreepCoefficients coefficients = KalkerCoefficients(in.a_m / in.b_m, in.material.poisson_ratio);
-    FastsimFlexibilities flexibilities = KalkerFlexibilities(in.a_m, in.b_m, coefficients, in.material.shear_modulus_Pa);
-    if (options.fastsim.blend_flexibilities)
-      flexibilities = BlendedFlexibilities(flexibilities, in.a_m, in.b_m, coefficients, in.material.shear_modulus_Pa,
-                                           law.static_value(), in.normal_force_N, in.creepages);
-    SolveFastsimStripsWithLaw(patch, flexibilities, in.creepages, law, rolling_speed_m_per_s, options.fastsim,
-                              &out.field);
+  if (options.friction_law.is_constant()) {
+    out.field = SolveFastsimHertz(in, options.fastsim);
+  } else {
+    // slip-dependent friction (docs/physics-reference.md §7.4): the Hertz mesh and flexibilities of
+    // SolveFastsimHertz (blended at the law's static value), the variable-friction kernel on them
+    FastsimPatch patch;
+    BuildFastsimHertzPatch(in, options.fastsim, &patch);
+    if (patch.strips.empty()) {
+      out.field = SolveFastsimHertz(in, options.fastsim);  // N = 0: the NoContact result
+    } else {
+      SolveFastsimStripsWithLaw(patch, FastsimHertzFlexibilities(in, options.fastsim), in.creepages,
+                                options.friction_law, rolling_speed_m_per_s, options.fastsim, &out.field);
+    }
   }
   const FastsimResult& t = out.field;
   out.solved = true;
