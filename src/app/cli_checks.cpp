@@ -17,13 +17,13 @@ void EnsureOutputFolder(const std::string& dir, const std::string& option) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
-    throw InputError("option " + option + " " + dir + ": cannot create the output folder" +
-                     (ec ? ": " + ec.message() : std::string()));
+    throw InputError("option " + option + ": cannot create the output folder '" + dir + "'" +
+                     (ec ? ": " + ec.message() : std::string(": not a folder")));
   const std::filesystem::path probe = std::filesystem::path(dir) / ".conforma_write_check";
   {
     std::ofstream f(probe);
     if (!(f << "x") || !(f.flush()))
-      throw InputError("option " + option + " " + dir + ": the output folder is not writable");
+      throw InputError("option " + option + ": cannot write in the output folder '" + dir + "'");
   }
   std::filesystem::remove(probe, ec);
 }

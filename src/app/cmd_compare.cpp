@@ -40,12 +40,7 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
      << sc.update.smoothing_cutoff_m * 1e3 << " mm, rail " << (sc.rail_steps.fixed ? "fixed" : "updated") << ", "
      << steps << " wheel steps per model.\n\n";
   // lost wheel contacts first, where nobody can miss them (issue 13: a run that lost contacts is not "completed")
-  for (const ModelRun& r : runs)
-    for (const WearStepRecord& s : r.result.steps)
-      if (s.failed_contacts > 0)
-        md << "**WARNING: " << r.name << " step " << s.step << ": " << s.failed_contacts << " of "
-           << s.failed_contacts + s.samples
-           << " wheel contacts failed; no wear was taken from them (steps.csv failed_contacts).**\n\n";
+  for (const ModelRun& r : runs) WriteLostContactWarnings(md, r.name, r.result);
   md << "| model | steps | km | km per step (mean) | run time s | Sd mm | Sh mm | qR mm | tread wear mm | flange wear mm | "
         "failed contacts | kinematics fallbacks | status |\n";
   md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

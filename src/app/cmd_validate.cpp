@@ -217,11 +217,8 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
   }
   for (const ModelValidation& r : runs)
     if (!r.result.message.empty()) md << "\n" << r.name << " stopped: " << r.result.message << "\n";
-  for (const ModelValidation& r : runs)
-    for (const WearStepRecord& st : r.result.steps)
-      if (st.failed_contacts > 0)
-        md << "\n**WARNING: " << r.name << " step " << st.step << ": " << st.failed_contacts << " of "
-           << st.failed_contacts + st.samples << " wheel contacts failed; no wear was taken from them.**\n";
+  md << "\n";
+  for (const ModelValidation& r : runs) WriteLostContactWarnings(md, r.name, r.result);
   md << "\n(\"-\": fewer than 2 measured points within the simulated distance -- the km-0 point alone is no "
         "result.)\n";
   const WheelDimensions& d0 = runs.front().result.initial_dimensions;

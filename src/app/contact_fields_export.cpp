@@ -8,6 +8,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "cli_checks.hpp"
 #include "conforma/error.hpp"
 #include "conforma/wheel_contact_fields.hpp"
 
@@ -83,19 +84,7 @@ void ContactFieldsArgs::add_to(CLI::App* app) {
 }
 
 void ContactFieldsArgs::check_writable() const {
-  if (!enabled()) return;
-  std::error_code ec;
-  fs::create_directories(folder, ec);
-  if (ec || !fs::is_directory(folder))
-    throw InputError("option --fields: cannot create the folder '" + folder + "'" +
-                     (ec ? ": " + ec.message() : std::string(": not a folder")));
-  const fs::path probe = fs::path(folder) / ".conforma_write_test";
-  {
-    std::ofstream out(probe);
-    out << "x";
-    if (!out) throw InputError("option --fields: cannot write in the folder '" + folder + "'");
-  }
-  fs::remove(probe, ec);
+  if (enabled()) EnsureOutputFolder(folder, "--fields");
 }
 
 std::vector<std::string> ContactFieldsArgs::write(const WheelContactReport& report, std::ostream& notes) const {

@@ -122,6 +122,14 @@ void PrintRunWarnings(const std::string& label, const WearSimulationResult& r) {
   std::fflush(stdout);
 }
 
+void WriteLostContactWarnings(std::ostream& md, const std::string& label, const WearSimulationResult& r) {
+  for (const WearStepRecord& s : r.steps)
+    if (s.failed_contacts > 0)
+      md << "**WARNING: " << label << " step " << s.step << ": " << s.failed_contacts << " of "
+         << s.failed_contacts + s.samples
+         << " wheel contacts failed; no wear was taken from them (steps.csv failed_contacts).**\n\n";
+}
+
 void ThrowIfIncomplete(const std::vector<std::pair<std::string, const WearSimulationResult*>>& runs) {
   std::string what;
   for (const auto& [label, result] : runs) {

@@ -1,6 +1,7 @@
 #pragma once
 // Output of a wear run (conforma wear / conforma compare): steps.csv, profiles of every step (.prw/.prr + CSV),
 // wear distributions, and a one-line progress display on a terminal.
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,9 @@ void PrintProgress(const std::string& label, const WearStepRecord& step, int ste
 // One line per step that lost wheel contacts or used a kinematics fallback ("WARNING: [label] step j: ..."), to
 // stdout, so that a run that lost contacts never reads as a clean one.
 void PrintRunWarnings(const std::string& label, const WearSimulationResult& result);
+// The same for report.md: one bold "**WARNING: <label> step j: n of m wheel contacts failed; ...**" paragraph per
+// step that lost contacts (compare and validate reports).
+void WriteLostContactWarnings(std::ostream& md, const std::string& label, const WearSimulationResult& result);
 // Throws IncompleteResult(PartialResult) naming every (label, result) whose IncompleteReason is not empty; call it
 // after all outputs are written.
 void ThrowIfIncomplete(const std::vector<std::pair<std::string, const WearSimulationResult*>>& runs);

@@ -59,9 +59,10 @@ bool IsWearContactModel(ContactModel model) { return model != ContactModel::Refe
 
 std::string WearContactModelNames() {
   std::string names;
-  for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal,
-                         ContactModel::Reference, ContactModel::Auto})
+  for (int i = 0; i < kContactModelCount; ++i) {  // the order of contact_model.hpp's table
+    const ContactModel m = static_cast<ContactModel>(i);
     if (IsWearContactModel(m)) names += (names.empty() ? "" : ", ") + std::string(to_string(m));
+  }
   return names;
 }
 
