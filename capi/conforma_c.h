@@ -109,8 +109,8 @@ typedef struct conforma_track_params {
 
 /* Contact model and material. */
 typedef struct conforma_contact_params {
-  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "auto", "reference" (slow,
-                                      normal only) */
+  const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "auto", "exact" (slow: BEM +
+                                      Kalker's exact tangential theory; "reference" is accepted for it) */
   double shear_modulus_Pa;         /* 82e9: G of both bodies, > 0 */
   double poisson_ratio;            /* 0.28: nu of both bodies */
   double friction_coefficient;     /* 0.3: mu, >= 0 */

@@ -1,6 +1,7 @@
 // The tangential influence operator of the exact steady-rolling solver (docs/physics-reference.md §14.1).
 #include "steady_rolling_operator.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace conforma {
@@ -71,30 +72,34 @@ void SteadyRollingOperator::Apply(const Eigen::VectorXd& vx, const Eigen::Vector
 }
 
 void SteadyRollingOperator::AddColumnChange(int j, const std::vector<double>& dvx, const std::vector<double>& dvs,
-                                            const std::vector<unsigned char>& mask, Eigen::VectorXd& slip_x,
-                                            Eigen::VectorXd& slip_s) const {
+                                            const std::vector<unsigned char>& mask, int first_column,
+                                            int last_column, Eigen::VectorXd& slip_x, Eigen::VectorXd& slip_s) const {
   std::vector<int> changed;
   for (int m = 0; m < nx_; ++m)
     if (dvx[static_cast<size_t>(m)] != 0.0 || dvs[static_cast<size_t>(m)] != 0.0) changed.push_back(m);
   if (changed.empty()) return;
-  for (int jj = 0; jj < ns_; ++jj) {
+  for (int jj = std::max(first_column, 0); jj <= std::min(last_column, ns_ - 1); ++jj) {
     if (jj == j) continue;
     const int dj = jj - j + ns_ - 1;
     // cos(alpha_J - alpha_I) on the lateral load column (corrected grids), J in column j, I in column jj
     const long kj = static_cast<long>(nx_) * j, kjj = static_cast<long>(nx_) * jj;
     const double rot = corrected_ ? cos_[kj] * cos_[kjj] + sin_[kj] * sin_[kjj] : 1.0;
-    for (int i = 0; i < nx_; ++i) {
-      const long k = i + kjj;
-      if (!mask[static_cast<size_t>(k)]) continue;
-      double sx = 0.0, ss = 0.0;
-      for (int m : changed) {
-        const int di = i - m + nx_ - 1;
-        const double vx = dvx[static_cast<size_t>(m)], vs = dvs[static_cast<size_t>(m)];
-        sx += axx_(di, dj) * vx + axs_(di, dj) * rot * vs;
-        ss += axs_(di, dj) * vx + ass_(di, dj) * rot * vs;
+    int i_lo = nx_, i_hi = -1;  // loaded rows of column jj
+    for (int i = 0; i < nx_; ++i)
+      if (mask[static_cast<size_t>(i + kjj)]) { i_lo = std::min(i_lo, i); i_hi = i; }
+    if (i_hi < 0) continue;
+    const double* cxx = &axx_(0, dj);
+    const double* cxs = &axs_(0, dj);
+    const double* css = &ass_(0, dj);
+    double* sx = slip_x.data() + kjj;
+    double* ss = slip_s.data() + kjj;
+    for (int m : changed) {
+      const double vx = dvx[static_cast<size_t>(m)], vs = rot * dvs[static_cast<size_t>(m)];
+      const int offset = nx_ - 1 - m;  // table row of (i - m) is i + offset
+      for (int i = i_lo; i <= i_hi; ++i) {
+        sx[i] += cxx[i + offset] * vx + cxs[i + offset] * vs;
+        ss[i] += cxs[i + offset] * vx + css[i + offset] * vs;
       }
-      slip_x[k] += sx;
-      slip_s[k] += ss;
     }
   }
 }

@@ -29,10 +29,12 @@ class SteadyRollingOperator {
   // offset di = i_I - i_J in (-nx, nx).
   double line_xx(int di) const { return line_xx_[static_cast<size_t>(di + nx_ - 1)]; }
   double line_ss(int di) const { return line_ss_[static_cast<size_t>(di + nx_ - 1)]; }
-  // Adds A (dv on column j) to the slip of every element of the columns other than j that `mask` marks (nonzero),
-  // by direct summation over the elements of column j with a nonzero change (Gauss-Seidel between lines, §14.2).
+  // Adds A (dv on column j) to the slip of the elements of the columns other than j that `mask` marks (nonzero), by
+  // direct summation over the elements of column j with a nonzero change (Gauss-Seidel within a block of lines, §14.2).
+  // Only the columns in [first_column, last_column] (other than j) are updated.
   void AddColumnChange(int j, const std::vector<double>& dvx, const std::vector<double>& dvs,
-                       const std::vector<unsigned char>& mask, Eigen::VectorXd& slip_x, Eigen::VectorXd& slip_s) const;
+                       const std::vector<unsigned char>& mask, int first_column, int last_column,
+                       Eigen::VectorXd& slip_x, Eigen::VectorXd& slip_s) const;
 
  private:
   int nx_, ns_;

@@ -380,7 +380,7 @@ inclination_rad: rail cant applied by the track; default 1:40 for built-in rail 
 The wheelset is placed at lateral_m (+ towards the left rail) and yaw_rad in rigid contact with both rails (roll
 from that equilibrium unless roll_rad is given), then each wheel is pushed down until it carries load_N (load
 control), or with load_N < 0 lowered by approach_m (approach mode). Creepages from pure rolling at speed_m_s
-unless xi / eta / phi_per_m are given. model: 'hertz', 'kp', 'kpec', 'conformal', 'auto', 'reference'.
+unless xi / eta / phi_per_m are given. model: 'hertz', 'kp', 'kpec', 'conformal', 'auto', 'exact' (BEM + Kalker's exact tangential theory; 'reference' is accepted for it).
 
 Returns a list of wheel dicts (side, status, pose, vertical_force_N, lateral_force_N, patches). Each patch dict has
 the keys of `conforma contact --json` (fn_N, fx_N, fy_N, mz_Nm, pmax_Pa, area_m2, contact_angle_rad, xi, eta,

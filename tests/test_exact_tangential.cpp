@@ -114,3 +114,155 @@ TEST(ExactTangential, HertzCreepCasesAgainstContact) {
 
 }  // namespace
 }  // namespace conforma
+
+namespace conforma {
+namespace {
+
+const double kPi = 3.14159265358979323846;
+
+// The Hertz case of the a/b = 1 row (A = B = 1.087 /m, Fn = 50 kN) on n x n elements over [-a, a]^2.
+CreepRow UnitRatioRow() {
+  for (const CreepRow& r : ReadExactRows())
+    if (r.aob == 1.0) return r;
+  ADD_FAILURE() << "no a/b = 1 row";
+  return CreepRow{};
+}
+
+// Kalker's linear theory (kalker.hpp: C_ij of the project's table) as creepage -> 0: Fx = -G c^2 C11 xi,
+// Fy = -G c^2 C22 eta - G c^3 C23 phi, c = sqrt(ab). The discretisation error is first order in the element size
+// (0.6 % to 1.8 % at 80 x 80 elements, larger at a/b = 5 where b is small), so the forces are Richardson-extrapolated
+// from 40 and 80 elements per semi-axis pair: F = 2 F_80 - F_40.
+TEST(ExactTangential, LinearTheoryLimit) {
+  Material m;
+  for (const CreepRow& r : ReadExactRows()) {
+    if (r.n != 40 || r.creep_set != "c1" || (r.aob != 0.2 && r.aob != 1.0 && r.aob != 5.0)) continue;
+    m.shear_modulus_Pa = r.G_Pa;
+    m.poisson_ratio = r.nu;
+    const CreepCoefficients c = KalkerCoefficients(r.a_m / r.b_m, r.nu);
+    const double c2 = r.a_m * r.b_m, cc = std::sqrt(c2), creep = 1e-6;
+    const FastsimCreepages sets[3] = {{creep, 0.0, 0.0}, {0.0, creep, 0.0}, {0.0, 0.0, creep / cc}};
+    const double linear[3] = {-r.G_Pa * c2 * c.c11 * creep, -r.G_Pa * c2 * c.c22 * creep,
+                              -r.G_Pa * cc * c2 * c.c23 * creep / cc};
+    double force[2][3];
+    for (int level = 0; level < 2; ++level) {
+      const int n = level == 0 ? 40 : 80;
+      const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, n, n, r.a_m, r.b_m);
+      BemOptions bo;
+      bo.normal_force_N = r.fn_N;
+      const BemResult normal = SolveBemNormal(grid, m, bo);
+      ExactTangentialOptions tight;  // converged far below the discretisation error, for the symmetry check
+      tight.tolerance = 1e-8;
+      for (int k = 0; k < 3; ++k) {
+        const ExactTangentialResult t =
+            SolveExactTangential(grid, normal.pressure_Pa, RigidSlipFromCreepages(grid, sets[k]), m, tight);
+        ASSERT_EQ(t.status, ExactTangentialStatus::Converged);
+        force[level][k] = k == 0 ? t.fx_N : t.fy_N;
+        // the cross terms vanish by symmetry (Fy from xi; Fx from eta and phi)
+        EXPECT_LT(std::fabs(k == 0 ? t.fy_N : t.fx_N), 1e-5 * std::fabs(linear[k]));
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      const double extrapolated = 2.0 * force[1][k] - force[0][k];
+      std::printf("a/b %.1f %s: n40 %.5g n80 %.5g extrapolated %.5g linear %.5g (%+.2f %%)\n", r.aob,
+                  k == 0 ? "xi -> Fx" : k == 1 ? "eta -> Fy" : "phi -> Fy", force[0][k], force[1][k], extrapolated,
+                  linear[k], 100.0 * (extrapolated / linear[k] - 1.0));
+      EXPECT_NEAR(extrapolated, linear[k], 0.01 * std::fabs(linear[k]));
+    }
+  }
+}
+
+// Full slip: every element slips, |F| = mu Fn.
+TEST(ExactTangential, FullSlipCarriesMuTimesLoad) {
+  const CreepRow r = UnitRatioRow();
+  const Solved s = SolveRow(r, 40, FastsimCreepages{0.05, -0.02, 0.0}, r.mu);
+  ASSERT_EQ(s.tangential.status, ExactTangentialStatus::Converged);
+  EXPECT_EQ((s.tangential.state.array() == 1).count(), 0);
+  const double force = std::hypot(s.tangential.fx_N, s.tangential.fy_N);
+  std::printf("full slip: |F| %.2f N, mu Fn %.2f N\n", force, r.mu * s.normal.normal_force_reference_N);
+  EXPECT_NEAR(force, r.mu * s.normal.normal_force_reference_N, 1e-3 * r.mu * r.fn_N);
+  // the traction opposes the slip everywhere
+  for (int j = 0; j < s.tangential.state.cols(); ++j)
+    for (int i = 0; i < s.tangential.state.rows(); ++i)
+      if (s.tangential.state(i, j) == 2)
+        EXPECT_LT(s.tangential.px_Pa(i, j) * s.tangential.sx(i, j) + s.tangential.ps_Pa(i, j) * s.tangential.ss(i, j),
+                  0.0);
+}
+
+// Carter (1926; Johnson 1985 §8.2): a long cylinder, F'/(mu P') = 1 - (1 - xi/xi_s)^2 with xi_s = mu a / R, on the
+// middle line of a patch 60 half-widths long (2-D in its middle).
+TEST(ExactTangential, CarterTwoDimensionalSolution) {
+  Material m;
+  const double R = 0.46, A = 1.0 / (2.0 * R), load_per_m = 1.0e6;
+  const double a = std::sqrt(4.0 * load_per_m * R / (kPi * m.combined_modulus_Pa()));  // 2-D Hertz half-width
+  const int nx = 80, ns = 61;
+  const double length = 61.0 * a;
+  BemGrid grid = QuadraticGapGrid(A, 0.0, nx, ns, 1.15 * a, 0.5 * length);
+  BemOptions bo;
+  bo.normal_force_N = load_per_m * length;
+  const BemResult normal = SolveBemNormal(grid, m, bo);
+  ASSERT_EQ(normal.status, BemStatus::Converged);
+  const int middle = ns / 2;
+  const double p_line = normal.pressure_Pa.col(middle).sum() * grid.dx_m;  // P' of the middle line
+  const double a_line = std::sqrt(4.0 * p_line * R / (kPi * m.combined_modulus_Pa()));
+  const double mu = 0.3, xi_s = mu * a_line / R;
+  for (double ratio : {0.25, 0.5, 0.75}) {
+    ExactTangentialOptions to;
+    to.friction_coefficient = mu;
+    const ExactTangentialResult t =
+        SolveExactTangential(grid, normal.pressure_Pa, RigidSlipFromCreepages(grid, {ratio * xi_s, 0.0, 0.0}), m, to);
+    ASSERT_EQ(t.status, ExactTangentialStatus::Converged);
+    const double f_line = t.px_Pa.col(middle).sum() * grid.dx_m;
+    const double carter = 1.0 - (1.0 - ratio) * (1.0 - ratio);
+    std::printf("Carter xi/xi_s %.2f: F'/(mu P') %.4f, Carter %.4f\n", ratio, -f_line / (mu * p_line), carter);
+    EXPECT_NEAR(-f_line / (mu * p_line), carter, 0.02 * carter);
+  }
+}
+
+// The FFT product and the direct summation give the same solution; the solve is deterministic.
+TEST(ExactTangential, FftMatchesDirectSummationAndRepeats) {
+  const CreepRow r = UnitRatioRow();
+  Material m;
+  const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, 16, 16, r.a_m, r.b_m);
+  BemOptions bo;
+  bo.normal_force_N = r.fn_N;
+  const BemResult normal = SolveBemNormal(grid, m, bo);
+  ExactTangentialOptions fft, direct;
+  direct.use_fft = false;
+  const RigidSlipField w = RigidSlipFromCreepages(grid, CreepagesOf(r));
+  const ExactTangentialResult a = SolveExactTangential(grid, normal.pressure_Pa, w, m, fft);
+  const ExactTangentialResult b = SolveExactTangential(grid, normal.pressure_Pa, w, m, direct);
+  const ExactTangentialResult c = SolveExactTangential(grid, normal.pressure_Pa, w, m, fft);
+  EXPECT_NEAR(a.fx_N, b.fx_N, 1e-8 * std::fabs(a.fx_N));
+  EXPECT_NEAR(a.fy_N, b.fy_N, 1e-8 * std::fabs(a.fy_N));
+  EXPECT_EQ(a.fx_N, c.fx_N);
+  EXPECT_EQ(a.mz_Nm, c.mz_Nm);
+  EXPECT_TRUE(a.px_Pa == c.px_Pa);
+}
+
+// Bad input is an InputError naming what is wrong.
+TEST(ExactTangential, RejectsBadInput) {
+  const BemGrid grid = QuadraticGapGrid(1.0, 1.0, 8, 8, 1e-3, 1e-3);
+  Material m;
+  Eigen::MatrixXd p = Eigen::MatrixXd::Constant(8, 8, 1e8);
+  const RigidSlipField w = RigidSlipFromCreepages(grid, {1e-3, 0.0, 0.0});
+  ExactTangentialOptions o;
+  EXPECT_THROW(SolveExactTangential(grid, Eigen::MatrixXd::Constant(7, 8, 1e8), w, m, o), InputError);
+  Eigen::MatrixXd bad = p;
+  bad(3, 4) = std::nan("");
+  EXPECT_THROW(SolveExactTangential(grid, bad, w, m, o), InputError);
+  bad(3, 4) = -1.0;
+  EXPECT_THROW(SolveExactTangential(grid, bad, w, m, o), InputError);
+  o.friction_coefficient = -0.1;
+  EXPECT_THROW(SolveExactTangential(grid, p, w, m, o), InputError);
+  o = ExactTangentialOptions{};
+  o.friction = [](double) { return std::nan(""); };
+  EXPECT_THROW(SolveExactTangential(grid, p, w, m, o), InputError);
+  EXPECT_THROW(RigidSlipFromColumnCreepages(grid, std::vector<FastsimCreepages>(3), 0.0, 0.0), InputError);
+  // zero pressure: no contact, all zero
+  const ExactTangentialResult none = SolveExactTangential(grid, Eigen::MatrixXd::Zero(8, 8), w, m, ExactTangentialOptions{});
+  EXPECT_EQ(none.status, ExactTangentialStatus::NoContact);
+  EXPECT_EQ(none.fx_N, 0.0);
+}
+
+}  // namespace
+}  // namespace conforma

@@ -17,7 +17,7 @@
 namespace conforma {
 
 void PatchSolveOptions::validate() const {
-  if (model == ContactModel::Reference) throw InputError("bench: the reference model is not a benchmarked model");
+  if (model == ContactModel::Exact) throw InputError("bench: the exact model is the reference, not a benchmarked model");
   if (kp_strips < 3) throw InputError("bench: kp_strips must be >= 3");
   if (fastsim_elements < 2) throw InputError("bench: fastsim_elements must be >= 2");
   require_positive(load_tolerance, "load_tolerance");

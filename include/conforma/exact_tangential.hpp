@@ -14,11 +14,12 @@
 // B_xs = A_xs cos(alpha_J - alpha_I), B_sx = A_sx, B_ss = A_ss cos(alpha_J - alpha_I) (§4.2 version 1 with K = 0:
 // the normal-tangential coupling is off, as CONTACT's default for equal materials).
 //
-// Solver (§14.2): block Gauss-Seidel along each grid line in the rolling direction, from the leading to the trailing
-// edge (the upwind difference makes the line operator nearly lower bidiagonal, so one sweep solves its dominant part
-// exactly), Jacobi between lines with the full operator applied by FFT once per sweep; per element the 2x2 local
-// problem with the traction bound is solved exactly. Slip-dependent friction: the bound follows the slip of the
-// current iterate (a fixed point, converged together with the traction).
+// Solver (§14.2): since the upwind shift commutes with the convolution, s = w + A v with v = dp/dx along the rolling
+// direction and A symmetric positive definite. Gauss-Seidel in v: along each grid line from the leading to the trailing
+// edge, the 2x2 element problem with the traction bound solved exactly for p (v follows from p and its upstream
+// neighbour), Gauss-Seidel between lines (direct summation, with an FFT refresh of the whole slip field per block of
+// lines). Slip-dependent friction: the bound follows the slip of the current iterate (a fixed point, converged together
+// with the traction).
 //
 // Thread-safe, deterministic (no threading inside).
 #include <functional>
@@ -58,14 +59,18 @@ struct ExactTangentialOptions {
   // mu(gamma) of the dimensionless slip gamma = |s| (friction_law.hpp, FrictionLaw::operator()); empty: constant
   std::function<double(double)> friction;
   double rolling_speed_m_per_s = 0.0;  // V, m/s, >= 0: frictional power sum |p . s| V dA (0: power 0)
-  double tolerance = 1e-9;             // on max_I |p_I - p_I,old| / max_I g_I per sweep, > 0
+  // on max_I |p_I - p_I,old| / max_I g_I per sweep, > 0: the forces then move by less than ~1e-5 mu Fn per sweep
+  double tolerance = 1e-5;
   int max_sweeps = 2000;               // >= 1
   bool use_fft = true;                 // false: direct summation (same numbers to rounding, for checking)
+  // Gauss-Seidel between lines by blocks of this many lines, the slip refreshed by one FFT product per block (§14.2);
+  // 0: one block of all lines (one FFT product per sweep). The iteration is the same; only the cost differs.
+  int lines_per_fft = 0;
   void validate() const;               // InputError naming the option
 };
 
 struct ExactTangentialResult {
-  ExactTangentialStatus status = ExactTangentialStatus::NoContact;
+  ExactTangentialStatus status = ExactTangentialStatus::NoContact;  // see ExactTangentialStatus
   Eigen::MatrixXd px_Pa, ps_Pa;  // traction on body 1 along x and t_j, nx x ns, Pa
   Eigen::MatrixXd sx, ss;        // dimensionless slip (0 in adhesion and outside the contact)
   Eigen::MatrixXi state;         // 0 = no contact, 1 = adhesion, 2 = slip

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "conforma/bem_reference.hpp"
 #include "conforma/contact_candidates.hpp"
 #include "conforma/contact_model.hpp"
 #include "conforma/fastsim.hpp"
@@ -26,10 +27,10 @@
 
 namespace conforma {
 
-// What a patch is solved on: the curved patch (kp, kpec, conformal, reference) and/or the rigid contact point with
+// What a patch is solved on: the curved patch (kp, kpec, conformal, exact) and/or the rigid contact point with
 // its Hertz curvatures A, B (hertz). Not owned; both must outlive the call.
 struct PatchInput {
-  const PatchGeometry* patch = nullptr;      // kp, kpec, conformal, reference and auto: required (InputError if null)
+  const PatchGeometry* patch = nullptr;      // kp, kpec, conformal, exact and auto: required (InputError if null)
   const RigidContactPoint* point = nullptr;  // hertz: required; auto: optional (its Hertz A, B for the choice)
 };
 
@@ -37,30 +38,31 @@ struct PatchInput {
 // contact (KP models: also with status "contact_at_patch_boundary"), 0 otherwise; SolvePatch keeps the last iterate's
 // numbers when its load control fails.
 struct PatchNormalSolution {
-  // The patch carries load: hertz: a Hertz solution; KP models: fn_N > 0; reference: normal force > 0. SolvePatch sets
+  // The patch carries load: hertz: a Hertz solution; KP models: fn_N > 0; exact: normal force > 0. SolvePatch sets
   // it false when its load control fails.
   bool in_contact = false;
   // The model's status: hertz "ok" / "hertz_regularised" (B raised to 0.1 A) / HertzStatus; KP models: KpStatus;
-  // reference "ok" / "no_contact" / "not_converged"; "no_contact" for approach <= 0; SolvePatch, load given: the
+  // exact "ok" / "no_contact" / "not_converged"; "no_contact" for approach <= 0; SolvePatch, load given: the
   // LoadControlStatus ("no_bracket", "not_converged") when the load control fails.
   std::string status;
-  // N, on the wheel, along n0 and t0 (fs_N: the KP and reference models' lateral pressure resultant; 0 for hertz)
+  // N, on the wheel, along n0 and t0 (fs_N: the KP and exact models' lateral pressure resultant; 0 for hertz)
   double fn_N = 0.0, fs_N = 0.0;
-  // Pa, Pa, m^2, m, m: maximum pressure; the model's p0 (hertz and reference: = pmax); contact area; extent along s^r
+  // Pa, Pa, m^2, m, m: maximum pressure; the model's p0 (hertz and exact: = pmax); contact area; extent along s^r
   // (hertz: 2 b) and along x^r (hertz: 2 a)
   double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0, width_m = 0.0, length_m = 0.0;
   double a_m = 0.0, b_m = 0.0;    // Hertz semi-axes, m (hertz only; 0 for the other models)
-  double alpha_c_deg = 0.0;       // conformity index, deg (docs/physics-reference.md §9.1; KP models and reference)
-  bool is_conformal = false;      // alpha_c_deg > WheelContactOptions::conformity_threshold_deg (KP models, reference)
+  double alpha_c_deg = 0.0;       // conformity index, deg (docs/physics-reference.md §9.1; KP models and exact)
+  bool is_conformal = false;      // alpha_c_deg > WheelContactOptions::conformity_threshold_deg (KP models, exact)
   KpResult kp;                    // KP models: strips and pressure (default otherwise)
   HertzResult hertz;              // hertz (default otherwise)
+  BemResult bem;                  // exact: the BEM grid and pressure field (default otherwise)
 };
 
-// Creepages of a patch: at the reference point, and for the conformal model optionally one set per KP strip (the
+// Creepages of a patch: at the reference point, and for the conformal model optionally one set per KP strip or BEM column (the
 // rigid slip of each strip from the wheelset kinematics, local_creepage.hpp).
 struct PatchCreepages {
   FastsimCreepages reference;               // xi, eta (-), phi (1/m) at the patch reference point (contact frame)
-  std::vector<FastsimCreepages> per_strip;  // empty: `reference` on every strip; else one per KP strip (conformal)
+  std::vector<FastsimCreepages> per_strip;  // empty: `reference` on every strip; else one per KP strip (conformal) or per BEM column (exact)
   bool any() const { return reference.xi != 0.0 || reference.eta != 0.0 || reference.phi_per_m != 0.0; }
 };
 
@@ -68,7 +70,7 @@ struct PatchCreepages {
 struct PatchTangentialSolution {
   bool solved = false;  // a model's FASTSIM ran (false: no creepage, or a model without a tangential part)
   // "not_solved" (no tangential part, or not asked for), "no_creepage" (all three creepages 0), else the FASTSIM
-  // status of the field ("ok", "full_slip", "no_contact"; fastsim.hpp)
+  // status of the field ("ok", "full_slip", "no_contact"; fastsim.hpp); exact: the same or "not_converged"
   std::string status = "not_solved";
   double fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0;  // on the wheel, patch reference frame (x, t0, n0); N, N, N m
   bool has_equivalent_ellipse = false;         // KP models: a_m, b_m of the SDEC (kbtnh)
@@ -77,13 +79,16 @@ struct PatchTangentialSolution {
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   FastsimResult field;                         // element traction and slip
   std::vector<double> element_width_m;         // lateral width of each element of `field`, m (hertz: 2b / ny)
+  // exact: Gauss-Seidel sweeps and the last relative traction change (exact_tangential.hpp); 0 for the FASTSIM models
+  int iterations = 0;
+  double residual = 0.0;
 };
 
 // Registry entry of one contact model.
 struct ContactModelSolver {
   ContactModel model;         // the model of this entry
   bool needs_patch_geometry;  // false: solved on the rigid contact point alone (Hertz curvatures)
-  bool has_tangential;        // false: normal problem only (reference)
+  bool has_tangential;        // false: normal problem only (none today)
   PatchNormalSolution (*normal)(ContactModel model, const PatchInput& input, double approach_m,
                                 const WheelContactOptions& options);
   PatchTangentialSolution (*tangential)(ContactModel model, const PatchNormalSolution& normal,
@@ -92,7 +97,7 @@ struct ContactModelSolver {
   double (*pressure_at)(const PatchNormalSolution& normal, double x_m, double s_m);  // on a solved normal problem
 };
 // normal: the model's normal solve at an approach (m); tangential: its FASTSIM (null without a tangential part);
-// pressure_at: pressure in Pa at (x, s) in m of the patch frame (null when the model keeps no field: reference).
+// pressure_at: pressure in Pa at (x, s) in m of the patch frame (every model keeps one).
 // The solver of `model` (InputError for auto, which is resolved per patch first: ChoosePatchModel).
 const ContactModelSolver& ContactModelSolverOf(ContactModel model);
 
@@ -137,7 +142,7 @@ struct PatchSolution {
 PatchSolution SolvePatch(const PatchProblem& problem, const WheelContactOptions& options);
 
 // The Kik-Piotrowski options of a KP-type model (kp, kpec, conformal; conformal: variable or constant virtual
-// penetration) with `strips` strips across the contact. InputError for hertz / reference.
+// penetration) with `strips` strips across the contact. InputError for hertz / exact.
 KpOptions KpOptionsForModel(ContactModel model, const Material& material, bool conformal_variable_penetration,
                             int strips);
 

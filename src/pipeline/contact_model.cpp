@@ -18,7 +18,7 @@ constexpr std::array<ModelName, kContactModelCount> kNames = {{{ContactModel::He
                                                                {ContactModel::Kp, "kp"},
                                                                {ContactModel::Kpec, "kpec"},
                                                                {ContactModel::Conformal, "conformal"},
-                                                               {ContactModel::Reference, "reference"},
+                                                               {ContactModel::Exact, "exact"},
                                                                {ContactModel::Auto, "auto"}}};
 }  // namespace
 
@@ -40,6 +40,7 @@ const std::string& ContactModelNames() {
 ContactModel ParseContactModel(const std::string& name) {
   for (const ModelName& m : kNames)
     if (name == m.name) return m.model;
+  if (name == "reference") return ContactModel::Exact;  // the name of the normal-only BEM model before issue 14
   throw InputError("unknown contact model '" + name + "' (expected one of " + ContactModelNames() + ")");
 }
 

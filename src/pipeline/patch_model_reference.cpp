@@ -25,6 +25,7 @@ PatchNormalSolution SolveReferencePatchNormal(ContactModel, const PatchInput& in
   const BemResult r = SolveBemNormal(patch, options.material, b);
   out.status = r.status == BemStatus::Converged ? "ok" : r.status == BemStatus::NoContact ? "no_contact" : "not_converged";
   if (r.status == BemStatus::NoContact) return out;
+  out.bem = r;  // the grid and pressure field the exact tangential solve works on
   out.in_contact = r.normal_force_reference_N > 0.0;
   out.fn_N = r.normal_force_reference_N;
   // lateral component of the curved-surface pressure along t0 (n_j = cos a n0 + sin a t0, patch.hpp), as the KP

@@ -20,5 +20,9 @@ double KpPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s
 
 PatchNormalSolution SolveReferencePatchNormal(ContactModel model, const PatchInput& input, double approach_m,
                                               const WheelContactOptions& options);
+PatchTangentialSolution SolveExactPatchTangential(ContactModel model, const PatchNormalSolution& normal,
+                                                  const PatchCreepages& creepages, double rolling_speed_m_per_s,
+                                                  const WheelContactOptions& options);
+double ExactPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m);
 
 }  // namespace conforma

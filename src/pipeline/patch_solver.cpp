@@ -22,7 +22,7 @@ const std::array<ContactModelSolver, 5> kSolvers = {{
     {ContactModel::Kp, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt},
     {ContactModel::Kpec, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt},
     {ContactModel::Conformal, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt},
-    {ContactModel::Reference, true, false, &SolveReferencePatchNormal, nullptr, nullptr},
+    {ContactModel::Exact, true, true, &SolveReferencePatchNormal, &SolveExactPatchTangential, &ExactPatchPressureAt},
 }};
 
 }  // namespace

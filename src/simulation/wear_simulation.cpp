@@ -55,7 +55,7 @@ WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, do
   return d;
 }
 
-bool IsWearContactModel(ContactModel model) { return model != ContactModel::Reference; }
+bool IsWearContactModel(ContactModel model) { return model != ContactModel::Exact; }
 
 std::string WearContactModelNames() {
   std::string names;

@@ -1,0 +1,83 @@
+// The `exact` contact model on one patch (patch_solver.hpp), tangential part: Kalker's exact steady-rolling theory on
+// the BEM grid of the normal solution (exact_tangential.hpp; docs/physics-reference.md §14), with the Blanco-Lorenzo
+// coefficients on a curved patch and the model's friction law. The normal part is the reference BEM
+// (patch_model_reference.cpp).
+#include <algorithm>
+#include <cmath>
+
+#include "conforma/error.hpp"
+#include "conforma/exact_tangential.hpp"
+#include "conforma/friction_law.hpp"
+#include "patch_models.hpp"
+
+namespace conforma {
+
+PatchTangentialSolution SolveExactPatchTangential(ContactModel, const PatchNormalSolution& normal,
+                                                  const PatchCreepages& creepages, double rolling_speed_m_per_s,
+                                                  const WheelContactOptions& options) {
+  const BemGrid& grid = normal.bem.grid;
+  if (grid.nx < 1 || normal.bem.pressure_Pa.size() == 0)
+    throw InputError("exact model: the tangential problem needs the BEM normal solution of the patch");
+  ExactTangentialOptions o;
+  o.influence = BemInfluence::Blanco;
+  o.rolling_speed_m_per_s = rolling_speed_m_per_s;
+  const FrictionLaw law = options.effective_friction_law();
+  o.friction_coefficient = law.static_value();
+  if (!law.is_constant()) o.friction = [law](double gamma) { return law(gamma); };
+  // per-column creepages (the rigid slip of every BEM column from the wheelset kinematics) or the reference ones
+  const RigidSlipField w = creepages.per_strip.size() == static_cast<size_t>(grid.ns)
+                               ? RigidSlipFromColumnCreepages(grid, creepages.per_strip)
+                               : RigidSlipFromCreepages(grid, creepages.reference);
+  const ExactTangentialResult t = SolveExactTangential(grid, normal.bem.pressure_Pa, w, options.material, o);
+
+  PatchTangentialSolution out;
+  out.solved = true;
+  const bool any_adhesion = (t.state.array() == 1).any();
+  out.status = t.status == ExactTangentialStatus::Converged ? (any_adhesion ? "ok" : "full_slip")
+               : t.status == ExactTangentialStatus::NoContact ? "no_contact"
+                                                              : "not_converged";
+  out.fx_N = t.fx_N;
+  out.fy_N = t.fy_N;
+  out.mz_Nm = t.mz_Nm;
+  out.adhesion_area_m2 = t.adhesion_area_m2;
+  out.slip_area_m2 = t.slip_area_m2;
+  out.frictional_power_W = t.frictional_power_W;
+  out.iterations = t.sweeps;
+  out.residual = t.residual;
+  // the element field in FASTSIM's form (x, y = s, traction, slip), for the cell export and the wear distribution
+  FastsimResult& f = out.field;
+  f.status = out.status == "full_slip" ? FastsimStatus::FullSlip
+             : t.status == ExactTangentialStatus::NoContact ? FastsimStatus::NoContact
+                                                             : FastsimStatus::Ok;
+  for (int j = 0; j < grid.ns; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      if (t.state(i, j) == 0) continue;
+      f.x_m.push_back(grid.x_centre_m(i));
+      f.y_m.push_back(grid.s_centre_m(j));
+      f.area_m2.push_back(grid.element_area_m2());
+      f.px_Pa.push_back(t.px_Pa(i, j));
+      f.py_Pa.push_back(t.ps_Pa(i, j));
+      f.sx.push_back(t.sx(i, j));
+      f.sy.push_back(t.ss(i, j));
+      f.in_slip.push_back(t.state(i, j) == 2 ? 1 : 0);
+      out.element_width_m.push_back(grid.ds_m);
+    }
+  f.fx_N = t.fx_N;
+  f.fy_N = t.fy_N;
+  f.mz_Nm = t.mz_Nm;
+  f.adhesion_area_m2 = t.adhesion_area_m2;
+  f.slip_area_m2 = t.slip_area_m2;
+  f.frictional_power_W = t.frictional_power_W;
+  return out;
+}
+
+// Piecewise-constant BEM pressure of the element containing (x, s); 0 outside the grid.
+double ExactPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m) {
+  const BemGrid& g = normal.bem.grid;
+  if (g.nx < 1 || normal.bem.pressure_Pa.size() == 0) return 0.0;
+  const double fi = (x_m - g.x_first_m) / g.dx_m + 0.5, fj = (s_m - g.s_first_m) / g.ds_m + 0.5;
+  if (!(fi >= 0.0) || !(fj >= 0.0) || fi >= g.nx || fj >= g.ns) return 0.0;
+  return normal.bem.pressure_Pa(static_cast<int>(fi), static_cast<int>(fj));
+}
+
+}  // namespace conforma
