@@ -1,63 +1,118 @@
 // Influence operator of the reference BEM (docs/physics-reference.md §10.1-10.3): DC-FFT convolution with the
-// rectangle coefficients, plus the Blanco-Lorenzo correction written as sums of convolutions.
+// rectangle coefficients (FFTW), plus the Blanco-Lorenzo correction written as sums of convolutions.
 #include "bem_operator.hpp"
 
-#include <unsupported/Eigen/FFT>
+#include <fftw3.h>
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
+#include <new>
+#include <stdexcept>
+#include <utility>
 
 namespace conforma {
 namespace bem_detail {
 namespace {
 
-// Smallest n >= minimum with no prime factor above 5 (fast for kissfft).
+// Smallest n >= minimum with no prime factor above 7 (FFTW's fast codelet sizes).
 int GoodFftSize(int minimum) {
   for (int n = std::max(minimum, 1);; ++n) {
     int m = n;
-    for (int f : {2, 3, 5})
+    for (int f : {2, 3, 5, 7})
       while (m % f == 0) m /= f;
     if (m == 1) return n;
   }
 }
 
+// FFTW's planner (plan creation and destruction) is not thread-safe; executing a plan is. One process-wide lock.
+std::mutex& FftwPlannerMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+fftw_complex* AsFftw(std::complex<double>* p) { return reinterpret_cast<fftw_complex*>(p); }
+
 }  // namespace
 
 Convolution::Convolution(const Eigen::MatrixXd& kernel, int nx, int ns, bool use_fft)
-    : nx_(nx), ns_(ns), use_fft_(use_fft), kernel_(kernel) {
-  if (!use_fft_) return;
-  px_ = GoodFftSize(2 * nx_);
-  ps_ = GoodFftSize(2 * ns_);
-  kernel_spectrum_.assign(static_cast<size_t>(px_) * ps_, {0.0, 0.0});
+    : nx_(nx), ns_(ns), use_fft_(use_fft) {
+  if (!use_fft_) {
+    kernel_ = kernel;
+    return;
+  }
+  // Zero padding to >= 2n - 1 per direction: the circular convolution then equals the linear one on the window.
+  px_ = GoodFftSize(2 * nx_ - 1);
+  ps_ = GoodFftSize(2 * ns_ - 1);
+  const size_t real_size = static_cast<size_t>(px_) * ps_;
+  const size_t complex_size = static_cast<size_t>(px_ / 2 + 1) * ps_;
+  real_ = static_cast<double*>(fftw_malloc(sizeof(double) * real_size));
+  spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_malloc(sizeof(fftw_complex) * complex_size));
+  kernel_spectrum_ = reinterpret_cast<std::complex<double>*>(fftw_malloc(sizeof(fftw_complex) * complex_size));
+  if (!real_ || !spectrum_ || !kernel_spectrum_) {
+    Release();
+    throw std::bad_alloc();
+  }
+  {
+    // FFTW arrays are row-major: dimension 0 is s (ps_), dimension 1 is x (px_, contiguous), as i + px j here.
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    forward_ = fftw_plan_dft_r2c_2d(ps_, px_, real_, AsFftw(spectrum_), FFTW_ESTIMATE);
+    backward_ = fftw_plan_dft_c2r_2d(ps_, px_, AsFftw(spectrum_), real_, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+  }
+  if (!forward_ || !backward_) {
+    Release();
+    throw std::runtime_error("FFTW: plan creation failed");
+  }
+  std::fill(real_, real_ + real_size, 0.0);
   for (int dj = -(ns_ - 1); dj <= ns_ - 1; ++dj)
     for (int di = -(nx_ - 1); di <= nx_ - 1; ++di) {
       const int a = (di + px_) % px_, b = (dj + ps_) % ps_;
-      kernel_spectrum_[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = kernel_(di + nx_ - 1, dj + ns_ - 1);
+      real_[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = kernel(di + nx_ - 1, dj + ns_ - 1);
     }
-  Transform(kernel_spectrum_, false, ps_);
-  kernel_.resize(0, 0);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(kernel_spectrum_));
+  const double scale = 1.0 / static_cast<double>(real_size);  // FFTW's inverse is unnormalised
+  for (size_t k = 0; k < complex_size; ++k) kernel_spectrum_[k] *= scale;
 }
 
-// 2-D FFT by rows and columns of 1-D transforms (Eigen's kissfft backend has no 2-D transform). Only the
-// first `columns` lines along x carry data (zero padding) or are needed (the output window), so the
-// x-transforms are restricted to them: forward x then s, inverse s then x.
-void Convolution::Transform(std::vector<std::complex<double>>& data, bool inverse, int columns) {
-  auto along_x = [&]() {
-    for (int b = 0; b < columns; ++b) {
-      line_in_.assign(data.begin() + static_cast<long>(b) * px_, data.begin() + static_cast<long>(b + 1) * px_);
-      if (inverse) fft_.inv(line_out_, line_in_); else fft_.fwd(line_out_, line_in_);
-      std::copy(line_out_.begin(), line_out_.end(), data.begin() + static_cast<long>(b) * px_);
-    }
-  };
-  auto along_s = [&]() {
-    line_in_.resize(static_cast<size_t>(ps_));
-    for (int a = 0; a < px_; ++a) {
-      for (int b = 0; b < ps_; ++b) line_in_[static_cast<size_t>(b)] = data[static_cast<size_t>(a) + static_cast<size_t>(px_) * b];
-      if (inverse) fft_.inv(line_out_, line_in_); else fft_.fwd(line_out_, line_in_);
-      for (int b = 0; b < ps_; ++b) data[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = line_out_[static_cast<size_t>(b)];
-    }
-  };
-  if (inverse) { along_s(); along_x(); } else { along_x(); along_s(); }
+void Convolution::Release() {
+  if (forward_ || backward_) {
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    if (forward_) fftw_destroy_plan(static_cast<fftw_plan>(forward_));
+    if (backward_) fftw_destroy_plan(static_cast<fftw_plan>(backward_));
+  }
+  forward_ = backward_ = nullptr;
+  fftw_free(real_);
+  fftw_free(spectrum_);
+  fftw_free(kernel_spectrum_);
+  real_ = nullptr;
+  spectrum_ = kernel_spectrum_ = nullptr;
+}
+
+Convolution::~Convolution() { Release(); }
+
+Convolution::Convolution(Convolution&& other) noexcept
+    : nx_(other.nx_), ns_(other.ns_), px_(other.px_), ps_(other.ps_), use_fft_(other.use_fft_),
+      kernel_(std::move(other.kernel_)), kernel_spectrum_(other.kernel_spectrum_), real_(other.real_),
+      spectrum_(other.spectrum_), forward_(other.forward_), backward_(other.backward_) {
+  other.kernel_spectrum_ = other.spectrum_ = nullptr;
+  other.real_ = nullptr;
+  other.forward_ = other.backward_ = nullptr;
+  other.nx_ = other.ns_ = other.px_ = other.ps_ = 0;
+}
+
+Convolution& Convolution::operator=(Convolution&& other) noexcept {
+  if (this != &other) {
+    Release();
+    nx_ = other.nx_; ns_ = other.ns_; px_ = other.px_; ps_ = other.ps_; use_fft_ = other.use_fft_;
+    kernel_ = std::move(other.kernel_);
+    std::swap(kernel_spectrum_, other.kernel_spectrum_);
+    std::swap(real_, other.real_);
+    std::swap(spectrum_, other.spectrum_);
+    std::swap(forward_, other.forward_);
+    std::swap(backward_, other.backward_);
+    other.nx_ = other.ns_ = other.px_ = other.ps_ = 0;
+  }
+  return *this;
 }
 
 void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
@@ -73,16 +128,19 @@ void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
       }
     return;
   }
-  work_.assign(static_cast<size_t>(px_) * ps_, {0.0, 0.0});
+  const size_t px = static_cast<size_t>(px_);
+  for (int j = 0; j < ns_; ++j) {
+    double* row = real_ + px * j;
+    std::copy(in.data() + static_cast<long>(nx_) * j, in.data() + static_cast<long>(nx_) * (j + 1), row);
+    std::fill(row + nx_, row + px, 0.0);
+  }
+  std::fill(real_ + px * ns_, real_ + px * ps_, 0.0);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(spectrum_));
+  const size_t complex_size = (px / 2 + 1) * static_cast<size_t>(ps_);
+  for (size_t k = 0; k < complex_size; ++k) spectrum_[k] *= kernel_spectrum_[k];
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), AsFftw(spectrum_), real_);
   for (int j = 0; j < ns_; ++j)
-    for (int i = 0; i < nx_; ++i)
-      work_[static_cast<size_t>(i) + static_cast<size_t>(px_) * j] = in[i + static_cast<long>(nx_) * j];
-  Transform(work_, false, ns_);
-  for (size_t k = 0; k < work_.size(); ++k) work_[k] *= kernel_spectrum_[k];
-  Transform(work_, true, ns_);
-  for (int j = 0; j < ns_; ++j)
-    for (int i = 0; i < nx_; ++i)
-      out[i + static_cast<long>(nx_) * j] = work_[static_cast<size_t>(i) + static_cast<size_t>(px_) * j].real();
+    std::copy(real_ + px * j, real_ + px * j + nx_, out.data() + static_cast<long>(nx_) * j);
 }
 
 InfluenceOperator::InfluenceOperator(const BemGrid& grid, const ElasticConstants& elastic,

@@ -3,7 +3,6 @@
 // circular convolution, Liu, Wang & Liu 2000) or by direct summation. Vectors are column-major
 // nx x ns fields flattened as i + nx * j.
 #include <Eigen/Core>
-#include <unsupported/Eigen/FFT>
 #include <complex>
 #include <optional>
 #include <vector>
@@ -15,21 +14,32 @@ namespace conforma {
 namespace bem_detail {
 
 // Convolution of an nx x ns field with a kernel tabulated on the offsets (di, dj) in (-nx, nx) x (-ns, ns).
+// FFT path: DC-FFT (Liu, Wang & Liu 2000) with FFTW's real-to-complex / complex-to-real 2-D transforms of the
+// zero-padded field; the plans are made with FFTW_ESTIMATE (deterministic: no timing-dependent plan choice) under
+// one process-wide mutex, because FFTW's planner is not thread-safe (executing a plan on new arrays is).
+// Owns FFTW plans and buffers: not copyable, movable (usable inside std::optional).
 class Convolution {
  public:
   // kernel(di + nx - 1, dj + ns - 1) = K(di, dj), a (2nx-1) x (2ns-1) table.
   Convolution(const Eigen::MatrixXd& kernel, int nx, int ns, bool use_fft);
+  ~Convolution();
+  Convolution(const Convolution&) = delete;
+  Convolution& operator=(const Convolution&) = delete;
+  Convolution(Convolution&& other) noexcept;
+  Convolution& operator=(Convolution&& other) noexcept;
   // out_I = sum_J K(i_I - i_J, j_I - j_J) in_J
   void Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out);
 
  private:
-  void Transform(std::vector<std::complex<double>>& data, bool inverse, int columns);
-  int nx_, ns_, px_ = 0, ps_ = 0;
-  bool use_fft_;
-  Eigen::FFT<double> fft_;  // keeps its twiddle tables between transforms
-  Eigen::MatrixXd kernel_;
-  std::vector<std::complex<double>> kernel_spectrum_;
-  std::vector<std::complex<double>> work_, line_in_, line_out_;
+  void Release();
+  int nx_ = 0, ns_ = 0, px_ = 0, ps_ = 0;
+  bool use_fft_ = false;
+  Eigen::MatrixXd kernel_;          // direct path only
+  std::complex<double>* kernel_spectrum_ = nullptr;  // ps x (px/2+1), scaled by 1 / (px ps)
+  double* real_ = nullptr;                           // ps x px padded field (x contiguous)
+  std::complex<double>* spectrum_ = nullptr;         // ps x (px/2+1)
+  void* forward_ = nullptr;   // fftw_plan (r2c)
+  void* backward_ = nullptr;  // fftw_plan (c2r)
 };
 
 class InfluenceOperator {
