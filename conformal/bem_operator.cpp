@@ -15,11 +15,11 @@ namespace conforma {
 namespace bem_detail {
 namespace {
 
-// Smallest n >= minimum with no prime factor above 7 (FFTW's fast codelet sizes).
+// Smallest n >= minimum with no prime factor above 5 (the fastest FFTW_ESTIMATE sizes).
 int GoodFftSize(int minimum) {
   for (int n = std::max(minimum, 1);; ++n) {
     int m = n;
-    for (int f : {2, 3, 5, 7})
+    for (int f : {2, 3, 5})
       while (m % f == 0) m /= f;
     if (m == 1) return n;
   }
@@ -128,6 +128,15 @@ void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
       }
     return;
   }
+  LoadPadded(in);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(spectrum_));
+  const size_t complex_size = ComplexSize();
+  for (size_t k = 0; k < complex_size; ++k) spectrum_[k] *= kernel_spectrum_[k];
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), AsFftw(spectrum_), real_);
+  StoreWindow(out);
+}
+
+void Convolution::LoadPadded(const Eigen::VectorXd& in) {
   const size_t px = static_cast<size_t>(px_);
   for (int j = 0; j < ns_; ++j) {
     double* row = real_ + px * j;
@@ -135,12 +144,49 @@ void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
     std::fill(row + nx_, row + px, 0.0);
   }
   std::fill(real_ + px * ns_, real_ + px * ps_, 0.0);
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(spectrum_));
-  const size_t complex_size = (px / 2 + 1) * static_cast<size_t>(ps_);
-  for (size_t k = 0; k < complex_size; ++k) spectrum_[k] *= kernel_spectrum_[k];
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), AsFftw(spectrum_), real_);
+}
+
+void Convolution::StoreWindow(Eigen::VectorXd& out) const {
+  out.resize(static_cast<long>(nx_) * ns_);
+  const size_t px = static_cast<size_t>(px_);
   for (int j = 0; j < ns_; ++j)
     std::copy(real_ + px * j, real_ + px * j + nx_, out.data() + static_cast<long>(nx_) * j);
+}
+
+Convolution::Spectrum::Spectrum(size_t size)
+    : data_(reinterpret_cast<std::complex<double>*>(fftw_malloc(sizeof(fftw_complex) * size))), size_(size) {
+  if (!data_) throw std::bad_alloc();
+}
+
+Convolution::Spectrum::~Spectrum() { fftw_free(data_); }
+
+Convolution::Spectrum& Convolution::Spectrum::operator=(Spectrum&& other) noexcept {
+  std::swap(data_, other.data_);
+  std::swap(size_, other.size_);
+  return *this;
+}
+
+Convolution::Spectrum Convolution::NewSpectrum() const { return use_fft_ ? Spectrum(ComplexSize()) : Spectrum(); }
+
+void Convolution::Forward(const Eigen::VectorXd& in, Spectrum& out) {
+  if (out.size() != ComplexSize()) out = NewSpectrum();
+  LoadPadded(in);
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(out.data()));
+}
+
+void Convolution::MultiplyAdd(const Spectrum& in, double sign, Spectrum& acc, bool overwrite) const {
+  const size_t n = ComplexSize();
+  const std::complex<double>* a = in.data();
+  std::complex<double>* b = acc.data();
+  if (overwrite)
+    for (size_t k = 0; k < n; ++k) b[k] = sign * (kernel_spectrum_[k] * a[k]);
+  else
+    for (size_t k = 0; k < n; ++k) b[k] += sign * (kernel_spectrum_[k] * a[k]);
+}
+
+void Convolution::Inverse(Spectrum& in, Eigen::VectorXd& out) {
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), AsFftw(in.data()), real_);
+  StoreWindow(out);
 }
 
 InfluenceOperator::InfluenceOperator(const BemGrid& grid, const ElasticConstants& elastic,
@@ -179,22 +225,43 @@ InfluenceOperator::InfluenceOperator(const BemGrid& grid, const ElasticConstants
 }
 
 // C_IJ = A_IJ cos(a_J - a_I) - S_IJ sin(a_J - a_I)   (§4.2, paper 003 eq. 2), with
-// cos(a_J - a_I) = c_J c_I + s_J s_I and sin(a_J - a_I) = s_J c_I - c_J s_I.
+// cos(a_J - a_I) = c_J c_I + s_J s_I and sin(a_J - a_I) = s_J c_I - c_J s_I:
+//     u = c (A (c p) - S (s p)) + s (A (s p) + S (c p)).
+// FFT path: two forward transforms (c p, s p) and two inverse ones, whatever the number of kernels.
 void InfluenceOperator::Apply(const Eigen::VectorXd& pressure, Eigen::VectorXd& displacement) {
   if (!corrected_) {
     normal_->Apply(pressure, displacement);
     return;
   }
-  Eigen::VectorXd cp = cos_.cwiseProduct(pressure), sp = sin_.cwiseProduct(pressure), tmp;
-  normal_->Apply(cp, displacement);
+  cp_ = cos_.cwiseProduct(pressure);
+  sp_ = sin_.cwiseProduct(pressure);
+  if (normal_->uses_fft()) {
+    normal_->Forward(cp_, spectrum_cp_);
+    normal_->Forward(sp_, spectrum_sp_);
+    if (out_a_.size() != spectrum_cp_.size()) {
+      out_a_ = normal_->NewSpectrum();
+      out_b_ = normal_->NewSpectrum();
+    }
+    normal_->MultiplyAdd(spectrum_cp_, 1.0, out_a_, true);
+    normal_->MultiplyAdd(spectrum_sp_, 1.0, out_b_, true);
+    if (coupled_) {
+      coupling_->MultiplyAdd(spectrum_sp_, -1.0, out_a_, false);
+      coupling_->MultiplyAdd(spectrum_cp_, 1.0, out_b_, false);
+    }
+    normal_->Inverse(out_a_, displacement);
+    normal_->Inverse(out_b_, tmp_);
+    displacement = displacement.cwiseProduct(cos_) + tmp_.cwiseProduct(sin_);
+    return;
+  }
+  normal_->Apply(cp_, displacement);
   displacement = displacement.cwiseProduct(cos_);
-  normal_->Apply(sp, tmp);
-  displacement += tmp.cwiseProduct(sin_);
+  normal_->Apply(sp_, tmp_);
+  displacement += tmp_.cwiseProduct(sin_);
   if (!coupled_) return;
-  coupling_->Apply(sp, tmp);
-  displacement -= tmp.cwiseProduct(cos_);
-  coupling_->Apply(cp, tmp);
-  displacement += tmp.cwiseProduct(sin_);
+  coupling_->Apply(sp_, tmp_);
+  displacement -= tmp_.cwiseProduct(cos_);
+  coupling_->Apply(cp_, tmp_);
+  displacement += tmp_.cwiseProduct(sin_);
 }
 
 }  // namespace bem_detail

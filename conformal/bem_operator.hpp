@@ -30,8 +30,36 @@ class Convolution {
   // out_I = sum_J K(i_I - i_J, j_I - j_J) in_J
   void Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out);
 
+  // Spectral interface (FFT path only), for sums of convolutions sharing transforms: the spectra of Convolutions
+  // built for the same nx x ns are interchangeable, so sum_k K_k * in_k costs one forward transform per distinct
+  // input and one inverse per output.
+  class Spectrum {  // (px/2+1) ps complex values of a zero-padded field, FFTW-aligned; movable
+   public:
+    Spectrum() = default;
+    explicit Spectrum(size_t size);
+    ~Spectrum();
+    Spectrum(Spectrum&& other) noexcept : data_(other.data_), size_(other.size_) { other.data_ = nullptr; other.size_ = 0; }
+    Spectrum& operator=(Spectrum&& other) noexcept;
+    Spectrum(const Spectrum&) = delete;
+    Spectrum& operator=(const Spectrum&) = delete;
+    std::complex<double>* data() const { return data_; }
+    size_t size() const { return size_; }
+
+   private:
+    std::complex<double>* data_ = nullptr;
+    size_t size_ = 0;
+  };
+  bool uses_fft() const { return use_fft_; }
+  Spectrum NewSpectrum() const;                                  // zero-size unless uses_fft()
+  void Forward(const Eigen::VectorXd& in, Spectrum& out);       // out = F(in) (in: nx ns values)
+  void MultiplyAdd(const Spectrum& in, double sign, Spectrum& acc, bool overwrite) const;  // acc (=|+=) sign K^ in
+  void Inverse(Spectrum& in, Eigen::VectorXd& out);             // out = window of F^-1(in); destroys in
+
  private:
   void Release();
+  void LoadPadded(const Eigen::VectorXd& in);        // real_ = in, zero-padded
+  void StoreWindow(Eigen::VectorXd& out) const;     // out = the nx x ns window of real_
+  size_t ComplexSize() const { return static_cast<size_t>(px_ / 2 + 1) * static_cast<size_t>(ps_); }
   int nx_ = 0, ns_ = 0, px_ = 0, ps_ = 0;
   bool use_fft_ = false;
   Eigen::MatrixXd kernel_;          // direct path only
@@ -56,7 +84,13 @@ class InfluenceOperator {
   std::optional<Convolution> normal_;    // A_nn
   std::optional<Convolution> coupling_;  // A_ns (only with a non-zero coupling parameter)
   double self_coefficient_ = 0.0;
+  Eigen::VectorXd cp_, sp_, tmp_;                                        // scratch
+  Convolution::Spectrum spectrum_cp_, spectrum_sp_, out_a_, out_b_;  // scratch (FFT path)
 };
+
+// InputError when an nx x ns grid exceeds the budget max_elements (BemOptions::max_elements), naming the grid, the
+// budget, and the options that change them.
+void CheckGridBudget(double nx, double ns, double dx_m, double ds_m, long max_elements);
 
 // Fills the integrated outputs of result (forces, area, extents, point of action, complementarity) from
 // the pressure and deformed gap fields (flattened, i + nx j) on result.grid.

@@ -20,8 +20,9 @@ PatchNormalSolution SolveReferencePatchNormal(ContactModel, const PatchInput& in
   b.influence = BemInfluence::Blanco;
   b.control = BemLoadControl::Approach;
   b.approach_m = approach_m;
-  b.x_elements = options.bem_x_elements;
-  b.tolerance = 1e-9;
+  b.element_dx_m = b.element_ds_m = options.exact_element_size_m;
+  b.max_elements = options.exact_max_elements;
+  b.tolerance = 1e-8;
   const BemResult r = SolveBemNormal(patch, options.material, b);
   out.status = r.status == BemStatus::Converged ? "ok" : r.status == BemStatus::NoContact ? "no_contact" : "not_converged";
   if (r.status == BemStatus::NoContact) return out;
