@@ -54,33 +54,71 @@ Convolution::Convolution(const Eigen::MatrixXd& kernel, int nx, int ns, bool use
     throw std::bad_alloc();
   }
   {
-    // FFTW arrays are row-major: dimension 0 is s (ps_), dimension 1 is x (px_, contiguous), as i + px j here.
+    // FFTW arrays are row-major: dimension 0 is s (ps_), dimension 1 is x (px_, contiguous), as i + px j here; the
+    // spectrum is ps_ rows of px_/2 + 1 complex values (FFTW's 2-D r2c layout).
+    const int h = px_ / 2 + 1;
     std::lock_guard<std::mutex> lock(FftwPlannerMutex());
-    forward_ = fftw_plan_dft_r2c_2d(ps_, px_, real_, AsFftw(spectrum_), FFTW_ESTIMATE);
-    backward_ = fftw_plan_dft_c2r_2d(ps_, px_, AsFftw(spectrum_), real_, FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
+    plans_[kForwardX] = fftw_plan_many_dft_r2c(1, &px_, ns_, real_, nullptr, 1, px_, AsFftw(spectrum_), nullptr, 1, h,
+                                               FFTW_ESTIMATE);
+    plans_[kForwardS] = fftw_plan_many_dft(1, &ps_, h, AsFftw(spectrum_), nullptr, h, 1, AsFftw(spectrum_), nullptr,
+                                           h, 1, FFTW_FORWARD, FFTW_ESTIMATE);
+    plans_[kBackwardS] = fftw_plan_many_dft(1, &ps_, h, AsFftw(spectrum_), nullptr, h, 1, AsFftw(spectrum_), nullptr,
+                                            h, 1, FFTW_BACKWARD, FFTW_ESTIMATE);
+    plans_[kBackwardX] = fftw_plan_many_dft_c2r(1, &px_, ns_, AsFftw(spectrum_), nullptr, 1, h, real_, nullptr, 1, px_,
+                                                FFTW_ESTIMATE | FFTW_DESTROY_INPUT);
   }
-  if (!forward_ || !backward_) {
-    Release();
-    throw std::runtime_error("FFTW: plan creation failed");
-  }
+  for (void* plan : plans_)
+    if (!plan) {
+      Release();
+      throw std::runtime_error("FFTW: plan creation failed");
+    }
+  // The kernel fills every row of the padded table: its spectrum by a full 2-D transform (once).
   std::fill(real_, real_ + real_size, 0.0);
   for (int dj = -(ns_ - 1); dj <= ns_ - 1; ++dj)
     for (int di = -(nx_ - 1); di <= nx_ - 1; ++di) {
       const int a = (di + px_) % px_, b = (dj + ps_) % ps_;
       real_[static_cast<size_t>(a) + static_cast<size_t>(px_) * b] = kernel(di + nx_ - 1, dj + ns_ - 1);
     }
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(kernel_spectrum_));
+  fftw_plan full;
+  {
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    full = fftw_plan_dft_r2c_2d(ps_, px_, real_, AsFftw(kernel_spectrum_), FFTW_ESTIMATE);
+  }
+  if (!full) {
+    Release();
+    throw std::runtime_error("FFTW: plan creation failed");
+  }
+  fftw_execute(full);
+  {
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    fftw_destroy_plan(full);
+  }
   const double scale = 1.0 / static_cast<double>(real_size);  // FFTW's inverse is unnormalised
   for (size_t k = 0; k < complex_size; ++k) kernel_spectrum_[k] *= scale;
 }
 
+void Convolution::ForwardTransform(std::complex<double>* out) {
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(plans_[kForwardX]), real_, AsFftw(out));
+  const size_t h = static_cast<size_t>(px_ / 2 + 1);
+  std::fill(out + h * ns_, out + h * ps_, std::complex<double>(0.0, 0.0));  // rows of padding transform to 0
+  fftw_execute_dft(static_cast<fftw_plan>(plans_[kForwardS]), AsFftw(out), AsFftw(out));
+}
+
+void Convolution::InverseTransform(std::complex<double>* in) {
+  fftw_execute_dft(static_cast<fftw_plan>(plans_[kBackwardS]), AsFftw(in), AsFftw(in));
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(plans_[kBackwardX]), AsFftw(in), real_);
+}
+
 void Convolution::Release() {
-  if (forward_ || backward_) {
+  bool any = false;
+  for (void* plan : plans_) any = any || plan;
+  if (any) {
     std::lock_guard<std::mutex> lock(FftwPlannerMutex());
-    if (forward_) fftw_destroy_plan(static_cast<fftw_plan>(forward_));
-    if (backward_) fftw_destroy_plan(static_cast<fftw_plan>(backward_));
+    for (void*& plan : plans_) {
+      if (plan) fftw_destroy_plan(static_cast<fftw_plan>(plan));
+      plan = nullptr;
+    }
   }
-  forward_ = backward_ = nullptr;
   fftw_free(real_);
   fftw_free(spectrum_);
   fftw_free(kernel_spectrum_);
@@ -93,10 +131,13 @@ Convolution::~Convolution() { Release(); }
 Convolution::Convolution(Convolution&& other) noexcept
     : nx_(other.nx_), ns_(other.ns_), px_(other.px_), ps_(other.ps_), use_fft_(other.use_fft_),
       kernel_(std::move(other.kernel_)), kernel_spectrum_(other.kernel_spectrum_), real_(other.real_),
-      spectrum_(other.spectrum_), forward_(other.forward_), backward_(other.backward_) {
+      spectrum_(other.spectrum_) {
+  for (int k = 0; k < kPlans; ++k) {
+    plans_[k] = other.plans_[k];
+    other.plans_[k] = nullptr;
+  }
   other.kernel_spectrum_ = other.spectrum_ = nullptr;
   other.real_ = nullptr;
-  other.forward_ = other.backward_ = nullptr;
   other.nx_ = other.ns_ = other.px_ = other.ps_ = 0;
 }
 
@@ -108,8 +149,7 @@ Convolution& Convolution::operator=(Convolution&& other) noexcept {
     std::swap(kernel_spectrum_, other.kernel_spectrum_);
     std::swap(real_, other.real_);
     std::swap(spectrum_, other.spectrum_);
-    std::swap(forward_, other.forward_);
-    std::swap(backward_, other.backward_);
+    for (int k = 0; k < kPlans; ++k) std::swap(plans_[k], other.plans_[k]);
     other.nx_ = other.ns_ = other.px_ = other.ps_ = 0;
   }
   return *this;
@@ -129,10 +169,15 @@ void Convolution::Apply(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
     return;
   }
   LoadPadded(in);
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(spectrum_));
-  const size_t complex_size = ComplexSize();
-  for (size_t k = 0; k < complex_size; ++k) spectrum_[k] *= kernel_spectrum_[k];
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), AsFftw(spectrum_), real_);
+  ForwardTransform(spectrum_);
+  double* a = reinterpret_cast<double*>(spectrum_);
+  const double* k = reinterpret_cast<const double*>(kernel_spectrum_);
+  for (size_t m = 0; m < 2 * ComplexSize(); m += 2) {  // real arithmetic, as in MultiplyAdd
+    const double re = k[m] * a[m] - k[m + 1] * a[m + 1];
+    a[m + 1] = k[m] * a[m + 1] + k[m + 1] * a[m];
+    a[m] = re;
+  }
+  InverseTransform(spectrum_);
   StoreWindow(out);
 }
 
@@ -142,8 +187,7 @@ void Convolution::LoadPadded(const Eigen::VectorXd& in) {
     double* row = real_ + px * j;
     std::copy(in.data() + static_cast<long>(nx_) * j, in.data() + static_cast<long>(nx_) * (j + 1), row);
     std::fill(row + nx_, row + px, 0.0);
-  }
-  std::fill(real_ + px * ns_, real_ + px * ps_, 0.0);
+  }  // rows ns_.. are not read (ForwardTransform)
 }
 
 void Convolution::StoreWindow(Eigen::VectorXd& out) const {
@@ -171,21 +215,29 @@ Convolution::Spectrum Convolution::NewSpectrum() const { return use_fft_ ? Spect
 void Convolution::Forward(const Eigen::VectorXd& in, Spectrum& out) {
   if (out.size() != ComplexSize()) out = NewSpectrum();
   LoadPadded(in);
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_), real_, AsFftw(out.data()));
+  ForwardTransform(out.data());
 }
 
 void Convolution::MultiplyAdd(const Spectrum& in, double sign, Spectrum& acc, bool overwrite) const {
+  // in real arithmetic (std::complex's operator* checks for inf / NaN and does not vectorise)
   const size_t n = ComplexSize();
-  const std::complex<double>* a = in.data();
-  std::complex<double>* b = acc.data();
+  const double* a = reinterpret_cast<const double*>(in.data());
+  const double* k = reinterpret_cast<const double*>(kernel_spectrum_);
+  double* b = reinterpret_cast<double*>(acc.data());
   if (overwrite)
-    for (size_t k = 0; k < n; ++k) b[k] = sign * (kernel_spectrum_[k] * a[k]);
+    for (size_t m = 0; m < 2 * n; m += 2) {
+      b[m] = sign * (k[m] * a[m] - k[m + 1] * a[m + 1]);
+      b[m + 1] = sign * (k[m] * a[m + 1] + k[m + 1] * a[m]);
+    }
   else
-    for (size_t k = 0; k < n; ++k) b[k] += sign * (kernel_spectrum_[k] * a[k]);
+    for (size_t m = 0; m < 2 * n; m += 2) {
+      b[m] += sign * (k[m] * a[m] - k[m + 1] * a[m + 1]);
+      b[m + 1] += sign * (k[m] * a[m + 1] + k[m + 1] * a[m]);
+    }
 }
 
 void Convolution::Inverse(Spectrum& in, Eigen::VectorXd& out) {
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(backward_), AsFftw(in.data()), real_);
+  InverseTransform(in.data());
   StoreWindow(out);
 }
 

@@ -15,7 +15,8 @@ namespace bem_detail {
 
 // Convolution of an nx x ns field with a kernel tabulated on the offsets (di, dj) in (-nx, nx) x (-ns, ns).
 // FFT path: DC-FFT (Liu, Wang & Liu 2000) with FFTW's real-to-complex / complex-to-real 2-D transforms of the
-// zero-padded field; the plans are made with FFTW_ESTIMATE (deterministic: no timing-dependent plan choice) under
+// zero-padded field, done as 1-D transforms so that the rows along x that are all padding (forward) or not needed
+// (inverse) are skipped; the plans are made with FFTW_ESTIMATE (deterministic: no timing-dependent plan choice) under
 // one process-wide mutex, because FFTW's planner is not thread-safe (executing a plan on new arrays is).
 // Owns FFTW plans and buffers: not copyable, movable (usable inside std::optional).
 class Convolution {
@@ -57,7 +58,9 @@ class Convolution {
 
  private:
   void Release();
-  void LoadPadded(const Eigen::VectorXd& in);        // real_ = in, zero-padded
+  void LoadPadded(const Eigen::VectorXd& in);        // rows 0 .. ns-1 of real_ = in, zero-padded along x
+  void ForwardTransform(std::complex<double>* out);  // out = F(real_) (rows ns.. of real_ taken as 0)
+  void InverseTransform(std::complex<double>* in);   // rows 0 .. ns-1 of real_ = F^-1(in); destroys in
   void StoreWindow(Eigen::VectorXd& out) const;     // out = the nx x ns window of real_
   size_t ComplexSize() const { return static_cast<size_t>(px_ / 2 + 1) * static_cast<size_t>(ps_); }
   int nx_ = 0, ns_ = 0, px_ = 0, ps_ = 0;
@@ -66,8 +69,10 @@ class Convolution {
   std::complex<double>* kernel_spectrum_ = nullptr;  // ps x (px/2+1), scaled by 1 / (px ps)
   double* real_ = nullptr;                           // ps x px padded field (x contiguous)
   std::complex<double>* spectrum_ = nullptr;         // ps x (px/2+1)
-  void* forward_ = nullptr;   // fftw_plan (r2c)
-  void* backward_ = nullptr;  // fftw_plan (c2r)
+  // fftw_plans of the pruned 2-D transforms: r2c along x of the ns data rows, c2c along s of every column
+  // (forward), c2c along s, c2r along x of the ns output rows (inverse)
+  enum Plan { kForwardX, kForwardS, kBackwardS, kBackwardX, kPlans };
+  void* plans_[kPlans] = {nullptr, nullptr, nullptr, nullptr};
 };
 
 class InfluenceOperator {
