@@ -50,25 +50,61 @@ SteadyRollingOperator::SteadyRollingOperator(const BemGrid& grid, const ElasticC
 // B_xx = A_xx, B_sx = A_sx, B_xs = A_xs cos(alpha_J - alpha_I), B_ss = A_ss cos(alpha_J - alpha_I))
 void SteadyRollingOperator::Apply(const Eigen::VectorXd& vx, const Eigen::VectorXd& vs, Eigen::VectorXd& out_x,
                                   Eigen::VectorXd& out_s) {
-  xx_->Apply(vx, out_x);
-  xs_->Apply(vx, out_s);  // A_sx = A_xs
-  if (!corrected_) {
-    xs_->Apply(vs, a_);
-    out_x += a_;
-    ss_->Apply(vs, a_);
-    out_s += a_;
+  if (!xx_->uses_fft()) {  // direct summation (checks)
+    xx_->Apply(vx, out_x);
+    xs_->Apply(vx, out_s);  // A_sx = A_xs
+    if (!corrected_) {
+      xs_->Apply(vs, a_);
+      out_x += a_;
+      ss_->Apply(vs, a_);
+      out_s += a_;
+      return;
+    }
+    t_ = cos_.cwiseProduct(vs);
+    xs_->Apply(t_, a_);
+    ss_->Apply(t_, b_);
+    out_x += a_.cwiseProduct(cos_);
+    out_s += b_.cwiseProduct(cos_);
+    t_ = sin_.cwiseProduct(vs);
+    xs_->Apply(t_, a_);
+    ss_->Apply(t_, b_);
+    out_x += a_.cwiseProduct(sin_);
+    out_s += b_.cwiseProduct(sin_);
     return;
   }
-  t_ = cos_.cwiseProduct(vs);
-  xs_->Apply(t_, a_);
-  ss_->Apply(t_, b_);
-  out_x += a_.cwiseProduct(cos_);
-  out_s += b_.cwiseProduct(cos_);
-  t_ = sin_.cwiseProduct(vs);
-  xs_->Apply(t_, a_);
-  ss_->Apply(t_, b_);
-  out_x += a_.cwiseProduct(sin_);
-  out_s += b_.cwiseProduct(sin_);
+  // FFT: the spectra of the inputs once, products summed in the spectral domain where the weights allow
+  if (fx_.size() == 0) {
+    fx_ = xx_->NewSpectrum();
+    fs_ = xx_->NewSpectrum();
+    acc_x_ = xx_->NewSpectrum();
+    acc_s_ = xx_->NewSpectrum();
+  }
+  xx_->Forward(vx, fx_);
+  if (!corrected_) {
+    xs_->Forward(vs, fs_);
+    xx_->MultiplyAdd(fx_, 1.0, acc_x_, true);
+    xs_->MultiplyAdd(fs_, 1.0, acc_x_, false);
+    xs_->MultiplyAdd(fx_, 1.0, acc_s_, true);
+    ss_->MultiplyAdd(fs_, 1.0, acc_s_, false);
+    xx_->Inverse(acc_x_, out_x);
+    xx_->Inverse(acc_s_, out_s);
+    return;
+  }
+  xx_->MultiplyAdd(fx_, 1.0, acc_x_, true);
+  xs_->MultiplyAdd(fx_, 1.0, acc_s_, true);
+  xx_->Inverse(acc_x_, out_x);
+  xx_->Inverse(acc_s_, out_s);
+  for (int part = 0; part < 2; ++part) {  // cos and sin parts of cos(alpha_J - alpha_I)
+    const Eigen::VectorXd& weight = part == 0 ? cos_ : sin_;
+    t_ = weight.cwiseProduct(vs);
+    xs_->Forward(t_, fs_);
+    xs_->MultiplyAdd(fs_, 1.0, acc_x_, true);
+    ss_->MultiplyAdd(fs_, 1.0, acc_s_, true);
+    xx_->Inverse(acc_x_, a_);
+    xx_->Inverse(acc_s_, b_);
+    out_x += a_.cwiseProduct(weight);
+    out_s += b_.cwiseProduct(weight);
+  }
 }
 
 void SteadyRollingOperator::AddColumnChange(int j, const std::vector<double>& dvx, const std::vector<double>& dvs,

@@ -44,6 +44,7 @@ class SteadyRollingOperator {
   std::vector<double> line_xx_, line_ss_;
   Eigen::MatrixXd axx_, axs_, ass_;  // A tables, (2nx-1) x (2ns-1), offsets (di + nx - 1, dj + ns - 1)
   Eigen::VectorXd a_, b_, t_;  // scratch
+  bem_detail::Convolution::Spectrum fx_, fs_, acc_x_, acc_s_;  // scratch (FFT path)
 };
 
 }  // namespace exact_detail

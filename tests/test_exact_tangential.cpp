@@ -183,9 +183,10 @@ TEST(ExactTangential, FullSlipCarriesMuTimesLoad) {
   // the traction opposes the slip everywhere
   for (int j = 0; j < s.tangential.state.cols(); ++j)
     for (int i = 0; i < s.tangential.state.rows(); ++i)
-      if (s.tangential.state(i, j) == 2)
+      if (s.tangential.state(i, j) == 2) {
         EXPECT_LT(s.tangential.px_Pa(i, j) * s.tangential.sx(i, j) + s.tangential.ps_Pa(i, j) * s.tangential.ss(i, j),
                   0.0);
+      }
 }
 
 // Carter (1926; Johnson 1985 §8.2): a long cylinder, F'/(mu P') = 1 - (1 - xi/xi_s)^2 with xi_s = mu a / R, on the

@@ -1,6 +1,7 @@
-// The `reference` model (BEM normal solve on the 0.2 mm grid, wheel load control, docs/physics-reference.md §10.4)
-// for one wheel, as `conforma contact --model reference --side left --json` solves it (rigid equilibrium pose, 10 kN,
-// V = 2 m/s, the CLI's track defaults):
+// The `exact` model for one wheel, as `conforma contact --model exact --side left --json` solves it (rigid
+// equilibrium pose, 10 kN, V = 2 m/s, the CLI's track defaults): BM_ExactWheel the whole solve (BEM normal problem on
+// the 0.2 mm grid with the wheel load control, docs/physics-reference.md §10.4, then the exact steady-rolling
+// tangential problem, §14), BM_ExactWheelNormal the normal part alone:
 //   tread:   S1002 / 60E1 at 1:40, y = 0                          (Manchester tread case)
 //   flange:  S1002 / 60E1 at 1:40, y = 7 mm, yaw = 16.8 mrad      (flange contact)
 //   worn:    worn_high_mileage.prw / site_b_hr.prr, inclination 0, y = 15.5 mm (worn pair)
@@ -47,7 +48,7 @@ const WheelsetTrackGeometry& WornPair() {
   return *g;
 }
 
-void BM_ReferenceWheel(benchmark::State& state, bool worn, double y_mm, double yaw_mrad) {
+void BM_ExactWheel(benchmark::State& state, bool worn, double y_mm, double yaw_mrad, bool tangential) {
   const WheelsetTrackGeometry& geometry = worn ? WornPair() : NewPair();
   const EquilibriumResult eq = geometry.SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3);
   if (eq.status == EquilibriumStatus::NoContact) {
@@ -57,7 +58,8 @@ void BM_ReferenceWheel(benchmark::State& state, bool worn, double y_mm, double y
   const double r0 = geometry.setup().nominal_radius_m[0];
   const WheelsetVelocity velocity{2.0, 0.0, 0.0, 2.0 / r0};
   WheelContactOptions options;
-  options.model = ContactModel::Reference;
+  options.model = ContactModel::Exact;
+  options.solve_tangential = tangential;
   WheelContactReport report;
   for (auto _ : state) {
     report = SolveWheelContact(geometry, Side::Left, eq.pose, velocity, options);
@@ -66,10 +68,21 @@ void BM_ReferenceWheel(benchmark::State& state, bool worn, double y_mm, double y
   state.counters["load_iterations"] = report.load_iterations;
   state.counters["patches"] = static_cast<double>(report.patches.size());
   state.counters["pmax_MPa"] = report.patches.empty() ? 0.0 : report.patches.front().pmax_Pa * 1e-6;
+  state.counters["fx_N"] = report.patches.empty() ? 0.0 : report.patches.front().fx_N;
 }
 
-BENCHMARK_CAPTURE(BM_ReferenceWheel, tread, false, 0.0, 0.0)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_ReferenceWheel, flange, false, 7.0, 16.8)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_ReferenceWheel, worn, true, 15.5, 0.0)->Unit(benchmark::kMillisecond);
+void BM_ExactWheelNormal(benchmark::State& state, bool worn, double y_mm, double yaw_mrad) {
+  BM_ExactWheel(state, worn, y_mm, yaw_mrad, false);
+}
+void BM_ExactWheelFull(benchmark::State& state, bool worn, double y_mm, double yaw_mrad) {
+  BM_ExactWheel(state, worn, y_mm, yaw_mrad, true);
+}
+
+BENCHMARK_CAPTURE(BM_ExactWheelFull, tread, false, 0.0, 0.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactWheelFull, flange, false, 7.0, 16.8)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactWheelFull, worn, true, 15.5, 0.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactWheelNormal, tread, false, 0.0, 0.0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactWheelNormal, flange, false, 7.0, 16.8)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_ExactWheelNormal, worn, true, 15.5, 0.0)->Unit(benchmark::kMillisecond);
 
 }  // namespace
