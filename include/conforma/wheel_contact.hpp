@@ -60,10 +60,10 @@ struct PatchReport {
   // Pa, Pa, m^2: maximum pressure, the model's p0 (patch_solver.hpp), contact area (KP models: on the curved surface)
   double pmax_Pa = 0.0, p0_Pa = 0.0, area_m2 = 0.0;
   // m: Hertz semi-axes (hertz), or the SDEC of the KP patch (kp, kpec, conformal; only when the tangential problem
-  // was solved, else 0); 0 for the reference model
+  // was solved, else 0); 0 for the exact model
   double a_m = 0.0, b_m = 0.0;
   double width_m = 0.0, length_m = 0.0;      // extent along s^r and along x^r, m
-  // Approach of this patch along its reference normal, m. KP models: the solved one. hertz and reference: the rigid
+  // Approach of this patch along its reference normal, m. KP models: the solved one. hertz and exact: the rigid
   // approach at the candidates' pose (load control: the Hertz push-down), without the load control's last push.
   double approach_m = 0.0;
   double contact_angle_rad = 0.0;            // + towards the gauge side (geometry.hpp)
@@ -76,11 +76,16 @@ struct PatchReport {
   // the wheelset velocities (creepage.hpp)
   double xi = 0.0, eta = 0.0, phi_per_m = 0.0;
   double alpha_c_deg = 0.0;                  // conformity index (paper 003 eq. 13), deg; 0 for the hertz model
-  bool is_conformal = false;                 // alpha_c_deg > conformity_threshold_deg (KP and reference models)
+  bool is_conformal = false;                 // alpha_c_deg > conformity_threshold_deg (KP and exact models)
   // m^2, m^2, W; frictional_power_W = sum |traction . slip| V dA over the cells at the forward speed V
   double adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
   double vertical_force_N = 0.0, lateral_force_N = 0.0;  // normal + tangential force on the wheel, side frame, N
   double reference_s_on_rail_m = 0.0;        // arc length of the reference point on the mounted rail, m
+  // exact model: the convergence of its two iterative solves (0 for the other models): conjugate-gradient iterations
+  // and last relative pressure change of the BEM normal solve at the final approach (BemResult), Gauss-Seidel sweeps
+  // and last relative traction change of the tangential solve (ExactTangentialResult)
+  int normal_iterations = 0, tangential_iterations = 0;
+  double normal_residual = 0.0, tangential_residual = 0.0;
   // Only with WheelContactOptions::keep_fields and a solved tangential problem
   std::vector<ContactCell> cells;
 };

@@ -74,6 +74,10 @@ void VisitPatchFields(const PatchReport& p, Visitor&& v) {
   v("lateral_force_N", p.lateral_force_N);
   v("model", to_string(p.model));
   v("auto_alpha_c_deg", p.auto_alpha_c_deg);
+  v("normal_iterations", p.normal_iterations);
+  v("normal_residual", p.normal_residual);
+  v("tangential_iterations", p.tangential_iterations);
+  v("tangential_residual", p.tangential_residual);
 }
 // PatchReport members that VisitPatchFields leaves out on purpose (not in the JSON or the Python dict): the
 // per-cell fields (`cells`, written by their own code) and reference_s_on_rail_m (internal; the stress runner

@@ -76,6 +76,10 @@ class _PatchScalars(TypedDict):
     lateral_force_N: float
     model: str
     auto_alpha_c_deg: float
+    normal_iterations: int              # exact model: BEM conjugate-gradient iterations (0 otherwise)
+    normal_residual: float              # exact model: last relative pressure change of the BEM solve
+    tangential_iterations: int          # exact model: Gauss-Seidel sweeps of the tangential solve
+    tangential_residual: float          # exact model: last relative traction change
     force_track_N: List[float]          # [x, y, z] on the wheel, track frame, N
     contact_point_track_m: List[float]  # [x, y, z], track frame, m
 

@@ -347,6 +347,8 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
     p.b_m = s.b_m;
     p.alpha_c_deg = s.alpha_c_deg;
     p.is_conformal = s.is_conformal;
+    p.normal_iterations = s.bem.iterations;
+    p.normal_residual = s.bem.residual;
     p.contact_angle_rad = hertz ? point.contact_angle_rad : c.patch.contact_angle_rad;
     p.y_contact_rail_m = hertz ? point.rail_profile_m.x() : c.patch.reference_point_m.x();
     p.z_contact_rail_m = hertz ? point.rail_profile_m.y() : c.patch.reference_point_m.y();
@@ -392,6 +394,8 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
         p.adhesion_area_m2 = t.adhesion_area_m2;
         p.slip_area_m2 = t.slip_area_m2;
         p.frictional_power_W = t.frictional_power_W;
+        p.tangential_iterations = t.iterations;
+        p.tangential_residual = t.residual;
         if (options.keep_fields) {
           const ProfileMapping map(geometry.mounted_rail(side), hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m,
                                    point.wheel_profile_m.x());
