@@ -6,6 +6,10 @@
 
 namespace conforma {
 
+namespace {
+constexpr double kSpinOffset = 1.0 / 6.0;  // CONTACT's facphi: the spin slip at x + dx/6 in steady rolling
+}  // namespace
+
 RigidSlipField RigidSlipFromColumnCreepages(const BemGrid& grid, const std::vector<FastsimCreepages>& per_column,
                                             double spin_origin_x_m, double spin_origin_s_m) {
   grid.validate();
@@ -24,9 +28,10 @@ RigidSlipField RigidSlipFromColumnCreepages(const BemGrid& grid, const std::vect
     require_finite(c.phi_per_m, "creepage phi");
     const double y = grid.s_centre_m(j) - spin_origin_s_m;
     for (int i = 0; i < grid.nx; ++i) {
-      // w = (xi - phi y, eta + phi x)   (Kalker's rigid slip; fastsim.hpp)
+      // w = (xi - phi y, eta + phi x)   (Kalker's rigid slip; fastsim.hpp), with the spin term at x + dx/6 as CONTACT
+      // evaluates it in steady rolling (m_sdis.f90 set_tang_rhs, facphi = 1/6 [V-code]; docs/physics-reference.md §14.1)
       w.wx(i, j) = c.xi - c.phi_per_m * y;
-      w.ws(i, j) = c.eta + c.phi_per_m * (grid.x_centre_m(i) - spin_origin_x_m);
+      w.ws(i, j) = c.eta + c.phi_per_m * (grid.x_centre_m(i) + kSpinOffset * grid.dx_m - spin_origin_x_m);
     }
   }
   return w;

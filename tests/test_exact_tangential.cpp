@@ -91,8 +91,9 @@ Solved SolveRow(const CreepRow& r, int n, const FastsimCreepages& creepages, dou
 
 FastsimCreepages CreepagesOf(const CreepRow& r) { return FastsimCreepages{r.xi, r.eta, r.phi_per_m}; }
 
-// CONTACT's exact theory at the same grid: Fx, Fy within 1 %, Mz within 5 % (or 200 N mm where small), pmax = Hertz
-// within 0.1 %.
+// CONTACT's exact theory at the same grid. Issue 14 asks Fx, Fy within 1 %, Mz within 5 % (or 200 N mm where small),
+// pmax = Hertz within 0.1 %; with CONTACT's discretisation (§14.1) the forces agree to CONTACT's 4 printed digits, so
+// the test holds them to 0.2 % (Fx, Fy) and 0.5 % (Mz).
 TEST(ExactTangential, HertzCreepCasesAgainstContact) {
   const std::vector<CreepRow> rows = ReadExactRows();
   ASSERT_EQ(rows.size(), 20u);
@@ -105,9 +106,9 @@ TEST(ExactTangential, HertzCreepCasesAgainstContact) {
                 s.normal.max_pressure_Pa * 1e-6, r.pmax_hertz_Pa * 1e-6, t.sweeps,
                 static_cast<int>((t.state.array() == 1).count()), static_cast<int>((t.state.array() == 2).count()));
     ASSERT_EQ(t.status, ExactTangentialStatus::Converged);
-    EXPECT_NEAR(t.fx_N, r.fx_N, 0.01 * std::fabs(r.fx_N));
-    EXPECT_NEAR(t.fy_N, r.fy_N, 0.01 * std::fabs(r.fy_N));
-    EXPECT_NEAR(t.mz_Nm, r.mz_Nm, std::max(0.05 * std::fabs(r.mz_Nm), 0.2));
+    EXPECT_NEAR(t.fx_N, r.fx_N, 0.002 * std::fabs(r.fx_N));
+    EXPECT_NEAR(t.fy_N, r.fy_N, 0.002 * std::fabs(r.fy_N));
+    EXPECT_NEAR(t.mz_Nm, r.mz_Nm, std::max(0.005 * std::fabs(r.mz_Nm), 0.2));
     EXPECT_NEAR(s.normal.max_pressure_Pa, r.pmax_hertz_Pa, 1e-3 * r.pmax_hertz_Pa);
   }
 }
@@ -263,6 +264,49 @@ TEST(ExactTangential, RejectsBadInput) {
   const ExactTangentialResult none = SolveExactTangential(grid, Eigen::MatrixXd::Zero(8, 8), w, m, ExactTangentialOptions{});
   EXPECT_EQ(none.status, ExactTangentialStatus::NoContact);
   EXPECT_EQ(none.fx_N, 0.0);
+}
+
+}  // namespace
+}  // namespace conforma
+
+#include "conforma/hertz.hpp"
+
+namespace conforma {
+namespace {
+
+// CONTACT's FASTSIM example solved with its exact theory (reference/contact_basic_cases.csv, row "exact", 44 x 44
+// grid): Hertzian patch a = 8 mm, b = 4 mm, Fn = 82 kN, xi = 0, eta = -0.000625, phi = 0.000625 rad/mm, mu = 0.3,
+// G = 82 GPa, nu = 0.28: Fy = -14940 N within 1 %, Mz = -48210 N mm within 3 %.
+TEST(ExactTangential, BasicCaseAgainstContact) {
+  Material m;
+  const double a = 8e-3, b = 4e-3, fn = 82e3;
+  // the gap curvatures of that ellipse: B/A by bisection on a/b, then A from a ~ A^(-1/3) at fixed B/A
+  double lo = 1.0, hi = 20.0;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const HertzResult h = SolveHertzForLoad(1.0, mid, fn, m);
+    (h.a_m / h.b_m < a / b ? lo : hi) = mid;
+  }
+  const double ratio = 0.5 * (lo + hi);
+  const HertzResult unit = SolveHertzForLoad(1.0, ratio, fn, m);
+  const double A = std::pow(unit.a_m / a, 3.0);
+  const HertzResult h = SolveHertzForLoad(A, ratio * A, fn, m);
+  ASSERT_NEAR(h.a_m, a, 1e-9);
+  ASSERT_NEAR(h.b_m, b, 1e-9);
+  const BemGrid grid = QuadraticGapGrid(A, ratio * A, 44, 44, a, b);
+  BemOptions bo;
+  bo.normal_force_N = fn;
+  const BemResult normal = SolveBemNormal(grid, m, bo);
+  ExactTangentialOptions to;
+  to.tolerance = 1e-8;
+  const ExactTangentialResult t = SolveExactTangential(
+      grid, normal.pressure_Pa, RigidSlipFromCreepages(grid, {0.0, -0.000625, 0.000625e3}), m, to);
+  ASSERT_EQ(t.status, ExactTangentialStatus::Converged);
+  std::printf("basic case: Fy %.0f N (CONTACT -14940), Mz %.0f N mm (-48210), pmax %.1f MPa (1223)\n", t.fy_N,
+              t.mz_Nm * 1e3, normal.max_pressure_Pa * 1e-6);
+  EXPECT_NEAR(t.fy_N, -14940.0, 0.01 * 14940.0);
+  EXPECT_NEAR(t.mz_Nm, -48.210, 0.03 * 48.210);
+  EXPECT_LT(std::fabs(t.fx_N), 1e-3 * 14940.0);  // no longitudinal creepage: Fx = 0 by symmetry
 }
 
 }  // namespace
