@@ -311,3 +311,67 @@ TEST(ExactTangential, BasicCaseAgainstContact) {
 
 }  // namespace
 }  // namespace conforma
+
+#include <thread>
+
+namespace conforma {
+namespace {
+
+// Slip-dependent friction (§14.3): at convergence every slip element carries |p| = mu(|s|) p_n with its own slip, every
+// adhesion element |p| <= mu(0) p_n; a falling law lowers the force below the constant-mu one at the same creepage.
+TEST(ExactTangential, SlipDependentFrictionBound) {
+  const CreepRow r = UnitRatioRow();
+  Material m;
+  const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, 30, 30, r.a_m, r.b_m);
+  BemOptions bo;
+  bo.normal_force_N = r.fn_N;
+  const BemResult normal = SolveBemNormal(grid, m, bo);
+  const RigidSlipField w = RigidSlipFromCreepages(grid, {0.002, 0.0, 0.0});
+  ExactTangentialOptions constant;
+  constant.tolerance = 1e-9;
+  ExactTangentialOptions falling = constant;
+  auto mu = [](double gamma) { return 0.3 * (0.4 + 0.6 * std::exp(-300.0 * gamma)); };  // paper 002 eq. 6 form
+  falling.friction = mu;
+  const ExactTangentialResult c = SolveExactTangential(grid, normal.pressure_Pa, w, m, constant);
+  const ExactTangentialResult f = SolveExactTangential(grid, normal.pressure_Pa, w, m, falling);
+  ASSERT_EQ(f.status, ExactTangentialStatus::Converged);
+  int slipping = 0;
+  for (int j = 0; j < grid.ns; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double p = std::hypot(f.px_Pa(i, j), f.ps_Pa(i, j)), pn = normal.pressure_Pa(i, j);
+      if (f.state(i, j) == 2) {
+        ++slipping;
+        EXPECT_NEAR(p, mu(std::hypot(f.sx(i, j), f.ss(i, j))) * pn, 1e-6 * 0.3 * pn);
+      } else if (f.state(i, j) == 1) {
+        EXPECT_LE(p, mu(0.0) * pn * (1.0 + 1e-12));
+      }
+    }
+  EXPECT_GT(slipping, 0);
+  std::printf("falling friction: Fx %.1f N (constant mu %.1f N)\n", f.fx_N, c.fx_N);
+  EXPECT_LT(std::fabs(f.fx_N), std::fabs(c.fx_N));
+}
+
+// Thread safety: concurrent solves give the single-thread answer bit for bit.
+TEST(ExactTangential, ConcurrentSolvesAreIdentical) {
+  const CreepRow r = UnitRatioRow();
+  Material m;
+  const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, 24, 24, r.a_m, r.b_m);
+  BemOptions bo;
+  bo.normal_force_N = r.fn_N;
+  const BemResult normal = SolveBemNormal(grid, m, bo);
+  const RigidSlipField w = RigidSlipFromCreepages(grid, CreepagesOf(r));
+  const ExactTangentialResult alone = SolveExactTangential(grid, normal.pressure_Pa, w, m, {});
+  std::vector<ExactTangentialResult> results(4);
+  std::vector<std::thread> threads;
+  for (auto& result : results)
+    threads.emplace_back([&] { result = SolveExactTangential(grid, normal.pressure_Pa, w, m, {}); });
+  for (auto& t : threads) t.join();
+  for (const auto& result : results) {
+    EXPECT_EQ(result.fx_N, alone.fx_N);
+    EXPECT_EQ(result.fy_N, alone.fy_N);
+    EXPECT_TRUE(result.px_Pa == alone.px_Pa);
+  }
+}
+
+}  // namespace
+}  // namespace conforma
