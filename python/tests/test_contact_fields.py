@@ -12,7 +12,7 @@ def track():
     return conforma.Track("S1002", "60E1")
 
 
-@pytest.mark.parametrize("model", ["hertz", "kp", "conformal"])
+@pytest.mark.parametrize("model", ["hertz", "kp", "conformal", "exact"])
 def test_fields_integrate_to_the_patch_forces(track, model):
     wheels = conforma.contact(track, lateral_m=3e-3, yaw_rad=2e-3, model=model, speed_m_s=20.0)
     assert [w["side"] for w in wheels] == ["left", "right"]
@@ -77,3 +77,15 @@ def test_manchester_runner_carries_the_load(shared_data):
     for r in rows:
         assert r["status"] == "ok"
         assert abs(r["err_fn"]) < 0.05  # 10 kN vertical load vs CONTACT's normal force (contact angle)
+
+
+def test_exact_model_reports_the_convergence_of_both_solves(track):
+    left = conforma.contact(track, lateral_m=3e-3, yaw_rad=2e-3, model="exact", side="left", fields=False)[0]
+    assert left["status"] == "ok"
+    for p in left["patches"]:
+        assert p["model"] == "exact" and p["tangential_status"] in ("ok", "full_slip")
+        assert p["normal_iterations"] > 0 and 0.0 <= p["normal_residual"] < 1e-6
+        assert p["tangential_iterations"] > 0 and 0.0 <= p["tangential_residual"] < 1e-5
+    # the former name of the model is accepted and gives the same solution
+    again = conforma.contact(track, lateral_m=3e-3, yaw_rad=2e-3, model="reference", side="left", fields=False)[0]
+    assert again["patches"][0]["fx_N"] == left["patches"][0]["fx_N"]
