@@ -63,7 +63,7 @@ RAILS = [
     ("data:profiles/analytic/60E1_UIC60_head_analytic.csv", []),
 ]
 BUILT_IN_RAILS = ["60E1", "54E1", "50E6", "50E4", "UIC60"]
-MODELS = ["hertz", "kp", "kpec", "conformal", "auto", "reference", "hertz", "kp"]
+MODELS = ["hertz", "kp", "kpec", "conformal", "auto", "exact", "reference", "hertz", "kp"]
 NORMAL_COMPLETE = {"ok", "hertz_regularised"}
 TANGENTIAL_COMPLETE = {"ok", "full_slip", "no_creepage", "not_solved"}
 NUMBER = re.compile(r"[-+]?(\d+\.\d*|\.\d+|\d+)([eE][-+]?\d+)?")
