@@ -290,11 +290,13 @@ InfluenceOperator::InfluenceOperator(const BemGrid& grid, const ElasticConstants
   // periodic table of the padded grid for the preconditioner (offsets up to half the padded size).
   const int px = Convolution::PaddedSize(nx_), ps = Convolution::PaddedSize(ns_);
   const int hx = use_fft ? std::max(nx_ - 1, px / 2) : nx_ - 1, hs = use_fft ? std::max(ns_ - 1, ps / 2) : ns_ - 1;
+  // A_nn is even in both offsets (§10.2): one quadrant is evaluated and mirrored.
   Eigen::MatrixXd table(2 * hx + 1, 2 * hs + 1);
-  for (int dj = -hs; dj <= hs; ++dj)
-    for (int di = -hx; di <= hx; ++di)
-      table(di + hx, dj + hs) =
-          RectangleNormalInfluence(di * grid.dx_m, dj * grid.ds_m, grid.dx_m, grid.ds_m, elastic);  // §10.2
+  for (int dj = 0; dj <= hs; ++dj)
+    for (int di = 0; di <= hx; ++di) {
+      const double a = RectangleNormalInfluence(di * grid.dx_m, dj * grid.ds_m, grid.dx_m, grid.ds_m, elastic);
+      table(hx + di, hs + dj) = table(hx - di, hs + dj) = table(hx + di, hs - dj) = table(hx - di, hs - dj) = a;
+    }
   self_coefficient_ = table(hx, hs);
   normal_.emplace(table.block(hx - (nx_ - 1), hs - (ns_ - 1), 2 * nx_ - 1, 2 * ns_ - 1), nx_, ns_, use_fft);
   if (use_fft) {
