@@ -18,7 +18,8 @@ namespace bem_detail {
 // zero-padded field, done as 1-D transforms so that the rows along x that are all padding (forward) or not needed
 // (inverse) are skipped; the plans are made with FFTW_ESTIMATE (deterministic: no timing-dependent plan choice) under
 // one process-wide mutex, because FFTW's planner is not thread-safe (executing a plan on new arrays is).
-// Owns FFTW plans and buffers: not copyable, movable (usable inside std::optional).
+// Owns FFTW plans and work buffers: not copyable, movable (usable inside std::optional); one object is used by one
+// thread at a time (distinct objects may be used concurrently).
 class Convolution {
  public:
   // kernel(di + nx - 1, dj + ns - 1) = K(di, dj), a (2nx-1) x (2ns-1) table.
