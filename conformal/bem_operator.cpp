@@ -131,7 +131,7 @@ Convolution::~Convolution() { Release(); }
 Convolution::Convolution(Convolution&& other) noexcept
     : nx_(other.nx_), ns_(other.ns_), px_(other.px_), ps_(other.ps_), use_fft_(other.use_fft_),
       kernel_(std::move(other.kernel_)), kernel_spectrum_(other.kernel_spectrum_), real_(other.real_),
-      spectrum_(other.spectrum_) {
+      spectrum_(other.spectrum_), inverse_spectrum_(std::move(other.inverse_spectrum_)) {
   for (int k = 0; k < kPlans; ++k) {
     plans_[k] = other.plans_[k];
     other.plans_[k] = nullptr;
@@ -146,6 +146,7 @@ Convolution& Convolution::operator=(Convolution&& other) noexcept {
     Release();
     nx_ = other.nx_; ns_ = other.ns_; px_ = other.px_; ps_ = other.ps_; use_fft_ = other.use_fft_;
     kernel_ = std::move(other.kernel_);
+    inverse_spectrum_ = std::move(other.inverse_spectrum_);
     std::swap(kernel_spectrum_, other.kernel_spectrum_);
     std::swap(real_, other.real_);
     std::swap(spectrum_, other.spectrum_);
@@ -197,6 +198,47 @@ void Convolution::StoreWindow(Eigen::VectorXd& out) const {
     std::copy(real_ + px * j, real_ + px * j + nx_, out.data() + static_cast<long>(nx_) * j);
 }
 
+int Convolution::PaddedSize(int n) { return GoodFftSize(2 * n - 1); }
+
+void Convolution::SetCirculantPreconditioner(const Eigen::MatrixXd& periodic) {
+  if (!use_fft_) return;
+  const size_t n = ComplexSize();
+  Spectrum spectrum(n);
+  std::copy(periodic.data(), periodic.data() + static_cast<long>(px_) * ps_, real_);  // column-major = i + px j
+  fftw_plan full;
+  {
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    full = fftw_plan_dft_r2c_2d(ps_, px_, real_, AsFftw(spectrum.data()), FFTW_ESTIMATE);
+  }
+  if (!full) throw std::runtime_error("FFTW: plan creation failed");
+  fftw_execute(full);
+  {
+    std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    fftw_destroy_plan(full);
+  }
+  // The periodic table of an even, positive definite kernel has a real, positive spectrum (the sampled symbol
+  // ~ 1/|xi| of the half-space); floored at 1e-6 of its largest value against rounding.
+  double largest = 0.0;
+  for (size_t k = 0; k < n; ++k) largest = std::max(largest, spectrum.data()[k].real());
+  const double total = static_cast<double>(px_) * ps_;
+  inverse_spectrum_.resize(n);
+  for (size_t k = 0; k < n; ++k)
+    inverse_spectrum_[k] = 1.0 / (total * std::max(spectrum.data()[k].real(), 1e-6 * largest));
+}
+
+void Convolution::ApplyCirculantInverse(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+  if (inverse_spectrum_.empty()) {  // no preconditioner: the identity
+    out = in;
+    return;
+  }
+  LoadPadded(in);
+  ForwardTransform(spectrum_);
+  const size_t n = ComplexSize();
+  for (size_t k = 0; k < n; ++k) spectrum_[k] *= inverse_spectrum_[k];
+  InverseTransform(spectrum_);
+  StoreWindow(out);
+}
+
 Convolution::Spectrum::Spectrum(size_t size)
     : data_(reinterpret_cast<std::complex<double>*>(fftw_malloc(sizeof(fftw_complex) * size))), size_(size) {
   if (!data_) throw std::bad_alloc();
@@ -244,13 +286,26 @@ void Convolution::Inverse(Spectrum& in, Eigen::VectorXd& out) {
 InfluenceOperator::InfluenceOperator(const BemGrid& grid, const ElasticConstants& elastic,
                                      BemInfluence influence, ConformalCoupling coupling, bool use_fft)
     : nx_(grid.nx), ns_(grid.ns) {
-  Eigen::MatrixXd normal(2 * nx_ - 1, 2 * ns_ - 1);
-  for (int dj = -(ns_ - 1); dj <= ns_ - 1; ++dj)
-    for (int di = -(nx_ - 1); di <= nx_ - 1; ++di)
-      normal(di + nx_ - 1, dj + ns_ - 1) =
-          RectangleNormalInfluence(di * grid.dx_m, dj * grid.ds_m, grid.dx_m, grid.ds_m, elastic);  // §10.2
-  self_coefficient_ = normal(nx_ - 1, ns_ - 1);
-  normal_.emplace(normal, nx_, ns_, use_fft);
+  // A_nn on the offsets |di| <= hx, |dj| <= hs: the (2nx-1) x (2ns-1) table of the operator and, with the FFT, the
+  // periodic table of the padded grid for the preconditioner (offsets up to half the padded size).
+  const int px = Convolution::PaddedSize(nx_), ps = Convolution::PaddedSize(ns_);
+  const int hx = use_fft ? std::max(nx_ - 1, px / 2) : nx_ - 1, hs = use_fft ? std::max(ns_ - 1, ps / 2) : ns_ - 1;
+  // A_nn is even in both offsets (§10.2): one quadrant is evaluated and mirrored.
+  Eigen::MatrixXd table(2 * hx + 1, 2 * hs + 1);
+  for (int dj = 0; dj <= hs; ++dj)
+    for (int di = 0; di <= hx; ++di) {
+      const double a = RectangleNormalInfluence(di * grid.dx_m, dj * grid.ds_m, grid.dx_m, grid.ds_m, elastic);
+      table(hx + di, hs + dj) = table(hx - di, hs + dj) = table(hx + di, hs - dj) = table(hx - di, hs - dj) = a;
+    }
+  self_coefficient_ = table(hx, hs);
+  normal_.emplace(table.block(hx - (nx_ - 1), hs - (ns_ - 1), 2 * nx_ - 1, 2 * ns_ - 1), nx_, ns_, use_fft);
+  if (use_fft) {
+    Eigen::MatrixXd periodic(px, ps);
+    for (int b = 0; b < ps; ++b)
+      for (int a = 0; a < px; ++a)
+        periodic(a, b) = table((a <= px / 2 ? a : a - px) + hx, (b <= ps / 2 ? b : b - ps) + hs);
+    normal_->SetCirculantPreconditioner(periodic);
+  }
 
   bool any_rotation = false;
   for (int j = 0; j < ns_; ++j) any_rotation = any_rotation || grid.alpha(j) != 0.0;

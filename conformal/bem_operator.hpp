@@ -18,7 +18,8 @@ namespace bem_detail {
 // zero-padded field, done as 1-D transforms so that the rows along x that are all padding (forward) or not needed
 // (inverse) are skipped; the plans are made with FFTW_ESTIMATE (deterministic: no timing-dependent plan choice) under
 // one process-wide mutex, because FFTW's planner is not thread-safe (executing a plan on new arrays is).
-// Owns FFTW plans and buffers: not copyable, movable (usable inside std::optional).
+// Owns FFTW plans and work buffers: not copyable, movable (usable inside std::optional); one object is used by one
+// thread at a time (distinct objects may be used concurrently).
 class Convolution {
  public:
   // kernel(di + nx - 1, dj + ns - 1) = K(di, dj), a (2nx-1) x (2ns-1) table.
@@ -55,6 +56,15 @@ class Convolution {
   void Forward(const Eigen::VectorXd& in, Spectrum& out);       // out = F(in) (in: nx ns values)
   void MultiplyAdd(const Spectrum& in, double sign, Spectrum& acc, bool overwrite) const;  // acc (=|+=) sign K^ in
   void Inverse(Spectrum& in, Eigen::VectorXd& out);             // out = window of F^-1(in); destroys in
+  // Padded transform size per direction for n elements (>= 2n - 1).
+  static int PaddedSize(int n);
+  // Preconditioner (FFT path): `periodic` is the kernel on the padded grid, PaddedSize(nx) x PaddedSize(ns), as a
+  // periodic table, periodic(a, b) = K(a or a - px, b or b - ps) (offsets up to half the padded size). Its circulant
+  // is symmetric positive definite for a positive definite kernel (unlike the zero-padded table's, whose spectrum
+  // has small negative values). ApplyCirculantInverse: out = window of F^-1(F(in) / F(periodic)) of the zero-padded
+  // in, the identity before SetCirculantPreconditioner.
+  void SetCirculantPreconditioner(const Eigen::MatrixXd& periodic);
+  void ApplyCirculantInverse(const Eigen::VectorXd& in, Eigen::VectorXd& out);
 
  private:
   void Release();
@@ -69,6 +79,7 @@ class Convolution {
   std::complex<double>* kernel_spectrum_ = nullptr;  // ps x (px/2+1), scaled by 1 / (px ps)
   double* real_ = nullptr;                           // ps x px padded field (x contiguous)
   std::complex<double>* spectrum_ = nullptr;         // ps x (px/2+1)
+  std::vector<double> inverse_spectrum_;             // 1 / (N F(periodic)), SetCirculantPreconditioner
   // fftw_plans of the pruned 2-D transforms: r2c along x of the ns data rows, c2c along s of every column
   // (forward), c2c along s, c2r along x of the ns output rows (inverse)
   enum Plan { kForwardX, kForwardS, kBackwardS, kBackwardX, kPlans };
@@ -81,6 +92,9 @@ class InfluenceOperator {
                     ConformalCoupling coupling, bool use_fft);
   void Apply(const Eigen::VectorXd& pressure, Eigen::VectorXd& displacement);
   double self_coefficient() const { return self_coefficient_; }
+  bool has_preconditioner() const { return normal_->uses_fft(); }
+  // The circulant inverse of A_nn (Convolution::ApplyCirculantInverse): a preconditioner of the operator.
+  void ApplyPreconditioner(const Eigen::VectorXd& in, Eigen::VectorXd& out) { normal_->ApplyCirculantInverse(in, out); }
 
  private:
   int nx_, ns_;

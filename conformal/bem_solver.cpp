@@ -28,6 +28,14 @@ class ScaledProblem {
     op_.Apply(scratch_, out);
     out = out.cwiseQuotient(weight_);
   }
+  // z = W P^-1 W g with P^-1 the circulant inverse of A_nn: a preconditioner of W^-1 C W^-1 (C ~ A_nn for small
+  // alpha differences); the identity without an FFT operator.
+  bool has_preconditioner() const { return op_.has_preconditioner(); }
+  void Precondition(const Eigen::VectorXd& g, Eigen::VectorXd& z) {
+    scratch_ = g.cwiseProduct(weight_);
+    op_.ApplyPreconditioner(scratch_, z);
+    z = z.cwiseProduct(weight_);
+  }
   const Eigen::VectorXd& gap() const { return gap_; }  // h / w
   const Eigen::VectorXd& weight() const { return weight_; }
 
@@ -53,9 +61,10 @@ CoreSolution SolveForForce(ScaledProblem& problem, double force, double area, do
     sol.q = *warm_start * (force / (area * warm_start->sum()));
   else
     sol.q = Eigen::VectorXd::Constant(n, force / (area * static_cast<double>(n)));
-  Eigen::VectorXd g, t = Eigen::VectorXd::Zero(n), r, q_old;
+  Eigen::VectorXd g, t = Eigen::VectorXd::Zero(n), r, q_old, z, masked(n);
   double g_old = 1.0;
   bool conjugate = false;
+  const bool preconditioned = problem.has_preconditioner();
   for (int it = 1; it <= max_iterations; ++it) {
     sol.iterations = it;
     problem.Apply(sol.q, g);
@@ -66,11 +75,22 @@ CoreSolution SolveForForce(ScaledProblem& problem, double force, double area, do
       if (sol.q[k] > 0.0) { g_mean += g[k]; ++contact; }
     g_mean /= static_cast<double>(contact);
     g.array() -= g_mean;
+    // preconditioned residual, projected onto the force constraint (zero mean on the active set)
+    if (preconditioned) {
+      for (long k = 0; k < n; ++k) masked[k] = sol.q[k] > 0.0 ? g[k] : 0.0;
+      problem.Precondition(masked, z);
+      double z_mean = 0.0;
+      for (long k = 0; k < n; ++k)
+        if (sol.q[k] > 0.0) z_mean += z[k];
+      z.array() -= z_mean / static_cast<double>(contact);
+    } else {
+      z = g;
+    }
     double g_norm = 0.0;
     for (long k = 0; k < n; ++k)
-      if (sol.q[k] > 0.0) g_norm += g[k] * g[k];
+      if (sol.q[k] > 0.0) g_norm += g[k] * z[k];
     const double beta = conjugate ? g_norm / g_old : 0.0;
-    for (long k = 0; k < n; ++k) t[k] = sol.q[k] > 0.0 ? g[k] + beta * t[k] : 0.0;
+    for (long k = 0; k < n; ++k) t[k] = sol.q[k] > 0.0 ? z[k] + beta * t[k] : 0.0;
     g_old = g_norm;
     problem.Apply(t, r);
     double r_mean = 0.0;
@@ -137,16 +157,25 @@ CoreSolution SolveForApproach(ScaledProblem& problem, double approach, double se
   }
   double g_old = 1.0;
   bool conjugate = false;
+  const bool preconditioned = problem.has_preconditioner();
+  Eigen::VectorXd z, masked(n);
   for (int it = 1; it <= max_iterations; ++it) {
     sol.iterations = it;
     problem.Apply(sol.q, g);
     g += problem.gap();
     g.array() -= approach;
+    // preconditioned residual on the active set, z = P_I M^-1 P_I g (Vollebregt 2014: FFT-based preconditioner)
+    if (preconditioned) {
+      for (long k = 0; k < n; ++k) masked[k] = sol.q[k] > 0.0 ? g[k] : 0.0;
+      problem.Precondition(masked, z);
+    } else {
+      z = g;
+    }
     double g_norm = 0.0;
     for (long k = 0; k < n; ++k)
-      if (sol.q[k] > 0.0) g_norm += g[k] * g[k];
+      if (sol.q[k] > 0.0) g_norm += g[k] * z[k];
     const double beta = conjugate ? g_norm / g_old : 0.0;
-    for (long k = 0; k < n; ++k) t[k] = sol.q[k] > 0.0 ? g[k] + beta * t[k] : 0.0;
+    for (long k = 0; k < n; ++k) t[k] = sol.q[k] > 0.0 ? z[k] + beta * t[k] : 0.0;
     g_old = g_norm;
     problem.Apply(t, r);
     double num = 0.0, den = 0.0;

@@ -51,7 +51,7 @@ TEST(BenchCases, EveryModelReproducesHertzOnAnEllipticPatch) {
     EXPECT_GT(s.wear_index_N, 0.0) << to_string(m);
   }
   // the reference BEM on the same strips reproduces Hertz (docs/physics-reference.md §10)
-  const BemReferenceSolution bem = SolveBenchReference(c, 64);
+  const BemReferenceSolution bem = SolveBenchReference(c);  // 0.2 mm elements
   EXPECT_EQ(bem.status, "converged");
   EXPECT_NEAR(bem.fn_N, c.normal_load_N, 1e-6 * c.normal_load_N);
   EXPECT_NEAR(bem.pmax_Pa / h.p0_Pa, 1.0, 0.03);

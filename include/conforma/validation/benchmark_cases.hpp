@@ -92,8 +92,11 @@ struct BemReferenceSolution {
   bool contact_at_grid_edge = false;  // the BEM contact reaches its grid's edge (BemResult)
 };
 // Reference BEM (Blanco-Lorenzo coefficients, load control on fn_bar) on the case's patch.
+// bem_element_size_m: BemOptions::element_dx_m = element_ds_m, m, > 0.
 BemReferenceSolution SolveBenchReference(const BenchCase& bench_case,
                                          double bem_element_size_m = kDefaultBemElementSizeM);
+// The former argument was a number of elements along x: an int no longer converts silently to a size in metres.
+BemReferenceSolution SolveBenchReference(const BenchCase& bench_case, int) = delete;
 
 struct BenchGrid {
   int kp_strips = kDefaultKpStrips;                // PatchSolveOptions::kp_strips
