@@ -99,3 +99,15 @@ TEST(ExactModelCli, FieldsExportIntegratesToThePatchForces) {
 }
 
 }  // namespace
+
+namespace {
+
+// A grid over the memory budget is an input error naming the grid, the budget and the flag that changes it.
+TEST(ExactModelCli, GridOverTheBudgetIsAnInputError) {
+  const auto run = conforma::test::RunCli("contact --side left --model exact --exact-element-mm 0.01");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_NE(run.err.find("exceeds the memory budget"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("--exact-element-mm"), std::string::npos) << run.err;
+}
+
+}  // namespace

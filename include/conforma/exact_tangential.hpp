@@ -64,7 +64,7 @@ struct ExactTangentialOptions {
   int max_sweeps = 2000;               // >= 1
   bool use_fft = true;                 // false: direct summation (same numbers to rounding, for checking)
   // Gauss-Seidel between lines by blocks of this many lines, the slip refreshed by one FFT product per block (§14.2);
-  // 0: one block of all lines (one FFT product per sweep). The iteration is the same; only the cost differs.
+  // 0: chosen from the grid size (§14.2). The iteration is the same; only the cost (and the rounding) differs.
   int lines_per_fft = 0;
   void validate() const;               // InputError naming the option
 };

@@ -95,6 +95,9 @@ void ContactArgs::add_to(CLI::App* app) {
   app->add_option("--G-GPa", shear_modulus_GPa, "shear modulus of wheel and rail");
   app->add_option("--nu", poisson, "Poisson ratio");
   app->add_option("--grid", grid, "FASTSIM elements per strip");
+  app->add_option("--exact-element-mm", exact_element_mm,
+                  "exact model: BEM element size along x and along the rail profile (as CONTACT's 0.2 mm grid); the "
+                  "grid may hold at most " + std::to_string(WheelContactOptions{}.exact_max_elements) + " elements");
   app->add_option("--penetration", penetration, "conformal model: virtual penetration rule, variable (KPEC) or "
                                                 "constant (eps = 0.55)")
       ->check(CLI::IsMember({"variable", "constant"}));
@@ -188,6 +191,7 @@ WheelContactOptions ContactArgs::options() const {
   o.material.shear_modulus_Pa = shear_modulus_GPa * 1e9;
   o.material.poisson_ratio = poisson;
   o.fastsim_elements = grid;
+  o.exact_element_size_m = exact_element_mm * 1e-3;
   o.conformal_variable_penetration = penetration == "variable";
   o.validate();
   return o;
