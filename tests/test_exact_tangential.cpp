@@ -129,6 +129,23 @@ CreepRow UnitRatioRow() {
   return CreepRow{};
 }
 
+// The BEM normal solution of the a/b = 1 row on n x n elements over [-a, a]^2.
+struct UnitRowProblem {
+  CreepRow row;
+  Material material;
+  BemGrid grid;
+  BemResult normal;
+};
+UnitRowProblem SolveUnitRow(int n) {
+  UnitRowProblem u;
+  u.row = UnitRatioRow();
+  u.grid = QuadraticGapGrid(u.row.A_per_m, u.row.B_per_m, n, n, u.row.a_m, u.row.b_m);
+  BemOptions bo;
+  bo.normal_force_N = u.row.fn_N;
+  u.normal = SolveBemNormal(u.grid, u.material, bo);
+  return u;
+}
+
 // Kalker's linear theory (kalker.hpp: C_ij of the project's table) as creepage -> 0: Fx = -G c^2 C11 xi,
 // Fy = -G c^2 C22 eta - G c^3 C23 phi, c = sqrt(ab). The discretisation error is first order in the element size
 // (0.6 % to 1.8 % at 80 x 80 elements, larger at a/b = 5 where b is small), so the forces are Richardson-extrapolated
@@ -222,12 +239,11 @@ TEST(ExactTangential, CarterTwoDimensionalSolution) {
 
 // The FFT product and the direct summation give the same solution; the solve is deterministic.
 TEST(ExactTangential, FftMatchesDirectSummationAndRepeats) {
-  const CreepRow r = UnitRatioRow();
-  Material m;
-  const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, 16, 16, r.a_m, r.b_m);
-  BemOptions bo;
-  bo.normal_force_N = r.fn_N;
-  const BemResult normal = SolveBemNormal(grid, m, bo);
+  const UnitRowProblem u = SolveUnitRow(16);
+  const CreepRow& r = u.row;
+  const Material& m = u.material;
+  const BemGrid& grid = u.grid;
+  const BemResult& normal = u.normal;
   ExactTangentialOptions fft, direct;
   direct.use_fft = false;
   const RigidSlipField w = RigidSlipFromCreepages(grid, CreepagesOf(r));
@@ -320,12 +336,10 @@ namespace {
 // Slip-dependent friction (§14.3): at convergence every slip element carries |p| = mu(|s|) p_n with its own slip, every
 // adhesion element |p| <= mu(0) p_n; a falling law lowers the force below the constant-mu one at the same creepage.
 TEST(ExactTangential, SlipDependentFrictionBound) {
-  const CreepRow r = UnitRatioRow();
-  Material m;
-  const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, 30, 30, r.a_m, r.b_m);
-  BemOptions bo;
-  bo.normal_force_N = r.fn_N;
-  const BemResult normal = SolveBemNormal(grid, m, bo);
+  const UnitRowProblem u = SolveUnitRow(30);
+  const Material& m = u.material;
+  const BemGrid& grid = u.grid;
+  const BemResult& normal = u.normal;
   const RigidSlipField w = RigidSlipFromCreepages(grid, {0.002, 0.0, 0.0});
   ExactTangentialOptions constant;
   constant.tolerance = 1e-9;
@@ -353,12 +367,11 @@ TEST(ExactTangential, SlipDependentFrictionBound) {
 
 // Thread safety: concurrent solves give the single-thread answer bit for bit.
 TEST(ExactTangential, ConcurrentSolvesAreIdentical) {
-  const CreepRow r = UnitRatioRow();
-  Material m;
-  const BemGrid grid = QuadraticGapGrid(r.A_per_m, r.B_per_m, 24, 24, r.a_m, r.b_m);
-  BemOptions bo;
-  bo.normal_force_N = r.fn_N;
-  const BemResult normal = SolveBemNormal(grid, m, bo);
+  const UnitRowProblem u = SolveUnitRow(24);
+  const CreepRow& r = u.row;
+  const Material& m = u.material;
+  const BemGrid& grid = u.grid;
+  const BemResult& normal = u.normal;
   const RigidSlipField w = RigidSlipFromCreepages(grid, CreepagesOf(r));
   const ExactTangentialResult alone = SolveExactTangential(grid, normal.pressure_Pa, w, m, {});
   std::vector<ExactTangentialResult> results(4);

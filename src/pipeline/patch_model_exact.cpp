@@ -36,12 +36,6 @@ PatchTangentialSolution SolveExactPatchTangential(ContactModel, const PatchNorma
   out.status = t.status == ExactTangentialStatus::Converged ? (any_adhesion ? "ok" : "full_slip")
                : t.status == ExactTangentialStatus::NoContact ? "no_contact"
                                                               : "not_converged";
-  out.fx_N = t.fx_N;
-  out.fy_N = t.fy_N;
-  out.mz_Nm = t.mz_Nm;
-  out.adhesion_area_m2 = t.adhesion_area_m2;
-  out.slip_area_m2 = t.slip_area_m2;
-  out.frictional_power_W = t.frictional_power_W;
   out.iterations = t.sweeps;
   out.residual = t.residual;
   // the element field in FASTSIM's form (x, y = s, traction, slip), for the cell export and the wear distribution
@@ -68,6 +62,7 @@ PatchTangentialSolution SolveExactPatchTangential(ContactModel, const PatchNorma
   f.adhesion_area_m2 = t.adhesion_area_m2;
   f.slip_area_m2 = t.slip_area_m2;
   f.frictional_power_W = t.frictional_power_W;
+  CopyFieldTotals(out);
   return out;
 }
 

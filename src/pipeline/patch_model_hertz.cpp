@@ -69,12 +69,7 @@ PatchTangentialSolution SolveHertzPatchTangential(ContactModel, const PatchNorma
   const FastsimResult& t = out.field;
   out.solved = true;
   out.status = to_string(t.status);
-  out.fx_N = t.fx_N;
-  out.fy_N = t.fy_N;
-  out.mz_Nm = t.mz_Nm;
-  out.adhesion_area_m2 = t.adhesion_area_m2;
-  out.slip_area_m2 = t.slip_area_m2;
-  out.frictional_power_W = t.frictional_power_W;
+  CopyFieldTotals(out);
   out.element_width_m.assign(t.x_m.size(), 2.0 * normal.b_m / in.ny);
   return out;
 }

@@ -18,6 +18,9 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
                                                const WheelContactOptions& options);
 double KpPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m);
 
+// Sets out's totals (fx, fy, mz, adhesion and slip areas, frictional power) from those of its element field.
+void CopyFieldTotals(PatchTangentialSolution& out);
+
 PatchNormalSolution SolveReferencePatchNormal(ContactModel model, const PatchInput& input, double approach_m,
                                               const WheelContactOptions& options);
 PatchTangentialSolution SolveExactPatchTangential(ContactModel model, const PatchNormalSolution& normal,

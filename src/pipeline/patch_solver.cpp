@@ -62,6 +62,16 @@ PatchTangentialSolution SolvePatchTangential(ContactModel model, const PatchNorm
   return solver.tangential(model, normal, creepages, rolling_speed_m_per_s, options);
 }
 
+void CopyFieldTotals(PatchTangentialSolution& out) {
+  const FastsimResult& f = out.field;
+  out.fx_N = f.fx_N;
+  out.fy_N = f.fy_N;
+  out.mz_Nm = f.mz_Nm;
+  out.adhesion_area_m2 = f.adhesion_area_m2;
+  out.slip_area_m2 = f.slip_area_m2;
+  out.frictional_power_W = f.frictional_power_W;
+}
+
 double PatchPressureAt(ContactModel model, const PatchNormalSolution& normal, double x_m, double s_m) {
   const ContactModelSolver& solver = ContactModelSolverOf(model);
   if (solver.pressure_at == nullptr) throw InputError(std::string("model '") + to_string(model) + "' keeps no field");
