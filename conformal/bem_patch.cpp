@@ -1,10 +1,12 @@
-// Reference BEM on a PatchGeometry: the strips are the grid columns, the x grid is chosen from the gap so
-// that it covers the interpenetration region {h(x, s) < delta}, which contains the contact area (the
-// elastic displacement is >= 0 for |alpha_J - alpha_I| < 90 deg).
+// Reference BEM on a PatchGeometry (docs/physics-reference.md §10.4): a grid of element_dx x element_ds rectangles
+// that covers the interpenetration region {h(x, s) < delta}, which contains the contact area (the elastic
+// displacement is >= 0 for |alpha_J - alpha_I| < 90 deg), plus a margin; the strip data is interpolated onto its
+// columns.
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "bem_operator.hpp"
 #include "conforma/bem_reference.hpp"
 #include "conforma/error.hpp"
 
@@ -33,6 +35,13 @@ void ValidatePatch(const PatchGeometry& patch) {
   }
 }
 
+void ValidateGridOptions(const BemOptions& options) {
+  require_positive(options.element_dx_m, "BemOptions.element_dx_m");
+  require_positive(options.element_ds_m, "BemOptions.element_ds_m");
+  require_positive(options.x_margin, "BemOptions.x_margin");
+  if (options.max_elements < 1) throw InputError("BemOptions.max_elements must be >= 1");
+}
+
 double Offset(const PatchGeometry& patch, size_t j) { return patch.x_offset_m.empty() ? 0.0 : patch.x_offset_m[j]; }
 
 // Approach estimate for a prescribed force: Hertz with the equivalent radius of the curvatures at the
@@ -57,36 +66,69 @@ double EstimateApproach(const PatchGeometry& patch, double force, const Material
   return patch.gap_m[k] + std::cbrt(9.0 * force * force / (16.0 * radius * e_star * e_star));
 }
 
-BemGrid GridFromPatch(const PatchGeometry& patch, double approach, int nx, double margin) {
-  BemGrid grid;
-  grid.ns = static_cast<int>(patch.strips());
-  grid.nx = nx;
-  grid.ds_m = patch.ds_m;
-  grid.s_first_m = patch.s_m.front();
-  double x_lo = 0.0, x_hi = 0.0;
+// Strip data interpolated linearly in s (clamped to the first / last strip).
+struct StripSample {
+  double gap, curvature, alpha, offset;
+};
+StripSample SampleStrips(const PatchGeometry& patch, double s) {
+  const size_t n = patch.strips();
+  const double t = (s - patch.s_m.front()) / patch.ds_m;
+  const size_t k = t <= 0.0 ? 0 : std::min(static_cast<size_t>(t), n - 1);
+  const size_t k1 = std::min(k + 1, n - 1);
+  const double w = k1 == k ? 0.0 : std::clamp(t - static_cast<double>(k), 0.0, 1.0);
+  auto lerp = [&](const std::vector<double>& v) { return v.empty() ? 0.0 : (1.0 - w) * v[k] + w * v[k1]; };
+  return {lerp(patch.gap_m), lerp(patch.longitudinal_curvature_per_m), lerp(patch.alpha_rad), lerp(patch.x_offset_m)};
+}
+
+// §10.4: the grid of element_dx x element_ds rectangles over the interpenetration region {h < approach} plus a margin.
+BemGrid GridFromPatch(const PatchGeometry& patch, double approach, const BemOptions& options) {
+  const double dx = options.element_dx_m, ds = options.element_ds_m;
+  double x_lo = 0.0, x_hi = 0.0, s_lo = 0.0, s_hi = 0.0;
   bool any = false;
   for (size_t j = 0; j < patch.strips(); ++j) {
     const double depth = approach - patch.gap_m[j];
     if (depth <= 0.0) continue;
-    const double half = margin * std::sqrt(depth / patch.longitudinal_curvature_per_m[j]);
+    const double half = options.x_margin * std::sqrt(depth / patch.longitudinal_curvature_per_m[j]);
     const double lo = Offset(patch, j) - half, hi = Offset(patch, j) + half;
     x_lo = any ? std::min(x_lo, lo) : lo;
     x_hi = any ? std::max(x_hi, hi) : hi;
+    s_lo = any ? std::min(s_lo, patch.s_m[j]) : patch.s_m[j];
+    s_hi = any ? std::max(s_hi, patch.s_m[j]) : patch.s_m[j];
     any = true;
   }
-  if (!any) {  // nothing interpenetrates: a token grid around the closest strip (the solve reports no contact)
-    x_lo = -patch.ds_m;
-    x_hi = patch.ds_m;
+  if (!any) {  // nothing interpenetrates: a token grid at the closest strip (the solve reports no contact)
+    size_t k = 0;
+    for (size_t j = 1; j < patch.strips(); ++j)
+      if (patch.gap_m[j] < patch.gap_m[k]) k = j;
+    x_lo = Offset(patch, k) - dx;
+    x_hi = Offset(patch, k) + dx;
+    s_lo = s_hi = patch.s_m[k];
   }
-  grid.dx_m = (x_hi - x_lo) / nx;
-  grid.x_first_m = x_lo + 0.5 * grid.dx_m;
-  grid.gap_m.resize(nx, grid.ns);
-  grid.alpha_rad = patch.alpha_rad;
+  // Margin along s: the interpenetration boundary lies within one strip of the outer interpenetrating strips; one
+  // element more on each side.
+  s_lo -= patch.ds_m + ds;
+  s_hi += patch.ds_m + ds;
+  const double s0 = patch.s_m.front();
+  const double m_lo = std::ceil((s_lo - s0) / ds - 1e-9);
+  const double m_hi = std::max(m_lo, std::floor((s_hi - s0) / ds + 1e-9));
+  const double ns = m_hi - m_lo + 1.0;
+  const double nx = std::max(1.0, std::ceil((x_hi - x_lo) / dx - 1e-9));
+  bem_detail::CheckGridBudget(nx, ns, dx, ds, options.max_elements);  // before any allocation (and cast)
+  BemGrid grid;
+  grid.nx = static_cast<int>(nx);
+  grid.ns = static_cast<int>(ns);
+  grid.dx_m = dx;
+  grid.ds_m = ds;
+  grid.x_first_m = 0.5 * (x_lo + x_hi) - 0.5 * (nx - 1.0) * dx;
+  grid.s_first_m = s0 + m_lo * ds;
+  grid.gap_m.resize(grid.nx, grid.ns);
+  if (!patch.alpha_rad.empty()) grid.alpha_rad.resize(static_cast<size_t>(grid.ns));
   for (int j = 0; j < grid.ns; ++j) {
-    const size_t js = static_cast<size_t>(j);
-    for (int i = 0; i < nx; ++i) {
-      const double x = grid.x_centre_m(i) - Offset(patch, js);
-      grid.gap_m(i, j) = patch.gap_m[js] + patch.longitudinal_curvature_per_m[js] * x * x;  // patch.hpp
+    const StripSample c = SampleStrips(patch, grid.s_centre_m(j));
+    if (!patch.alpha_rad.empty()) grid.alpha_rad[static_cast<size_t>(j)] = c.alpha;
+    for (int i = 0; i < grid.nx; ++i) {
+      const double x = grid.x_centre_m(i) - c.offset;
+      grid.gap_m(i, j) = c.gap + c.curvature * x * x;  // patch.hpp
     }
   }
   return grid;
@@ -99,13 +141,13 @@ BemResult SolveBemNormal(const PatchGeometry& patch, const Material& material, c
   material.validate();
   if (options.control == BemLoadControl::NormalForce) {
     require_non_negative(options.normal_force_N, "BemOptions.normal_force_N");
-    if (options.x_elements < 2) throw InputError("BemOptions.x_elements must be >= 2");
+    ValidateGridOptions(options);
     double estimate = EstimateApproach(patch, options.normal_force_N, material);
     BemResult result;
     // The contact lies inside {h < delta}: re-grid until the grid was built for an approach between
     // delta and 1.15 delta (at most a few passes; the Hertz estimate is usually within 20 %).
     for (int pass = 1; pass <= 6; ++pass) {
-      result = SolveBemNormal(GridFromPatch(patch, estimate, options.x_elements, options.x_margin), material, options);
+      result = SolveBemNormal(GridFromPatch(patch, estimate, options), material, options);
       result.regrids = pass;
       if (result.status == BemStatus::NoContact) break;
       const double delta = result.approach_m;
@@ -115,8 +157,8 @@ BemResult SolveBemNormal(const PatchGeometry& patch, const Material& material, c
     return result;
   }
   require_finite(options.approach_m, "BemOptions.approach_m");
-  BemResult result =
-      SolveBemNormal(GridFromPatch(patch, options.approach_m, options.x_elements, options.x_margin), material, options);
+  ValidateGridOptions(options);
+  BemResult result = SolveBemNormal(GridFromPatch(patch, options.approach_m, options), material, options);
   result.regrids = 1;
   return result;
 }

@@ -6,6 +6,7 @@
 // standard flat problem (symmetric operator, uniform approach), so the algorithm of §10.3 applies unchanged.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "bem_operator.hpp"
@@ -39,6 +40,7 @@ struct CoreSolution {
   Eigen::VectorXd q;
   double approach = 0.0;
   int iterations = 0;
+  double residual = 0.0;  // relative pressure change of the last iteration
   bool converged = false;
 };
 
@@ -94,6 +96,7 @@ CoreSolution SolveForForce(ScaledProblem& problem, double force, double area, do
     }
     sol.q *= force / (area * total);
     const double change = (sol.q - q_old).cwiseAbs().sum() / sol.q.sum();
+    sol.residual = change;
     if (change < tolerance) { sol.converged = true; break; }
   }
   problem.Apply(sol.q, g);
@@ -117,6 +120,21 @@ CoreSolution SolveForApproach(ScaledProblem& problem, double approach, double se
               .matrix();
   if (!(sol.q.sum() > 0.0)) { sol.converged = true; return sol; }
   Eigen::VectorXd g, t = Eigen::VectorXd::Zero(n), r, q_old;
+  {
+    // Better start (§10.4): the Hertz shape. For h = paraboloid the contact is {h - h_min < (delta - h_min) / 2}
+    // and p ~ sqrt((delta - h_min) / 2 - (h - h_min)) (Johnson 1985 §4.2); the amplitude is the least-squares fit
+    // of C q = delta - h on that set (one operator application).
+    const double h_min = problem.gap().minCoeff();
+    const double half_depth = 0.5 * (approach - h_min);
+    Eigen::VectorXd shape = (half_depth - (problem.gap().array() - h_min)).max(0.0).sqrt().matrix();
+    if (half_depth > 0.0 && shape.sum() > 0.0) {
+      problem.Apply(shape, g);
+      double num = 0.0, den = 0.0;
+      for (long k = 0; k < n; ++k)
+        if (shape[k] > 0.0) { num += g[k] * (approach - problem.gap()[k]); den += g[k] * g[k]; }
+      if (num > 0.0 && den > 0.0) sol.q = shape * (num / den);
+    }
+  }
   double g_old = 1.0;
   bool conjugate = false;
   for (int it = 1; it <= max_iterations; ++it) {
@@ -149,6 +167,7 @@ CoreSolution SolveForApproach(ScaledProblem& problem, double approach, double se
     const double total = sol.q.sum();
     if (!(total > 0.0)) break;  // the approach does not close the gap anywhere once elasticity is counted
     const double change = (sol.q - q_old).cwiseAbs().sum() / total;
+    sol.residual = change;
     if (change < tolerance) { sol.converged = true; break; }
   }
   return sol;
@@ -159,11 +178,27 @@ void ValidateOptions(const BemOptions& o) {
   else require_finite(o.approach_m, "BemOptions.approach_m");
   require_positive(o.tolerance, "BemOptions.tolerance");
   if (o.max_iterations < 1) throw InputError("BemOptions.max_iterations must be >= 1");
-  if (o.x_elements < 2) throw InputError("BemOptions.x_elements must be >= 2");
-  require_positive(o.x_margin, "BemOptions.x_margin");
+  if (o.max_elements < 1) throw InputError("BemOptions.max_elements must be >= 1");
 }
 
 }  // namespace
+
+namespace bem_detail {
+
+void CheckGridBudget(double nx, double ns, double dx_m, double ds_m, long max_elements) {
+  const double elements = nx * ns;
+  if (elements <= static_cast<double>(max_elements)) return;
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "reference BEM grid of %.0f x %.0f = %.0f elements (element size %.4g mm along x, %.4g mm along s) "
+                "exceeds the memory budget of %ld elements (BemOptions.max_elements, WheelContactOptions::"
+                "exact_max_elements, ~1 kB per element): increase the element size (WheelContactOptions::"
+                "exact_element_size_m, BemOptions.element_dx_m / element_ds_m) or the budget",
+                nx, ns, elements, dx_m * 1e3, ds_m * 1e3, max_elements);
+  throw InputError(text);
+}
+
+}  // namespace bem_detail
 
 const char* to_string(BemStatus status) {
   switch (status) {
@@ -229,6 +264,7 @@ BemGrid QuadraticGapGrid(double A_per_m, double B_per_m, int nx, int ns, double 
 BemResult SolveBemNormal(const BemGrid& grid, const Material& material, const BemOptions& options) {
   grid.validate();
   ValidateOptions(options);
+  bem_detail::CheckGridBudget(grid.nx, grid.ns, grid.dx_m, grid.ds_m, options.max_elements);
   const ElasticConstants elastic = CombinedElasticConstants(material);
   BemResult result;
   result.grid = grid;
@@ -279,6 +315,7 @@ BemResult SolveBemNormal(const BemGrid& grid, const Material& material, const Be
   const Eigen::VectorXd deformed_gap = gap - sol.approach * weight + displacement;
   result.approach_m = sol.approach;
   result.iterations = sol.iterations;
+  result.residual = sol.residual;
   bem_detail::SummariseBem(pressure, deformed_gap, result);
   if (result.contact_elements == 0) result.status = BemStatus::NoContact;
   else result.status = sol.converged ? BemStatus::Converged : BemStatus::NotConverged;

@@ -257,5 +257,112 @@ TEST(BemSolver, NoContactAndBadInput) {
   EXPECT_THROW(SolveBemNormal(patch, material, options), InputError);
 }
 
+// A Hertzian patch (gap = B s^2 on strips 0.1 mm apart, h = gap + A x^2, offset 0.3 mm along x): the grid is
+// built from the element size (§10.4), the strips are resampled onto its columns.
+PatchGeometry HertzPatch(double A, double B, double half_width_m) {
+  PatchGeometry patch;
+  patch.ds_m = 0.1e-3;
+  for (double s = -half_width_m; s <= half_width_m + 1e-12; s += patch.ds_m) {
+    patch.s_m.push_back(s);
+    patch.gap_m.push_back(B * s * s);
+    patch.longitudinal_curvature_per_m.push_back(A);
+    patch.wheel_radius_m.push_back(1.0 / (2.0 * A));
+    patch.alpha_rad.push_back(0.0);
+    patch.x_offset_m.push_back(0.3e-3);
+  }
+  return patch;
+}
+
+TEST(BemPatchGrid, ElementSizeGridOverTheInterpenetrationRegionReproducesHertz) {
+  const Material material;
+  const double A = 1.087, B = 2.5, force = 20e3;
+  const HertzResult hz = SolveHertzForLoad(A, B, force, material);
+  const PatchGeometry patch = HertzPatch(A, B, 15e-3);
+  for (double h : {0.2e-3, 0.1e-3}) {
+    BemOptions options;
+    options.normal_force_N = force;
+    options.element_dx_m = options.element_ds_m = h;
+    const BemResult r = SolveBemNormal(patch, material, options);
+    ASSERT_EQ(r.status, BemStatus::Converged);
+    EXPECT_DOUBLE_EQ(r.grid.dx_m, h);
+    EXPECT_DOUBLE_EQ(r.grid.ds_m, h);
+    // trimmed: the grid spans the interpenetration region plus the margins, not the 30 mm wide patch
+    EXPECT_LT(r.grid.ns * h, 2.0 * std::sqrt(r.approach_m / B) + 2.0 * (patch.ds_m + h) + h + 1e-9);
+    EXPECT_FALSE(r.contact_at_grid_edge);
+    EXPECT_NEAR(r.normal_force_reference_N, force, 1e-9 * force);
+    EXPECT_LT(r.residual, options.tolerance);
+    EXPECT_GT(r.residual, 0.0);
+    const double p0_error = r.max_pressure_Pa / hz.p0_Pa - 1.0;
+    const double approach_error = r.approach_m / hz.approach_m - 1.0;
+    std::printf("patch grid %.2f mm: %d x %d, p0 %+.3f %%, approach %+.3f %%, length %+.2f %%, width %+.2f %%, "
+                "centre x %.4f mm, %d iterations, residual %.2g\n", h * 1e3, r.grid.nx, r.grid.ns, 100 * p0_error,
+                100 * approach_error, 100 * (r.contact_length_x_m / (2 * hz.a_m) - 1),
+                100 * (r.contact_width_s_m / (2 * hz.b_m) - 1), r.centre_of_pressure_x_m * 1e3, r.iterations,
+                r.residual);
+    EXPECT_LT(std::fabs(p0_error), h == 0.2e-3 ? 0.01 : 0.005);
+    EXPECT_LT(std::fabs(approach_error), 0.005);
+    EXPECT_NEAR(r.contact_length_x_m, 2 * hz.a_m, 2 * h);
+    EXPECT_NEAR(r.contact_width_s_m, 2 * hz.b_m, 2 * h);
+    EXPECT_NEAR(r.centre_of_pressure_x_m, 0.3e-3, 1e-9);  // the strips' x offset
+    EXPECT_NEAR(r.centre_of_pressure_s_m, 0.0, 1e-9);
+  }
+}
+
+// Columns of the strip width on the strip lattice take the strip data as it is (no interpolation error).
+TEST(BemPatchGrid, ColumnsOnTheStripsKeepTheStripGaps) {
+  const Material material;
+  PatchGeometry patch = HertzPatch(1.087, 2.5, 10e-3);
+  for (size_t j = 0; j < patch.strips(); ++j) patch.gap_m[j] += 1e-6 * std::sin(3e3 * patch.s_m[j]);  // not linear
+  BemOptions options;
+  options.control = BemLoadControl::Approach;
+  options.approach_m = 30e-6;
+  options.element_ds_m = patch.ds_m;
+  const BemResult r = SolveBemNormal(patch, material, options);
+  ASSERT_EQ(r.status, BemStatus::Converged);
+  for (int j = 0; j < r.grid.ns; ++j) {
+    const double s = r.grid.s_centre_m(j);
+    const long k = std::lround((s - patch.s_m.front()) / patch.ds_m);
+    ASSERT_NEAR(s, patch.s_m[static_cast<size_t>(k)], 1e-12);
+    const double x = r.grid.x_centre_m(0) - 0.3e-3;
+    EXPECT_NEAR(r.grid.gap_m(0, j), patch.gap_m[static_cast<size_t>(k)] + 1.087 * x * x, 1e-15);
+  }
+}
+
+TEST(BemPatchGrid, GridAboveTheMemoryBudgetIsAnInputErrorNamingGridBudgetAndElementSize) {
+  const Material material;
+  const PatchGeometry patch = HertzPatch(1.087, 2.5, 15e-3);
+  BemOptions options;
+  options.normal_force_N = 20e3;
+  options.element_dx_m = options.element_ds_m = 0.01e-3;  // ~1000 x 800 elements
+  try {
+    SolveBemNormal(patch, material, options);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("elements"), std::string::npos) << what;
+    EXPECT_NE(what.find(" x "), std::string::npos) << what;
+    EXPECT_NE(what.find("250000"), std::string::npos) << what;
+    EXPECT_NE(what.find("exact_max_elements"), std::string::npos) << what;
+    EXPECT_NE(what.find("exact_element_size_m"), std::string::npos) << what;
+  }
+  // the same budget for a given grid
+  const BemGrid grid = QuadraticGapGrid(1.0, 1.0, 40, 30, 5e-3, 5e-3);
+  BemOptions small;
+  small.normal_force_N = 1e3;
+  small.max_elements = 1199;
+  EXPECT_THROW(SolveBemNormal(grid, material, small), InputError);
+  small.max_elements = 1200;
+  EXPECT_EQ(SolveBemNormal(grid, material, small).status, BemStatus::Converged);
+  // and the option ranges
+  options.element_dx_m = 0.0;
+  EXPECT_THROW(SolveBemNormal(patch, material, options), InputError);
+  options.element_dx_m = 0.2e-3;
+  options.element_ds_m = std::nan("");
+  EXPECT_THROW(SolveBemNormal(patch, material, options), InputError);
+  options.element_ds_m = 0.2e-3;
+  options.max_elements = 0;
+  EXPECT_THROW(SolveBemNormal(patch, material, options), InputError);
+}
+
 }  // namespace
 }  // namespace conforma

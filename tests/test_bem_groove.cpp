@@ -121,7 +121,8 @@ BemResult Solve(const PatchGeometry& patch, BemInfluence influence, double force
   options.coupling = coupling;
   options.normal_force_N = force;
   options.force_measure = measure;
-  options.x_elements = 96;  // dx about 0.09 mm, CONTACT's 0.0958 mm
+  options.element_dx_m = 0.095833e-3;   // CONTACT's grid 0.0958 x 0.25 mm
+  options.element_ds_m = kStripWidth;    // columns on the strips
   return SolveBemNormal(patch, GrooveMaterial(), options);
 }
 

@@ -129,7 +129,7 @@ std::vector<double> LegacyNormalKey(const WheelsetTrackGeometry& geometry, Side 
   return {static_cast<double>(reinterpret_cast<std::uintptr_t>(&geometry)), static_cast<double>(side_index(side)),
           pose.lateral_m, pose.vertical_m, pose.roll_rad, pose.yaw_rad, static_cast<double>(o.model),
           o.material.shear_modulus_Pa, o.material.poisson_ratio, o.vertical_load_N, o.load_tolerance,
-          static_cast<double>(o.kp_strips), static_cast<double>(o.bem_x_elements), o.candidate_strip_width_m,
+          static_cast<double>(o.kp_strips), o.exact_element_size_m /* was bem_x_elements */, o.candidate_strip_width_m,
           o.conformity_threshold_deg, o.conformal_variable_penetration ? 1.0 : 0.0, a.conformity_threshold_deg,
           a.virtual_penetration_factor, a.gap_fit_tolerance, a.curvature_tolerance, static_cast<double>(a.min_strips)};
 }

@@ -122,13 +122,13 @@ double NormalForceAtApproach(const BenchCase& c, const PatchSolveOptions& option
   return SolveBenchCase(c, o).fn_N;
 }
 
-BemReferenceSolution SolveBenchReference(const BenchCase& c, int bem_x_elements) {
+BemReferenceSolution SolveBenchReference(const BenchCase& c, double bem_element_size_m) {
   BemOptions b;
   b.influence = BemInfluence::Blanco;
   b.control = BemLoadControl::NormalForce;
   b.normal_force_N = c.normal_load_N;
   b.force_measure = BemForceMeasure::ReferenceNormal;
-  b.x_elements = bem_x_elements;
+  b.element_dx_m = b.element_ds_m = bem_element_size_m;
   b.tolerance = 1e-9;
   const BemResult r = SolveBemNormal(c.patch, c.material, b);
   BemReferenceSolution out;
@@ -169,7 +169,7 @@ double MedianTimeUs(F&& f, const BenchOptions& o) {
 std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchOptions& options) {
   std::vector<BenchRow> rows;
   for (const BenchCase& c : cases) {
-    const BemReferenceSolution bem = SolveBenchReference(c, options.bem_x_elements);
+    const BemReferenceSolution bem = SolveBenchReference(c, options.bem_element_size_m);
     PatchSolveOptions ref_options;
     ref_options.model = ContactModel::Conformal;
     ref_options.kp_strips = options.tangential_reference.kp_strips;

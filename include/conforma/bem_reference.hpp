@@ -25,8 +25,13 @@
 
 namespace conforma {
 
-// Default BEM elements along x (the one declaration; BemOptions::x_elements).
-constexpr int kDefaultBemXElements = 64;
+// Default element size of the BEM grid built from a patch, along x and along s (the one declaration;
+// BemOptions::element_dx_m / element_ds_m, WheelContactOptions::exact_element_size_m): 0.2 mm, CONTACT's usual grid.
+constexpr double kDefaultBemElementSizeM = 0.2e-3;
+// Default largest BEM grid (elements nx ns) of one solve: about 1 kB per element for the normal and the tangential
+// solve together (FFTW buffers and spectra of the convolutions, iteration vectors), so 250,000 elements keep a solve
+// below ~300 MB. At 0.2 mm elements this is 100 cm^2, far more than any wheel-rail contact needs.
+constexpr long kDefaultBemMaxElements = 250000;
 
 // Potential contact area: element (i, j) is centred at (x_first + i dx, s_first + j ds).
 struct BemGrid {
@@ -82,9 +87,14 @@ struct BemOptions {
   double tolerance = 1e-10;     // on the relative change of the pressure per iteration (L1), > 0
   int max_iterations = 2000;    // conjugate-gradient iterations (per solve), >= 1
   bool use_fft = true;          // false: direct O(n^2) summation (same numbers, for checking)
-  // PatchGeometry input only: number of elements along x (>= 2) and the margin on the interpenetration length (> 0:
-  // the x grid covers x_margin times the half-length sqrt((delta - gap) / A) of every interpenetrating strip).
-  int x_elements = kDefaultBemXElements;
+  // Largest grid nx ns accepted (memory budget, see kDefaultBemMaxElements), >= 1: a larger grid is an InputError
+  // naming the grid, the budget and the element size that sets it.
+  long max_elements = kDefaultBemMaxElements;
+  // PatchGeometry input only: the element length along x and width along s, m, > 0 (default 0.2 mm both), and the
+  // margin on the interpenetration length (> 0: the x grid covers x_margin times the half-length
+  // sqrt((delta - gap) / A) of every interpenetrating strip).
+  double element_dx_m = kDefaultBemElementSizeM;
+  double element_ds_m = kDefaultBemElementSizeM;
   double x_margin = 1.1;
 };
 
@@ -111,13 +121,17 @@ struct BemResult {
   double max_complementarity_m = 0.0;  // max over contact of |g| and over the rest of max(-g, 0)
   bool contact_at_grid_edge = false;   // contact reaches the outer row/column: the potential area was too small
   int iterations = 0;                  // conjugate-gradient iterations, all solves together
-  int regrids = 0;                     // PatchGeometry input: x grids tried (0 for grid input)
+  double residual = 0.0;               // relative pressure change (L1) of the last iteration: < tolerance if converged
+  int regrids = 0;                     // PatchGeometry input: grids tried (0 for grid input)
 };
 
 // Solve on a given grid. Throws InputError for bad input (grid, material, negative/NaN load or approach).
 BemResult SolveBemNormal(const BemGrid& grid, const Material& material, const BemOptions& options);
-// Solve a patch: columns are the patch strips (uniform ds), the x grid (options.x_elements) is chosen from
-// the gap so that it covers the interpenetration region {h < delta}, which contains the contact.
+// Solve a patch on a grid of element_dx_m x element_ds_m rectangles (§10.4) that covers the interpenetration region
+// {h < delta}, which contains the contact, plus a margin: along s the columns lie on the lattice
+// s_first strip + m element_ds_m and span the interpenetrating strips plus one strip and one element on each side;
+// the strip data (gap, curvature, alpha, x offset) is interpolated linearly in s onto the column centres. Along x the
+// grid covers x_margin times the interpenetration half-length of every interpenetrating strip.
 BemResult SolveBemNormal(const PatchGeometry& patch, const Material& material, const BemOptions& options);
 
 }  // namespace conforma

@@ -143,7 +143,7 @@ constexpr void VisitNormalOptionFields(Options& o, Visitor&& v) {
   v("vertical_load_N", o.vertical_load_N);
   v("load_tolerance", o.load_tolerance);
   v("kp_strips", o.kp_strips);
-  v("bem_x_elements", o.bem_x_elements);
+  v("exact_element_size_m", o.exact_element_size_m);  // where bem_x_elements was
   v("candidate_strip_width_m", o.candidate_strip_width_m);
   v("conformity_threshold_deg", o.conformity_threshold_deg);
   v("conformal_variable_penetration", o.conformal_variable_penetration);
@@ -154,6 +154,7 @@ constexpr void VisitNormalOptionFields(Options& o, Visitor&& v) {
   v("auto_selection.min_strips", o.auto_selection.min_strips);
   v("max_touching_contact_angle_rad", o.max_touching_contact_angle_rad);
   v("auto_selection.min_hertz_axis_ratio", o.auto_selection.min_hertz_axis_ratio);
+  v("exact_max_elements", o.exact_max_elements);
 }
 
 // The rest: what only the tangential stage reads (with the velocity, the whole-report cache key), in the order of

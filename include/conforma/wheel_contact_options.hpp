@@ -36,8 +36,12 @@ struct WheelContactOptions {
   // FASTSIM elements per strip (and strips for the Hertz ellipse), >= 2; default 30
   int fastsim_elements = kDefaultFastsimElements;
   int kp_strips = kDefaultKpStrips;                  // strips across the contact of the KP solvers, >= 3; default 31
-  // reference BEM elements along x (strips: the candidate's ds), >= 8; default 64 (bem_reference.hpp)
-  int bem_x_elements = kDefaultBemXElements;
+  // Reference / exact BEM (bem_reference.hpp): element size along x and along s of the grid built over the
+  // interpenetration region of each patch, m, > 0; default 0.2 mm (CONTACT's usual grid)
+  double exact_element_size_m = kDefaultBemElementSizeM;
+  // Reference / exact BEM memory budget: the largest grid (elements) of one patch, >= 1; default 250,000 (~300 MB).
+  // A larger grid is an InputError naming the grid, this budget and exact_element_size_m.
+  long exact_max_elements = kDefaultBemMaxElements;
   // Strip width ds of the candidate patches (PatchGeometry::ds_m, contact_candidates.hpp), m, > 0; default 0.1 mm
   double candidate_strip_width_m = 0.1e-3;
   // Load control, elastic flange: the wheel's reference (touching) position ignores gap minima whose rail

@@ -1,5 +1,6 @@
 // The `reference` contact model on one patch (patch_solver.hpp): the BEM normal solver on the curved patch with
 // Blanco-Lorenzo influence coefficients (docs/physics-reference.md §10); no tangential part.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -20,8 +21,9 @@ PatchNormalSolution SolveReferencePatchNormal(ContactModel, const PatchInput& in
   b.influence = BemInfluence::Blanco;
   b.control = BemLoadControl::Approach;
   b.approach_m = approach_m;
-  b.x_elements = options.bem_x_elements;
-  b.tolerance = 1e-9;
+  b.element_dx_m = b.element_ds_m = options.exact_element_size_m;
+  b.max_elements = options.exact_max_elements;
+  b.tolerance = std::min(1e-7, 0.1 * options.load_tolerance);  // force noise well below the load control tolerance
   const BemResult r = SolveBemNormal(patch, options.material, b);
   out.status = r.status == BemStatus::Converged ? "ok" : r.status == BemStatus::NoContact ? "no_contact" : "not_converged";
   if (r.status == BemStatus::NoContact) return out;

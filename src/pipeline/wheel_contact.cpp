@@ -46,7 +46,8 @@ void WheelContactOptions::validate() const {
   require_finite(conformity_threshold_deg, "conformity_threshold_deg");
   if (fastsim_elements < 2) throw InputError("option 'fastsim_elements' must be >= 2");
   if (kp_strips < 3) throw InputError("option 'kp_strips' must be >= 3");
-  if (bem_x_elements < 8) throw InputError("option 'bem_x_elements' must be >= 8");
+  require_positive(exact_element_size_m, "exact_element_size_m");
+  if (exact_max_elements < 1) throw InputError("option 'exact_max_elements' must be >= 1");
   auto_selection.validate();
   if (creepages_given) {
     require_finite(creepages.longitudinal, "creepages.xi");

@@ -92,7 +92,8 @@ struct BemReferenceSolution {
   bool contact_at_grid_edge = false;  // the BEM contact reaches its grid's edge (BemResult)
 };
 // Reference BEM (Blanco-Lorenzo coefficients, load control on fn_bar) on the case's patch.
-BemReferenceSolution SolveBenchReference(const BenchCase& bench_case, int bem_x_elements = kDefaultBemXElements);
+BemReferenceSolution SolveBenchReference(const BenchCase& bench_case,
+                                         double bem_element_size_m = kDefaultBemElementSizeM);
 
 struct BenchGrid {
   int kp_strips = kDefaultKpStrips;                // PatchSolveOptions::kp_strips
@@ -125,7 +126,7 @@ struct BenchOptions {
   std::vector<BenchGrid> grids = DefaultBenchGrids();  // each model at each grid
   bool conformal_eps055 = true;  // also run the conformal model with eps = 0.55 ("conformal_eps055")
   BenchGrid tangential_reference{121, 100};  // conformal model on this grid
-  int bem_x_elements = kDefaultBemXElements;  // BemOptions::x_elements of the normal reference, >= 2
+  double bem_element_size_m = kDefaultBemElementSizeM;  // BemOptions::element_dx_m = element_ds_m of the normal reference, m, > 0
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)
   int max_repeats = 201;                     // ... but at most this many (and at least 5)
 };
