@@ -5,11 +5,12 @@
 #
 #   scripts/check_identical.sh [--update] [--skip-aosta] [build-dir]
 #
-# Compared (run-time columns removed: wall_s, time_*_us):
+# Compared (run-time columns removed: wall_s, time_s, time_*_us):
 #   compare_{hertz,conformal}_steps.csv  `conforma compare` on scenarios/default_metro.yaml, 7 steps (scripts/run.sh)
 #   aosta_conformal_steps.csv            `conforma wear` on scenarios/aosta_aln501.yaml, conformal (~4 min)
 #   mbench.txt                           `conforma mbench` (Manchester A-2.2 against CONTACT, 4 models)
-#   bench_errors.csv                     `conforma bench` error columns (err_*, alpha_c_deg, status) per row
+#   bench_errors.csv                     `conforma bench` error columns (err_*, alpha_c_deg, status, reference_status)
+#   bench_reference.csv                  `conforma bench` exact reference per case (forces, iterations; time_s removed)
 #   final_profiles.sha256                the last wheel profile of every wear run, byte for byte
 # Exit 0: all identical; 1: a difference (printed); 2: a run failed.
 set -euo pipefail
@@ -74,6 +75,7 @@ run mbench "$exe" mbench
 cp "$work/mbench.log" "$out/mbench.txt"
 run bench "$exe" bench --out "$work/bench"
 drop_columns "$work/bench/bench.csv" time_us > "$out/bench_errors.csv"
+drop_columns "$work/bench/bench_reference.csv" time_s > "$out/bench_reference.csv"
 
 if ((update)); then
   mkdir -p "$golden"

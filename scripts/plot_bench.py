@@ -2,9 +2,10 @@
 """Pareto plot of `conforma bench`: median time per patch against error, per model and grid.
 
 usage: plot_bench.py bench.csv out.png
-Left: p_max error against the reference BEM (Blanco); right: creep-force error against the fine-grid conformal
-solution. Small dots: every case; large markers: the worst case per model and grid (the Pareto front of those in
-black).
+Left: p_max error, right: creep-force error max(|err_fx|, |err_fy|), both against the exact model (BEM with
+Blanco-Lorenzo coefficients + Kalker's exact steady-rolling theory, one solve per case). Small dots: every case;
+large markers: the worst case per model and grid (the Pareto front of those in black). Rows whose exact reference
+did not converge (reference_status != converged) are left out.
 """
 import csv
 import sys
@@ -17,15 +18,16 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def main(path, out):
-    rows = list(csv.DictReader(open(path)))
+    rows = [r for r in csv.DictReader(open(path)) if r.get("reference_status", "converged") == "converged"]
     groups = defaultdict(list)
     for r in rows:
         groups[(r["model"], r["grid"])].append(r)
     colors = {"hertz": "tab:blue", "kp": "tab:orange", "kpec": "tab:green", "conformal": "tab:red",
-              "conformal_eps055": "tab:purple"}
+              "conformal_eps055": "tab:purple", "auto": "tab:brown"}
     fig, axes = plt.subplots(1, 2, figsize=(12, 5))
-    panels = [("p_max error vs BEM (Blanco)", lambda r: abs(float(r["err_pmax"]))),
-              ("creep force error vs fine conformal", lambda r: max(abs(float(r["err_fx"])), abs(float(r["err_fy"]))))]
+    panels = [("p_max error vs exact", lambda r: abs(float(r["err_pmax"]))),
+              ("creep force error vs exact (max |err_fx|, |err_fy|)",
+               lambda r: max(abs(float(r["err_fx"])), abs(float(r["err_fy"]))))]
     for ax, (title, err) in zip(axes, panels):
         points = []
         for (model, grid), rs in sorted(groups.items()):

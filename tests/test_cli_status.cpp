@@ -148,6 +148,24 @@ TEST(CliStatus, BenchUnknownFamilyIsInputError) {
   fs::remove_all(out);
 }
 
+// Issue 14: the bench's exact reference is visible per case (status, iterations) and per row (reference_status).
+TEST(CliStatus, BenchShowsItsExactReference) {
+  const fs::path out = TempDir("bench_reference");
+  const auto r = RunCli("bench --families flange_root --models hertz,conformal --no-plot --out '" + out.string() + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const std::string refs = Slurp(out / "bench_reference.csv");
+  EXPECT_EQ(refs.rfind("case,family,status,", 0), 0u) << refs;
+  EXPECT_NE(refs.find("flange_root_p0,flange_root,converged,"), std::string::npos) << refs;
+  EXPECT_NE(refs.find("flange_root_p1,flange_root,converged,"), std::string::npos) << refs;
+  const std::string rows = Slurp(out / "bench.csv");
+  EXPECT_NE(rows.find(",reference_status\n"), std::string::npos);
+  EXPECT_NE(rows.find(",converged\n"), std::string::npos);
+  const std::string creep = Slurp(out / "bench_creep_errors.md");
+  EXPECT_NE(creep.find("| hertz | flange |"), std::string::npos) << creep;
+  EXPECT_NE(creep.find("| conformal | flange |"), std::string::npos) << creep;
+  fs::remove_all(out);
+}
+
 TEST(CliStatus, SweepAndStressRejectEmptyInput) {
   auto models = RunCli("sweep --models ''");
   EXPECT_EQ(models.exit_code, 2) << models.out;

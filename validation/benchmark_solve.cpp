@@ -1,10 +1,10 @@
-// One model on one bench case, the reference BEM, and the timed run over models x grids x cases
+// One model on one bench case, the exact reference, and the timed run over models x grids x cases
 // (benchmark_cases.hpp).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 
-#include "conforma/bem_reference.hpp"
 #include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/curved_fastsim.hpp"
 #include "conforma/error.hpp"
@@ -122,22 +122,54 @@ double NormalForceAtApproach(const BenchCase& c, const PatchSolveOptions& option
   return SolveBenchCase(c, o).fn_N;
 }
 
-BemReferenceSolution SolveBenchReference(const BenchCase& c, double bem_element_size_m) {
-  BemOptions b;
-  b.influence = BemInfluence::Blanco;
-  b.control = BemLoadControl::NormalForce;
-  b.normal_force_N = c.normal_load_N;
-  b.force_measure = BemForceMeasure::ReferenceNormal;
-  b.element_dx_m = b.element_ds_m = bem_element_size_m;
-  b.tolerance = 1e-9;
-  const BemResult r = SolveBemNormal(c.patch, c.material, b);
-  BemReferenceSolution out;
-  out.status = to_string(r.status);
-  out.pmax_Pa = r.max_pressure_Pa;
-  out.area_m2 = r.contact_area_m2;
-  out.fn_N = r.normal_force_reference_N;
-  out.approach_m = r.approach_m;
-  out.contact_at_grid_edge = r.contact_at_grid_edge;
+void BenchReferenceOptions::validate() const {
+  require_positive(element_size_m, "bench reference element_size_m");
+  require_positive(load_tolerance, "bench reference load_tolerance");
+}
+
+std::string BenchReference::status() const {
+  return converged ? "converged" : normal_status + "/" + tangential_status;
+}
+
+BenchReference SolveBenchReference(const BenchCase& c, const BenchReferenceOptions& options) {
+  options.validate();
+  const auto start = std::chrono::steady_clock::now();
+  const RigidContactPoint point = HertzPointOf(c);
+  PatchProblem problem;
+  problem.model = ContactModel::Exact;
+  problem.input = PatchInput{&c.patch, &point};
+  problem.normal_load_N = c.normal_load_N;  // load given on fn_bar (the load control of every model)
+  const double hertz_approach = HertzApproach(c);
+  problem.first_guess_approach_m = hertz_approach > 0.0 ? hertz_approach : std::max(c.patch.rigid_approach_m, 1e-5);
+  problem.creepages.reference = c.creepages;
+  problem.rolling_speed_m_per_s = 1.0;  // frictional power per unit speed = wear index
+  WheelContactOptions w;
+  w.model = ContactModel::Exact;
+  w.material = c.material;
+  w.friction_coefficient = c.friction_coefficient;
+  w.load_tolerance = options.load_tolerance;  // the BEM's own tolerance is min(1e-7, 0.1 of this)
+  w.exact_element_size_m = options.element_size_m;
+  const PatchSolution s = SolvePatch(problem, w);
+  BenchReference out;
+  out.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.normal_status = s.normal.status;
+  out.tangential_status = s.tangential.status;
+  out.converged = s.normal.in_contact && s.normal.status == "ok" &&
+                  (s.tangential.status == "ok" || s.tangential.status == "full_slip");
+  out.load_iterations = s.load.iterations;
+  out.pmax_Pa = s.normal.pmax_Pa;
+  out.area_m2 = s.normal.area_m2;
+  out.fn_N = s.normal.fn_N;
+  out.approach_m = s.approach_m;
+  out.alpha_c_deg = s.normal.alpha_c_deg;
+  out.contact_at_grid_edge = s.normal.bem.contact_at_grid_edge;
+  out.bem_nx = s.normal.bem.grid.nx;
+  out.bem_ns = s.normal.bem.grid.ns;
+  out.fx_N = s.tangential.fx_N;
+  out.fy_N = s.tangential.fy_N;
+  out.wear_index_N = s.tangential.frictional_power_W;  // at rolling speed 1: sum |p_t . s| dA
+  out.tangential_iterations = s.tangential.iterations;
+  out.tangential_residual = s.tangential.residual;
   return out;
 }
 
@@ -166,17 +198,31 @@ double MedianTimeUs(F&& f, const BenchOptions& o) {
 
 }  // namespace
 
-std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchOptions& options) {
+std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchOptions& options,
+                               std::vector<BenchReference>* references) {
+  // The exact references first, in parallel (each solve is single-threaded and deterministic; their times are those
+  // of one core each), then the timed models one after the other.
+  BenchReferenceOptions ref_options;
+  ref_options.element_size_m = options.bem_element_size_m;
+  ref_options.load_tolerance = options.reference_load_tolerance;
+  ref_options.validate();
+  std::vector<BenchReference> refs(cases.size());
+  std::vector<std::exception_ptr> failed(cases.size());  // an exception must not leave the parallel loop
+#pragma omp parallel for schedule(dynamic)
+  for (int k = 0; k < static_cast<int>(cases.size()); ++k) {
+    try {
+      refs[k] = SolveBenchReference(cases[k], ref_options);
+    } catch (...) {
+      failed[k] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   std::vector<BenchRow> rows;
-  for (const BenchCase& c : cases) {
-    const BemReferenceSolution bem = SolveBenchReference(c, options.bem_element_size_m);
-    PatchSolveOptions ref_options;
-    ref_options.model = ContactModel::Conformal;
-    ref_options.kp_strips = options.tangential_reference.kp_strips;
-    ref_options.fastsim_elements = options.tangential_reference.fastsim_elements;
-    ref_options.load_tolerance = 1e-10;
-    const BenchPatchResult tangential = SolveBenchCase(c, ref_options);
-    const double ft_ref = std::max(std::hypot(tangential.fx_N, tangential.fy_N), 1e-9 * c.normal_load_N);
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const BenchCase& c = cases[k];
+    const BenchReference& ref = refs[k];
+    const double ft_ref = std::max(std::hypot(ref.fx_N, ref.fy_N), 1e-9 * c.normal_load_N);
     struct Variant {
       ContactModel model;
       bool variable_epsilon;
@@ -207,20 +253,22 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         row.grid = grid.label();
         row.case_name = c.name;
         row.family = c.family;
-        row.status = s.normal_status + "/" + s.tangential_status + (bem.contact_at_grid_edge ? "/bem_edge" : "");
-        row.err_pmax = Relative(s.pmax_Pa, bem.pmax_Pa);
-        row.err_area = Relative(s.area_m2, bem.area_m2);
-        row.err_fn = Relative(NormalForceAtApproach(c, o, bem.approach_m), bem.fn_N);
-        row.err_fx = (s.fx_N - tangential.fx_N) / ft_ref;
-        row.err_fy = (s.fy_N - tangential.fy_N) / ft_ref;
-        row.err_wear = Relative(s.wear_index_N, tangential.wear_index_N);
+        row.status = s.normal_status + "/" + s.tangential_status + (ref.contact_at_grid_edge ? "/bem_edge" : "");
+        row.reference_status = ref.status();
+        row.err_pmax = Relative(s.pmax_Pa, ref.pmax_Pa);
+        row.err_area = Relative(s.area_m2, ref.area_m2);
+        row.err_fn = Relative(NormalForceAtApproach(c, o, ref.approach_m), ref.fn_N);
+        row.err_fx = (s.fx_N - ref.fx_N) / ft_ref;
+        row.err_fy = (s.fy_N - ref.fy_N) / ft_ref;
+        row.err_wear = Relative(s.wear_index_N, ref.wear_index_N);
         const ContactModel solved = s.model;  // auto: the chosen model, appended to the status
         if (v.model == ContactModel::Auto) row.status += std::string("/") + to_string(solved);
-        row.alpha_c_deg = solved == ContactModel::Hertz ? tangential.alpha_c_deg : s.alpha_c_deg;
+        row.alpha_c_deg = solved == ContactModel::Hertz ? ref.alpha_c_deg : s.alpha_c_deg;
         rows.push_back(row);
       }
     }
   }
+  if (references) *references = std::move(refs);
   return rows;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // Run time against error (issue 6, `conforma bench`): a fixed set of single-patch contact cases, each a
 // PatchGeometry with its normal load and creepages, solved by every model at several grid sizes and compared with
-//   normal:     the reference BEM with Blanco-Lorenzo coefficients on the same PatchGeometry (bem_reference.hpp),
-//               at the same normal force along the reference normal (fn_bar);
-//   tangential: the conformal model (conformal KP + curved FASTSIM) on a finer grid than any benchmarked one.
+// the `exact` model on the same PatchGeometry (issue 14: the BEM normal problem with Blanco-Lorenzo coefficients
+// and Kalker's exact steady-rolling tangential theory on the same grid, docs/physics-reference.md §10.4 and §14),
+// solved once per case at the same normal force along the reference normal (fn_bar):
+//   normal:     p_max, area and fn_bar (at the reference's approach) against its normal part;
+//   tangential: Fx, Fy (relative to |F_t| of the reference) and the wear index against its tangential part.
 // Cases: Manchester sweep (left wheel, every interpenetration region at the 10 kN Hertz push-down, creepages
 // of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of
 // conforma/validation/analytic_patches.hpp), the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral
@@ -84,19 +86,33 @@ BenchPatchResult SolveBenchCase(const BenchCase& bench_case, const PatchSolveOpt
 // The same model at a given approach (normal problem only): for the Fn error at the reference BEM's approach.
 double NormalForceAtApproach(const BenchCase& bench_case, const PatchSolveOptions& options, double approach_m);
 
-// The BemResult numbers of the reference solve (bem_reference.hpp).
-struct BemReferenceSolution {
-  std::string status;  // to_string(BemStatus): "converged", "not_converged", "no_contact"
-  // max pressure (Pa), contact area (m^2), fn_bar (N, = the case's load), solved approach (m)
-  double pmax_Pa = 0.0, area_m2 = 0.0, fn_N = 0.0, approach_m = 0.0;
-  bool contact_at_grid_edge = false;  // the BEM contact reaches its grid's edge (BemResult)
+// The exact reference of one case (model `exact` through the one patch solver, load given on fn_bar).
+struct BenchReferenceOptions {
+  double element_size_m = kDefaultBemElementSizeM;  // BEM element length along x and s, m, > 0
+  double load_tolerance = 1e-8;                     // relative, on fn_bar, > 0 (the BEM tolerance follows it)
+  void validate() const;                            // InputError naming the option
 };
-// Reference BEM (Blanco-Lorenzo coefficients, load control on fn_bar) on the case's patch.
-// bem_element_size_m: BemOptions::element_dx_m = element_ds_m, m, > 0.
-BemReferenceSolution SolveBenchReference(const BenchCase& bench_case,
-                                         double bem_element_size_m = kDefaultBemElementSizeM);
-// The former argument was a number of elements along x: an int no longer converts silently to a size in metres.
-BemReferenceSolution SolveBenchReference(const BenchCase& bench_case, int) = delete;
+struct BenchReference {
+  // PatchNormalSolution::status ("ok", or the load control's / BEM's failure) and PatchTangentialSolution::status
+  // ("ok", "full_slip", "not_converged", ...)
+  std::string normal_status, tangential_status;
+  bool converged = false;  // normal "ok" and tangential "ok" or "full_slip": the errors against it mean something
+  std::string status() const;  // "converged", or "<normal_status>/<tangential_status>"
+  // normal part: max pressure (Pa), contact area (m^2), fn_bar (N, = the case's load), solved approach (m)
+  double pmax_Pa = 0.0, area_m2 = 0.0, fn_N = 0.0, approach_m = 0.0;
+  double alpha_c_deg = 0.0;            // conformity index over the BEM contact, deg
+  bool contact_at_grid_edge = false;   // the BEM contact reaches its grid's edge (BemResult)
+  int bem_nx = 0, bem_ns = 0;          // the BEM grid of the solution
+  int load_iterations = 0;             // root-finder evaluations of the load control (LoadControlResult::iterations)
+  // tangential part: creep forces (N, patch frame x, t0), wear index sum |p_t . s| dA (N: frictional power at
+  // rolling speed 1), Gauss-Seidel sweeps and last relative traction change (PatchTangentialSolution)
+  double fx_N = 0.0, fy_N = 0.0, wear_index_N = 0.0;
+  int tangential_iterations = 0;
+  double tangential_residual = 0.0;
+  double time_s = 0.0;  // wall time of the solve (normal + tangential), s (not reproducible)
+};
+// One solve of the exact model on the case's patch (SolvePatch with ContactModel::Exact, load given).
+BenchReference SolveBenchReference(const BenchCase& bench_case, const BenchReferenceOptions& options = {});
 
 struct BenchGrid {
   int kp_strips = kDefaultKpStrips;                // PatchSolveOptions::kp_strips
@@ -114,28 +130,31 @@ struct BenchRow {
   // the same with the approach given (one normal solve) + tangential; 0 when the model found no contact
   double time_approach_us = 0.0;
   double time_normal_us = 0.0;    // the approach-given normal solve alone; 0 when the model found no contact
-  // Relative errors, signed: (model - reference) / reference; creep forces relative to |F_t| of the reference.
-  // err_fn: the model's fn_bar at the BEM's approach against the BEM's; err_wear against the tangential reference.
+  // Relative errors against the exact reference of the case, signed: (model - reference) / reference; creep forces
+  // relative to |F_t| of the reference. err_fn: the model's fn_bar at the reference's approach against the
+  // reference's.
   double err_pmax = 0.0, err_area = 0.0, err_fn = 0.0, err_fx = 0.0, err_fy = 0.0, err_wear = 0.0;
-  double alpha_c_deg = 0.0;   // the model's conformity index, deg (hertz: that of the tangential reference)
+  double alpha_c_deg = 0.0;   // the model's conformity index, deg (hertz: that of the reference)
   // normal/tangential status of the model, "/bem_edge" appended when the BEM contact reaches its grid's edge, and
   // for auto "/" and the chosen model
   std::string status;
+  std::string reference_status;  // BenchReference::status() of the case: "converged" or what failed
 };
 
 struct BenchOptions {
-  // models run (Reference is not benchmarked: it is the normal reference; Auto may be included)
+  // models run (Exact is not benchmarked: it is the reference; Auto may be included)
   std::vector<ContactModel> models{ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal};
   std::vector<BenchGrid> grids = DefaultBenchGrids();  // each model at each grid
   bool conformal_eps055 = true;  // also run the conformal model with eps = 0.55 ("conformal_eps055")
-  BenchGrid tangential_reference{121, 100};  // conformal model on this grid
   double bem_element_size_m = kDefaultBemElementSizeM;  // BemOptions::element_dx_m = element_ds_m of the normal reference, m, > 0
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)
   int max_repeats = 201;                     // ... but at most this many (and at least 5)
+  double reference_load_tolerance = 1e-8;    // BenchReferenceOptions::load_tolerance of the exact reference
 };
 
-// Runs every model x grid x case (sequential, so that the timings are not disturbed). Deterministic apart from
-// time_us.
-std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchOptions& options);
+// Runs every model x grid x case (sequential, so that the timings are not disturbed), one exact reference per case.
+// Deterministic apart from the times. references (optional): one per case, in the order of `cases`.
+std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchOptions& options,
+                               std::vector<BenchReference>* references = nullptr);
 
 }  // namespace conforma
