@@ -155,7 +155,7 @@ Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<d
 }
 
 WheelContactOptions ContactOptions(const std::string& model, double load_N, double mu, double shear_modulus_Pa,
-                                   double poisson_ratio, int grid, bool fields) {
+                                   double poisson_ratio, int grid, bool fields, double exact_element_m) {
   WheelContactOptions o;
   o.model = ParseContactModel(model);
   o.vertical_load_N = load_N;
@@ -163,6 +163,7 @@ WheelContactOptions ContactOptions(const std::string& model, double load_N, doub
   o.material.shear_modulus_Pa = shear_modulus_Pa;
   o.material.poisson_ratio = poisson_ratio;
   o.fastsim_elements = grid;
+  o.exact_element_size_m = exact_element_m;
   o.keep_fields = fields;
   o.validate();
   return o;
@@ -171,8 +172,9 @@ WheelContactOptions ContactOptions(const std::string& model, double load_N, doub
 py::list Contact(const Track& track, double lateral_m, double yaw_rad, std::optional<double> roll_rad,
                  const std::string& model, double load_N, double speed_m_s, double mu, double shear_modulus_Pa,
                  double poisson_ratio, int grid, double approach_m, const std::string& side, std::optional<double> xi,
-                 std::optional<double> eta, std::optional<double> phi_per_m, bool fields) {
-  WheelContactOptions o = ContactOptions(model, load_N, mu, shear_modulus_Pa, poisson_ratio, grid, fields);
+                 std::optional<double> eta, std::optional<double> phi_per_m, bool fields, double exact_element_m) {
+  WheelContactOptions o =
+      ContactOptions(model, load_N, mu, shear_modulus_Pa, poisson_ratio, grid, fields, exact_element_m);
   if (xi || eta || phi_per_m) {
     o.creepages_given = true;
     o.creepages = {xi.value_or(0.0), eta.value_or(0.0), phi_per_m.value_or(0.0)};
@@ -198,8 +200,9 @@ py::dict ContactAtPose(const Track& track, const std::string& side, double later
                        double roll_rad, double yaw_rad, double speed_m_s, double lateral_velocity_m_s,
                        double yaw_rate_rad_s, std::optional<double> axle_angular_velocity_rad_s,
                        const std::string& model, double load_N, double mu, double shear_modulus_Pa,
-                       double poisson_ratio, int grid, bool fields) {
-  const WheelContactOptions o = ContactOptions(model, load_N, mu, shear_modulus_Pa, poisson_ratio, grid, fields);
+                       double poisson_ratio, int grid, bool fields, double exact_element_m) {
+  const WheelContactOptions o =
+      ContactOptions(model, load_N, mu, shear_modulus_Pa, poisson_ratio, grid, fields, exact_element_m);
   require_finite(lateral_m, "lateral_m");
   require_finite(vertical_m, "vertical_m");
   require_finite(roll_rad, "roll_rad");
@@ -375,12 +378,14 @@ inclination_rad: rail cant applied by the track; default 1:40 for built-in rail 
         py::arg("poisson_ratio") = 0.28, py::arg("grid") = 30, py::arg("approach_m") = 0.05e-3,
         py::arg("side") = "both", py::arg("xi") = py::none(), py::arg("eta") = py::none(),
         py::arg("phi_per_m") = py::none(), py::arg("fields") = true,
+        py::arg("exact_element_m") = WheelContactOptions{}.exact_element_size_m,
         R"doc(Contact of one wheelset pose, exactly as `conforma contact` (same forces to the last bit).
 
 The wheelset is placed at lateral_m (+ towards the left rail) and yaw_rad in rigid contact with both rails (roll
 from that equilibrium unless roll_rad is given), then each wheel is pushed down until it carries load_N (load
 control), or with load_N < 0 lowered by approach_m (approach mode). Creepages from pure rolling at speed_m_s
-unless xi / eta / phi_per_m are given. model: 'hertz', 'kp', 'kpec', 'conformal', 'auto', 'exact' (BEM + Kalker's exact tangential theory; 'reference' is accepted for it).
+unless xi / eta / phi_per_m are given. model: 'hertz', 'kp', 'kpec', 'conformal', 'auto', 'exact' (BEM + Kalker's
+exact tangential theory; 'reference' is accepted for it; exact_element_m: its element size, default 0.2 mm).
 
 Returns a list of wheel dicts (side, status, pose, vertical_force_N, lateral_force_N, patches). Each patch dict has
 the keys of `conforma contact --json` (fn_N, fx_N, fy_N, mz_Nm, pmax_Pa, area_m2, contact_angle_rad, xi, eta,
@@ -394,6 +399,7 @@ pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear
         py::arg("axle_angular_velocity_rad_s") = py::none(), py::arg("model") = "hertz", py::arg("load_N") = -1.0,
         py::arg("mu") = 0.3, py::arg("shear_modulus_Pa") = 82e9, py::arg("poisson_ratio") = 0.28,
         py::arg("grid") = 30, py::arg("fields") = true,
+        py::arg("exact_element_m") = WheelContactOptions{}.exact_element_size_m,
         "One wheel at a given wheelset pose and velocities (the multibody entry point); load_N < 0 (default): "
         "pose as given, otherwise load control starting from vertical_m. Returns a wheel dict as contact().");
   m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,

@@ -29,13 +29,14 @@ def contact(track: Track, lateral_m: float = 0.0, yaw_rad: float = 0.0, roll_rad
             model: str = "hertz", load_N: float = 10000.0, speed_m_s: float = 2.0, mu: float = 0.3,
             shear_modulus_Pa: float = 82000000000.0, poisson_ratio: float = 0.28, grid: int = 30,
             approach_m: float = 5e-05, side: str = "both", xi: Optional[float] = None, eta: Optional[float] = None,
-            phi_per_m: Optional[float] = None, fields: bool = True, *, strict: bool = False) -> List[Wheel]: ...
+            phi_per_m: Optional[float] = None, fields: bool = True, exact_element_m: float = 0.0002, *,
+            strict: bool = False) -> List[Wheel]: ...
 def contact_at_pose(track: Track, side: str, lateral_m: float, vertical_m: float, roll_rad: float = 0.0,
                     yaw_rad: float = 0.0, speed_m_s: float = 2.0, lateral_velocity_m_s: float = 0.0,
                     yaw_rate_rad_s: float = 0.0, axle_angular_velocity_rad_s: Optional[float] = None,
                     model: str = "hertz", load_N: float = -1.0, mu: float = 0.3,
                     shear_modulus_Pa: float = 82000000000.0, poisson_ratio: float = 0.28, grid: int = 30,
-                    fields: bool = True, *, strict: bool = False) -> Wheel: ...
+                    fields: bool = True, exact_element_m: float = 0.0002, *, strict: bool = False) -> Wheel: ...
 def manchester(model: str = "conformal", creepages_from_file: bool = True, data_dir: str = ...,
                fastsim_elements: int = 30, *, strict: bool = False) -> List[ManchesterRow]: ...
 def wear(scenario: Union[str, Dict[str, Any]], model: str = "", steps: int = -1, total_km: float = -1.0,

@@ -86,6 +86,11 @@ def test_exact_model_reports_the_convergence_of_both_solves(track):
         assert p["model"] == "exact" and p["tangential_status"] in ("ok", "full_slip")
         assert p["normal_iterations"] > 0 and 0.0 <= p["normal_residual"] < 1e-6
         assert p["tangential_iterations"] > 0 and 0.0 <= p["tangential_residual"] < 1e-5
+    # a finer element size changes the solution by the discretisation error only
+    fine = conforma.contact(track, lateral_m=3e-3, yaw_rad=2e-3, model="exact", side="left", fields=False,
+                            exact_element_m=0.1e-3)[0]
+    assert fine["patches"][0]["fn_N"] == pytest.approx(left["patches"][0]["fn_N"], rel=2e-3)
+    assert fine["patches"][0]["normal_iterations"] > 0
     # the former name of the model is accepted and gives the same solution
     again = conforma.contact(track, lateral_m=3e-3, yaw_rad=2e-3, model="reference", side="left", fields=False)[0]
     assert again["patches"][0]["fx_N"] == left["patches"][0]["fx_N"]
