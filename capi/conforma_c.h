@@ -157,7 +157,7 @@ typedef struct conforma_patch_result {
   double area_m2, pmax_Pa, adhesion_area_m2, slip_area_m2, frictional_power_W;
   double creepage_longitudinal, creepage_lateral, creepage_spin_per_m;  /* at the reference point */
   double conformity_index_deg;     /* alpha_c (paper 003 eq. 13); 0 for the Hertz model */
-  int is_conformal;                /* 1 when alpha_c > 18 deg (KP and reference models; a flag only) */
+  int is_conformal;                /* 1 when alpha_c > 18 deg (KP and exact models; a flag only) */
 } conforma_patch_result;
 
 typedef struct conforma_wheel_result {

@@ -92,3 +92,35 @@ TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
 }
 
 }  // namespace
+
+namespace {
+
+// The exact model through the C API (issue 14): the same creep forces as the pipeline's SolveWheelContact, i.e. as
+// `conforma contact --model exact`; "reference" is accepted for it.
+TEST(CApiStatus, ExactModelAsThePipelineSolvesIt) {
+  conforma_track_params track;
+  conforma_contact_params contact;
+  conforma_default_track_params(&track);
+  conforma_default_contact_params(&contact);
+  const conforma_wheelset_state s = CApiMBenchModel::State(0.0);
+  const conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
+  double fx[2] = {0.0, 0.0};
+  int k = 0;
+  for (const char* name : {"exact", "reference"}) {
+    contact.model = name;
+    conforma_model* model = nullptr;
+    char error[CONFORMA_ERROR_TEXT];
+    ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
+    struct Destroy { conforma_model* m; ~Destroy() { conforma_model_destroy(m); } } destroy{model};
+    conforma_wheelset_result r;
+    ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+    ASSERT_GE(r.wheel[0].patch_count, 1);
+    EXPECT_GT(r.wheel[0].patch[0].normal_force_N, 0.0);
+    EXPECT_GT(r.wheel[0].patch[0].adhesion_area_m2, 0.0);  // a tangential solution, partial slip on the tread
+    fx[k++] = r.wheel[0].patch[0].longitudinal_force_N;
+  }
+  EXPECT_EQ(fx[0], fx[1]);
+  EXPECT_NE(fx[0], 0.0);
+}
+
+}  // namespace
