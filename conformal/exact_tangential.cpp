@@ -147,13 +147,12 @@ ExactTangentialResult SolveExactTangential(const BemGrid& grid, const Eigen::Mat
   for (long k = 0; k < n; ++k) loaded[static_cast<size_t>(k)] = pn[k] > 0.0 ? 1 : 0;
   g = pn * mu(0.0);
   out.status = ExactTangentialStatus::NotConverged;
-  // Lines per FFT refresh: the direct updates within a block cost ~ns K nx^2 pair products per sweep, the refreshes
-  // ns / K FFT products of ~4 nx ns points; with the measured ~0.075 ns per pair product and ~150 ns per FFT point
-  // (the four transforms of a product) the sum is least at K = sqrt(8000 ns / nx) (§14.2). K only changes the cost
-  // (and the rounding), not the iteration.
+  // Lines per FFT refresh: the direct updates within a block cost ~ns K nx^2 / 2 element pairs per sweep, the
+  // refreshes ns / K FFT products of ~4 nx ns points; with the measured ~1.9 ns per pair and ~100 ns per FFT point the
+  // sum is least at K = sqrt(420 ns / nx) (§14.2). K only changes the cost (and the rounding), not the iteration.
   const int block = options.lines_per_fft > 0
                         ? options.lines_per_fft
-                        : std::clamp(static_cast<int>(std::lround(std::sqrt(8000.0 * ns / nx))), 1, ns);
+                        : std::clamp(static_cast<int>(std::lround(std::sqrt(420.0 * ns / nx))), 1, ns);
   for (int sweep = 1; sweep <= options.max_sweeps; ++sweep) {
     out.sweeps = sweep;
     double change = 0.0;
