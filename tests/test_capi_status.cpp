@@ -13,6 +13,16 @@
 
 namespace {
 
+// A model of `track` with `contact`, evaluated once at s with o (the model is destroyed before returning).
+void EvaluateOnce(const conforma_track_params& track, const conforma_contact_params& contact,
+                  const conforma_wheelset_state& s, const conforma_evaluation_options& o, conforma_wheelset_result* r) {
+  conforma_model* model = nullptr;
+  char error[CONFORMA_ERROR_TEXT];
+  ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
+  struct Destroy { conforma_model* m; ~Destroy() { conforma_model_destroy(m); } } destroy{model};
+  ASSERT_EQ(conforma_evaluate(model, &s, &o, r), CONFORMA_OK) << r->error_message;
+}
+
 TEST(CApiStatus, RigidEquilibriumMustBeZeroOrOne) {
   CApiMBenchModel mbench;
   ASSERT_NO_FATAL_FAILURE(mbench.Create());
@@ -64,12 +74,8 @@ TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
   conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
   for (double mu : {0.3, 5.0}) {
     contact.friction_coefficient = mu;
-    conforma_model* model = nullptr;
-    char error[CONFORMA_ERROR_TEXT];
-    ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
-    struct Destroy { conforma_model* m; ~Destroy() { conforma_model_destroy(m); } } destroy{model};
     conforma_wheelset_result r;
-    ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+    ASSERT_NO_FATAL_FAILURE(EvaluateOnce(track, contact, s, o, &r));
     for (int k = 0; k < 2; ++k) {
       const std::string text = r.wheel[k].warnings;
       if (mu == 0.3) {
@@ -82,7 +88,7 @@ TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
     }
     if (mu == 0.3) {
       o.vertical_load_N[0] = o.vertical_load_N[1] = 1e7;
-      ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+      ASSERT_NO_FATAL_FAILURE(EvaluateOnce(track, contact, s, o, &r));
       // Hertz carries it, at ~5.6 GPa: named as above the material limit
       EXPECT_NE(std::string(r.wheel[0].warnings).find("pressure_limit:"), std::string::npos) << r.wheel[0].warnings;
       o = CApiMBenchModel::RigidEquilibriumOptions();
@@ -90,10 +96,6 @@ TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
   }
   EXPECT_EQ(conforma_api_version(), 2);
 }
-
-}  // namespace
-
-namespace {
 
 // The exact model through the C API (issue 14): the same creep forces as the pipeline's SolveWheelContact, i.e. as
 // `conforma contact --model exact`; "reference" is accepted for it.
@@ -108,12 +110,8 @@ TEST(CApiStatus, ExactModelAsThePipelineSolvesIt) {
   int k = 0;
   for (const char* name : {"exact", "reference"}) {
     contact.model = name;
-    conforma_model* model = nullptr;
-    char error[CONFORMA_ERROR_TEXT];
-    ASSERT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_OK) << error;
-    struct Destroy { conforma_model* m; ~Destroy() { conforma_model_destroy(m); } } destroy{model};
     conforma_wheelset_result r;
-    ASSERT_EQ(conforma_evaluate(model, &s, &o, &r), CONFORMA_OK) << r.error_message;
+    ASSERT_NO_FATAL_FAILURE(EvaluateOnce(track, contact, s, o, &r));
     ASSERT_GE(r.wheel[0].patch_count, 1);
     EXPECT_GT(r.wheel[0].patch[0].normal_force_N, 0.0);
     EXPECT_GT(r.wheel[0].patch[0].adhesion_area_m2, 0.0);  // a tangential solution, partial slip on the tread
