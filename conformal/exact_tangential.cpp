@@ -148,11 +148,13 @@ ExactTangentialResult SolveExactTangential(const BemGrid& grid, const Eigen::Mat
   g = pn * mu(0.0);
   out.status = ExactTangentialStatus::NotConverged;
   // Lines per FFT refresh: the direct updates within a block cost ~ns K nx^2 / 2 element pairs per sweep, the
-  // refreshes ns / K FFT products of ~4 nx ns points; with the measured ~1.9 ns per pair and ~100 ns per FFT point the
-  // sum is least at K = sqrt(420 ns / nx) (§14.2). K only changes the cost (and the rounding), not the iteration.
+  // refreshes ns / K FFT products of ~4 nx ns points. Measured (§14.2): ~0.4 ns per pair and ~17 ns per FFT point on a
+  // 66 x 150 grid (optimum K ~ sqrt(340 ns / nx) = 28), cheaper pairs on small grids (the Manchester tread patch is
+  // fastest with all lines in one block); K = sqrt(2000 ns / nx) is the compromise. K only changes the cost (and the
+  // rounding), not the iteration.
   const int block = options.lines_per_fft > 0
                         ? options.lines_per_fft
-                        : std::clamp(static_cast<int>(std::lround(std::sqrt(420.0 * ns / nx))), 1, ns);
+                        : std::clamp(static_cast<int>(std::lround(std::sqrt(2000.0 * ns / nx))), 1, ns);
   for (int sweep = 1; sweep <= options.max_sweeps; ++sweep) {
     out.sweeps = sweep;
     double change = 0.0;
