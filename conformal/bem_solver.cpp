@@ -222,7 +222,8 @@ void CheckGridBudget(double nx, double ns, double dx_m, double ds_m, long max_el
                 "reference BEM grid of %.0f x %.0f = %.0f elements (element size %.4g mm along x, %.4g mm along s) "
                 "exceeds the memory budget of %ld elements (BemOptions.max_elements, WheelContactOptions::"
                 "exact_max_elements, ~1 kB per element): increase the element size (WheelContactOptions::"
-                "exact_element_size_m, BemOptions.element_dx_m / element_ds_m) or the budget",
+                "exact_element_size_m, BemOptions.element_dx_m / element_ds_m; on the command line: "
+                "--exact-element-mm) or the budget",
                 nx, ns, elements, dx_m * 1e3, ds_m * 1e3, max_elements);
   throw InputError(text);
 }

@@ -39,7 +39,7 @@ RigidSlipField RigidSlipFromColumnCreepages(const BemGrid& grid, const std::vect
 
 RigidSlipField RigidSlipFromCreepages(const BemGrid& grid, const FastsimCreepages& creepages, double spin_origin_x_m,
                                       double spin_origin_s_m) {
-  if (grid.ns < 1) grid.validate();
+  grid.validate();  // ns >= 1 before it sizes the vector
   return RigidSlipFromColumnCreepages(grid, std::vector<FastsimCreepages>(static_cast<size_t>(grid.ns), creepages),
                                       spin_origin_x_m, spin_origin_s_m);
 }

@@ -20,12 +20,6 @@ SteadyRollingOperator::SteadyRollingOperator(const BemGrid& grid, const ElasticC
       axs(di + nx_ - 1, dj + ns_ - 1) = a.xs;
       ass(di + nx_ - 1, dj + ns_ - 1) = a.ss;
     }
-  line_xx_.resize(static_cast<size_t>(rows));
-  line_ss_.resize(static_cast<size_t>(rows));
-  for (int k = 0; k < rows; ++k) {
-    line_xx_[static_cast<size_t>(k)] = axx(k, ns_ - 1);
-    line_ss_[static_cast<size_t>(k)] = ass(k, ns_ - 1);
-  }
   axx_ = axx;
   axs_ = axs;
   ass_ = ass;

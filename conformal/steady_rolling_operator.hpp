@@ -27,8 +27,8 @@ class SteadyRollingOperator {
   void Apply(const Eigen::VectorXd& vx, const Eigen::VectorXd& vs, Eigen::VectorXd& out_x, Eigen::VectorXd& out_s);
   // A within one grid line (same column: alpha_J = alpha_I, A_xs = 0 on Y = 0): A_xx(di, 0), A_ss(di, 0) for the
   // offset di = i_I - i_J in (-nx, nx).
-  double line_xx(int di) const { return line_xx_[static_cast<size_t>(di + nx_ - 1)]; }
-  double line_ss(int di) const { return line_ss_[static_cast<size_t>(di + nx_ - 1)]; }
+  double line_xx(int di) const { return axx_(di + nx_ - 1, ns_ - 1); }
+  double line_ss(int di) const { return ass_(di + nx_ - 1, ns_ - 1); }
   // Adds A (dv on column j) to the slip of the elements of the columns other than j that `mask` marks (nonzero), by
   // direct summation over the elements of column j with a nonzero change (Gauss-Seidel within a block of lines, §14.2).
   // Only the columns in [first_column, last_column] (other than j) are updated.
@@ -41,7 +41,6 @@ class SteadyRollingOperator {
   bool corrected_ = false;
   Eigen::VectorXd cos_, sin_;  // per element, of the column's alpha (corrected only)
   std::optional<bem_detail::Convolution> xx_, xs_, ss_;
-  std::vector<double> line_xx_, line_ss_;
   Eigen::MatrixXd axx_, axs_, ass_;  // A tables, (2nx-1) x (2ns-1), offsets (di + nx - 1, dj + ns - 1)
   Eigen::VectorXd a_, b_, t_;  // scratch
   bem_detail::Convolution::Spectrum fx_, fs_, acc_x_, acc_s_;  // scratch (FFT path)

@@ -57,15 +57,13 @@ double HertzApproach(const BenchCase& c) {
   return h.status == HertzStatus::Ok ? h.approach_m : 0.0;
 }
 
-}  // namespace
-
-PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& options) {
-  options.validate();
-  const RigidContactPoint point = HertzPointOf(c);
+// The case's patch problem for `model`, load given on fn_bar (approach given when approach_m > 0), the creepages at
+// unit rolling speed; `point` (HertzPointOf(c)) must outlive the problem.
+PatchProblem CaseProblem(const BenchCase& c, ContactModel model, const RigidContactPoint& point, double approach_m) {
   PatchProblem problem;
-  problem.model = options.model;
+  problem.model = model;
   problem.input = PatchInput{&c.patch, &point};
-  problem.approach_m = options.approach_m;
+  problem.approach_m = approach_m;
   problem.normal_load_N = c.normal_load_N;
   // the load control starts at the Hertz approach (or the rigid approach where Hertz has no solution)
   const double hertz_approach = HertzApproach(c);
@@ -75,6 +73,15 @@ PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& optio
   problem.selection_approach_m = c.patch.rigid_approach_m > 0.0 ? c.patch.rigid_approach_m : hertz_approach;
   problem.creepages.reference = c.creepages;
   problem.rolling_speed_m_per_s = 1.0;  // frictional power per unit speed = wear index
+  return problem;
+}
+
+}  // namespace
+
+PatchSolution SolveBenchPatch(const BenchCase& c, const PatchSolveOptions& options) {
+  options.validate();
+  const RigidContactPoint point = HertzPointOf(c);
+  PatchProblem problem = CaseProblem(c, options.model, point, options.approach_m);
   problem.solve_tangential = options.solve_tangential;
   return SolvePatch(problem, ContactOptionsFor(c, options));
 }
@@ -135,14 +142,7 @@ BenchReference SolveBenchReference(const BenchCase& c, const BenchReferenceOptio
   options.validate();
   const auto start = std::chrono::steady_clock::now();
   const RigidContactPoint point = HertzPointOf(c);
-  PatchProblem problem;
-  problem.model = ContactModel::Exact;
-  problem.input = PatchInput{&c.patch, &point};
-  problem.normal_load_N = c.normal_load_N;  // load given on fn_bar (the load control of every model)
-  const double hertz_approach = HertzApproach(c);
-  problem.first_guess_approach_m = hertz_approach > 0.0 ? hertz_approach : std::max(c.patch.rigid_approach_m, 1e-5);
-  problem.creepages.reference = c.creepages;
-  problem.rolling_speed_m_per_s = 1.0;  // frictional power per unit speed = wear index
+  const PatchProblem problem = CaseProblem(c, ContactModel::Exact, point, 0.0);  // load given on fn_bar
   WheelContactOptions w;
   w.model = ContactModel::Exact;
   w.material = c.material;

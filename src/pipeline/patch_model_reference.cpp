@@ -2,7 +2,7 @@
 // Blanco-Lorenzo influence coefficients (docs/physics-reference.md §10); no tangential part.
 #include <algorithm>
 #include <cmath>
-#include <string>
+#include <utility>
 #include <vector>
 
 #include "conforma/bem_reference.hpp"
@@ -25,17 +25,9 @@ PatchNormalSolution SolveReferencePatchNormal(ContactModel, const PatchInput& in
   b.element_dx_m = b.element_ds_m = options.exact_element_size_m;
   b.max_elements = options.exact_max_elements;
   b.tolerance = std::min(1e-7, 0.1 * options.load_tolerance);  // force noise well below the load control tolerance
-  BemResult r;
-  try {
-    r = SolveBemNormal(patch, options.material, b);
-  } catch (const InputError& e) {  // name the command-line flag of the element size too (grid budget)
-    const std::string what = e.what();
-    if (what.find("exact_element_size_m") == std::string::npos) throw;
-    throw InputError(what + "; on the command line: --exact-element-mm");
-  }
+  BemResult r = SolveBemNormal(patch, options.material, b);
   out.status = r.status == BemStatus::Converged ? "ok" : r.status == BemStatus::NoContact ? "no_contact" : "not_converged";
   if (r.status == BemStatus::NoContact) return out;
-  out.bem = r;  // the grid and pressure field the exact tangential solve works on
   out.in_contact = r.normal_force_reference_N > 0.0;
   out.fn_N = r.normal_force_reference_N;
   // lateral component of the curved-surface pressure along t0 (n_j = cos a n0 + sin a t0, patch.hpp), as the KP
@@ -53,6 +45,7 @@ PatchNormalSolution SolveReferencePatchNormal(ContactModel, const PatchInput& in
   const ConformityIndex index = ComputeConformityIndex(angles, options.conformity_threshold_deg);
   out.alpha_c_deg = index.alpha_c_deg;
   out.is_conformal = index.is_conformal;
+  out.bem = std::move(r);  // the grid and pressure field the exact tangential solve works on
   return out;
 }
 
