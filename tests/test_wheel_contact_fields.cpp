@@ -152,6 +152,7 @@ TEST(WheelContactFields, CacheKeysKeepTheFormerContentsAndOrder) {
   expected.push_back(o.max_touching_contact_angle_rad);
   expected.push_back(o.auto_selection.min_hertz_axis_ratio);
   expected.push_back(static_cast<double>(o.exact_max_elements));  // added with exact_element_size_m (issue 14)
+  expected.push_back(o.patch_combine_distance_m);  // patch grouping (issue 15)
   const std::vector<double> normal = NormalCacheKey(Geometry(), Side::Right, pose, o);
   EXPECT_EQ(normal, expected);
   const std::vector<double> tail = LegacyReportTail(v, o);

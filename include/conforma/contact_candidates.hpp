@@ -21,6 +21,10 @@
 
 namespace conforma {
 
+// Default combine distance of CandidateOptions::combine_distance_m: 4 mm, CONTACT's D_COMB (its wheel-rail examples
+// and manual default), below which CONTACT merges two patches completely.
+inline constexpr double kDefaultCombineDistanceM = 4e-3;
+
 // InputError outside the ranges given.
 struct CandidateOptions {
   double strip_width_m = 0.1e-3;  // strip width ds of the patches, m, > 0 (default 0.1 mm)
@@ -33,9 +37,12 @@ struct CandidateOptions {
   // interpenetration at the Hertz approach (the bare definition); Kik-Piotrowski's virtual penetration
   // epsilon = 0.55 (docs/physics-reference.md §3.1) gives regions the size of the elastic contact area.
   double penetration_factor = 1.0;  // > 0 (checked in the load-given mode only)
-  // Regions separated by less than this rail arc length are combined into one patch (CONTACT's D_COMB,
-  // 4 mm there). 0 keeps every interpenetration region separate.
-  double combine_distance_m = 0.0;  // m, >= 0
+  // Patch grouping: neighbouring interpenetration regions separated along the rail profile by less than this arc
+  // length are solved as ONE curved patch (CONTACT's D_COMB, 4 mm in its wheel-rail examples): its strips span both
+  // regions and the gap between them, with the local normals alpha(s) turning across it, and its reference point is
+  // the centre of the combined interval. 0 keeps every interpenetration region separate. docs/physics-reference.md
+  // §1.6.1. Default kDefaultCombineDistanceM.
+  double combine_distance_m = kDefaultCombineDistanceM;  // m, >= 0
   // Load-given mode, elastic flange: the wheel's reference (touching) position ignores gap minima steeper than
   // this (WheelsetTrackGeometry::MinimumVerticalGap), so a flange pressed against the rail interpenetrates
   // and the load control finds the vertical position with the flange force included. Default: all count.

@@ -3,6 +3,7 @@
 // declared once, with their defaults; every other options struct that needs them holds a WheelContactOptions.
 #include "conforma/bem_reference.hpp"
 #include "conforma/conformity.hpp"
+#include "conforma/contact_candidates.hpp"
 #include "conforma/contact_model.hpp"
 #include "conforma/creepage.hpp"
 #include "conforma/fastsim.hpp"
@@ -44,6 +45,10 @@ struct WheelContactOptions {
   long exact_max_elements = kDefaultBemMaxElements;
   // Strip width ds of the candidate patches (PatchGeometry::ds_m, contact_candidates.hpp), m, > 0; default 0.1 mm
   double candidate_strip_width_m = 0.1e-3;
+  // Patch grouping (CandidateOptions::combine_distance_m, contact_candidates.hpp): interpenetration regions closer
+  // than this along the rail profile are solved as one curved patch; 0 keeps them separate. m, >= 0; default 4 mm
+  // (CONTACT's D_COMB).
+  double patch_combine_distance_m = kDefaultCombineDistanceM;
   // Load control, elastic flange: the wheel's reference (touching) position ignores gap minima whose rail
   // contact angle exceeds this, so a flange pressed against the rail interpenetrates and carries its force
   // elastically instead of lifting the wheel rigidly onto it (a worn, steep flange acts as a wall that the

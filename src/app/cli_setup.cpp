@@ -98,6 +98,9 @@ void ContactArgs::add_to(CLI::App* app) {
   app->add_option("--exact-element-mm", exact_element_mm,
                   "exact model: BEM element size along x and along the rail profile (as CONTACT's 0.2 mm grid); the "
                   "grid may hold at most " + std::to_string(WheelContactOptions{}.exact_max_elements) + " elements");
+  app->add_option("--combine-mm", combine_mm,
+                  "patch grouping: interpenetration regions closer than this along the rail profile are solved as "
+                  "one curved patch (CONTACT's D_COMB); 0 keeps every region a separate patch");
   app->add_option("--penetration", penetration, "conformal model: virtual penetration rule, variable (KPEC) or "
                                                 "constant (eps = 0.55)")
       ->check(CLI::IsMember({"variable", "constant"}));
@@ -193,6 +196,7 @@ WheelContactOptions ContactArgs::options() const {
   o.fastsim_elements = grid;
   o.exact_element_size_m = exact_element_mm * 1e-3;
   o.conformal_variable_penetration = penetration == "variable";
+  o.patch_combine_distance_m = combine_mm * 1e-3;
   o.validate();
   return o;
 }

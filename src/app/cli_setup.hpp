@@ -42,6 +42,7 @@ struct ContactArgs {
   double shear_modulus_GPa = 82.0, poisson = 0.28;
   int grid = kDefaultFastsimElements;
   double exact_element_mm = WheelContactOptions{}.exact_element_size_m * 1e3;  // --exact-element-mm
+  double combine_mm = WheelContactOptions{}.patch_combine_distance_m * 1e3;  // --combine-mm
   std::string penetration = "variable";  // conformal model: variable (KPEC rule) or constant (eps = 0.55)
   // Slip-dependent friction law (friction_law.hpp, docs/physics-reference.md §7.4): constant (mu = --mu),
   // exponential (paper 002 f1a), piecewise-linear (f1b), static-dynamic (f2); the paper's names are accepted too.

@@ -99,6 +99,7 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
                                       const CandidateOptions& o) {
   require_positive(o.strip_width_m, "CandidateOptions.strip_width_m");
   require_non_negative(o.margin_fraction, "CandidateOptions.margin_fraction");
+  require_non_negative(o.combine_distance_m, "CandidateOptions.combine_distance_m");
   CandidateResult out;
   out.pose = pose;
   const WheelsetTrackGeometry::Frame f = g.SideFrame(side, pose);

@@ -43,6 +43,7 @@ void WheelContactOptions::validate() const {
   }
   require_positive(load_tolerance, "load_tolerance");
   require_positive(candidate_strip_width_m, "candidate_strip_width_m");
+  require_non_negative(patch_combine_distance_m, "patch_combine_distance_m");
   require_finite(conformity_threshold_deg, "conformity_threshold_deg");
   if (fastsim_elements < 2) throw InputError("option 'fastsim_elements' must be >= 2");
   if (kp_strips < 3) throw InputError("option 'kp_strips' must be >= 3");
@@ -178,6 +179,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   // 1. Candidates: at the Hertz push-down for the load (load control) or at the given pose.
   CandidateOptions candidate_options;
   candidate_options.strip_width_m = options.candidate_strip_width_m;
+  candidate_options.combine_distance_m = options.patch_combine_distance_m;
   candidate_options.max_touching_contact_angle_rad = options.max_touching_contact_angle_rad;
   const bool load_control = options.vertical_load_N >= 0.0;
   stage.finished = true;
