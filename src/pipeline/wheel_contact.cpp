@@ -343,12 +343,15 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       // carries the load: NotConverged, the pressure-balanced solution reported.
       stage.finished = false;
       std::shared_ptr<const WheelContactReport> last;
+      double best_push = 0.0, best_error = 1e300;  // the evaluation nearest to the load
       auto total_at = [&](double push) {
         const double dz = load.push_m + push;
         solve_all(dz, &normal);
         stage.report.pose.vertical_m = candidates_pose.vertical_m - dz;
         last = std::make_shared<const WheelContactReport>(
             SolveTangentialStage(stage, geometry, side, velocity, options));
+        const double error = std::fabs(last->vertical_force_N - options.vertical_load_N);
+        if (error < best_error) best_error = error, best_push = push;
         return last->vertical_force_N;
       };
       const double total_at_pressure_balance = total_at(0.0);
@@ -371,6 +374,10 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       if (total.status != LoadControlStatus::Ok && total.status != LoadControlStatus::NotConverged) {
         report.status = WheelContactStatus::NotConverged;  // no bracket: the pressure-balanced solution
         total_at(0.0);
+      } else if (total.status == LoadControlStatus::NotConverged && best_push != total.push_m) {
+        // F_z jumps over the load (a discontinuity of a model's normal solution in the push, seen with the
+        // conformal model on worn profiles): the bracket closes on the jump; report the evaluation nearest to it
+        total_at(best_push);
       }
       WheelContactReport coupled = *last;
       coupled.load_iterations = load.iterations + 1 + total.iterations;
