@@ -110,7 +110,7 @@ struct WheelContactReport {
   // Vertical component of the pressure (normal) forces alone, N (balanced against the load with load_balance pressure)
   double pressure_vertical_force_N = 0.0;
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side), N
-  int load_iterations = 0;           // root-finder evaluations of the load control; 0 in approach mode
+  int load_iterations = 0;           // root-finder evaluations of the load control (total balance: §3.6.1); 0 in approach mode
   // Plausibility warnings, one "code: message" line each (contact_plausibility.hpp): nominal radius far from the
   // profile's, friction outside 0.05-1, pressure above the material limit, load control not converged
   std::vector<std::string> warnings;

@@ -323,8 +323,11 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
     double scale = 0.0;
     for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
     scale = std::max(scale, 1e-6);
+    // (with the total-force balance to follow, phase 1 only starts phase 2: a 1e-3 tolerance is enough)
+    const double pressure_tolerance =
+        TotalForceLoadControl(options) ? std::max(options.load_tolerance, 1e-3) : options.load_tolerance;
     const LoadControlResult load = SolveLoadControl([&](double dz) { return solve_all(dz, &normal); },
-                                                    options.vertical_load_N, scale, options.load_tolerance);
+                                                    options.vertical_load_N, scale, pressure_tolerance);
     if (load.status == LoadControlStatus::NoBracket) {
       report.status = WheelContactStatus::NotConverged;
       return stage;
@@ -362,15 +365,23 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
         stage.coupled = std::make_shared<const WheelContactReport>(std::move(failed));
         return stage;
       }
-      // the first bracket: with F_z / pressure about constant in the push and a Hertzian approach ~ N^(2/3), the
-      // root is near approach (ratio^(-2/3) - 1) from phase 1's push, ratio = F_z / load there (1.5x margin)
+      // the first step: with F_z / pressure about constant in the push and a Hertzian approach ~ N^(2/3), the
+      // root is at approach (ratio^(-2/3) - 1) from phase 1's push, ratio = F_z / load there (exact for a Hertzian
+      // patch); doubled until F_z crosses the load, within 8 approaches
       const double ratio = total_at_pressure_balance / options.vertical_load_N;
-      const double approach = std::max(scale, std::fabs(load.push_m));
-      const double total_scale = std::max(1e-7, 1.5 * std::fabs(std::pow(ratio, -2.0 / 3.0) - 1.0) * approach);
-      const LoadControlResult total = std::fabs(ratio - 1.0) <= options.load_tolerance
-                                          ? LoadControlResult{LoadControlStatus::Ok, 0.0, 0.0, 0}
-                                          : SolveLoadControl(total_at, options.vertical_load_N, total_scale,
-                                                             options.load_tolerance);
+      // the wheel's vertical push from first touch: each patch's normal approach over its n0_z (a flange patch at
+      // 60-70 deg needs 2-3x its approach vertically)
+      double approach = std::fabs(load.push_m);
+      for (size_t j = 0; j < n; ++j) {
+        const bool hertz = patch_model[j] == ContactModel::Hertz;
+        const double rigid = hertz ? -hertz_points[j].gap_m : candidates.candidates[j].patch.rigid_approach_m;
+        const double nz = hertz ? std::cos(hertz_points[j].contact_angle_rad) : frames[j].normal.z();
+        if (nz > 0.1 && rigid > 0.0) approach = std::max(approach, rigid / nz + load.push_m);
+      }
+      approach = std::max(approach, 1e-7);
+      const LoadControlResult total =
+          SolveLoadControlFrom(total_at, total_at_pressure_balance, options.vertical_load_N,
+                               (std::pow(ratio, -2.0 / 3.0) - 1.0) * approach, 8.0 * approach, options.load_tolerance);
       if (total.status != LoadControlStatus::Ok && total.status != LoadControlStatus::NotConverged) {
         report.status = WheelContactStatus::NotConverged;  // no bracket: the pressure-balanced solution
         total_at(0.0);
