@@ -154,7 +154,9 @@ TEST(TotalForceBalance, NadalLimitOfAWheelSlidingOnItsFlange) {
         const double d0 = p.contact_angle_rad;
         const double along_t0 = p.lateral_force_N * std::cos(d0) + p.vertical_force_N * std::sin(d0);
         const double delta = d0 - std::atan((along_t0 - p.fy_N) / p.fn_N);
-        const double y_over_q = -r.lateral_force_N / r.vertical_force_N;  // Y on the wheel towards the track centre
+        // Y on the wheel towards the track centre, Q the load (Y / F_z alone would not depend on the balance for one
+        // patch in full slip: the test is that the load is carried by F_z = N cos(delta) + mu N sin(delta))
+        const double y_over_q = -r.lateral_force_N / o.vertical_load_N;
         const double nadal = (std::tan(delta) - mu) / (1.0 + mu * std::tan(delta));
         const double error = y_over_q / nadal - 1.0;
         std::printf(" %-10s %d     %7.2f  %.1f  %.5f  %.5f  %+7.3f  %+.1e  %.0f\n", to_string(model), c.track,
@@ -162,6 +164,14 @@ TEST(TotalForceBalance, NadalLimitOfAWheelSlidingOnItsFlange) {
                     p.fn_N);
         EXPECT_NEAR(r.vertical_force_N, o.vertical_load_N, 1e-5 * o.vertical_load_N);
         EXPECT_LT(std::fabs(error), 0.01) << to_string(model) << " delta " << delta / kDeg << " mu " << mu;
+        if (model == ContactModel::Hertz && mu == 0.3) {  // the pressure balance carries Q = N cos(delta) instead
+          WheelContactOptions pressure = o;
+          pressure.load_balance = LoadBalance::Pressure;
+          const WheelContactReport rp = SolveWheelContact(Track(c.track), Side::Left, c.pose(0.0), Rolling(), pressure);
+          const double y_over_q_pressure = -rp.lateral_force_N / o.vertical_load_N;
+          EXPECT_NEAR(y_over_q_pressure, std::tan(delta) - mu, 1e-3 * std::tan(delta));
+          EXPECT_GT(y_over_q_pressure / nadal - 1.0, 0.5);
+        }
       }
     }
   }
