@@ -351,6 +351,7 @@ TEST(WheelContactCacheTest, RepeatedPosesReuseTheNormalProblemWithIdenticalResul
   WheelContactOptions o;
   o.model = ContactModel::Auto;
   o.keep_fields = true;
+  o.load_balance = LoadBalance::Pressure;  // the normal problem alone is reusable only when it balances the pressure
   const WheelsetPose poses[] = {Pose(3.0, 1.0), Pose(6.25), Pose(0.0, -2.0)};
   for (const WheelsetPose& pose : poses) {
     for (double axle_speed : {2.0 / 0.46, 2.02 / 0.46, 2.0 / 0.46}) {  // an axle-speed difference, then a repeat

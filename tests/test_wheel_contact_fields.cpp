@@ -153,6 +153,7 @@ TEST(WheelContactFields, CacheKeysKeepTheFormerContentsAndOrder) {
   expected.push_back(o.auto_selection.min_hertz_axis_ratio);
   expected.push_back(static_cast<double>(o.exact_max_elements));  // added with exact_element_size_m (issue 14)
   expected.push_back(o.patch_combine_distance_m);  // patch grouping (issue 15)
+  expected.push_back(static_cast<double>(o.load_balance));        // added with total-force load control (issue 15)
   const std::vector<double> normal = NormalCacheKey(Geometry(), Side::Right, pose, o);
   EXPECT_EQ(normal, expected);
   const std::vector<double> tail = LegacyReportTail(v, o);
@@ -283,10 +284,14 @@ void ExpectIdenticalReports(const WheelContactReport& a, const WheelContactRepor
 
 TEST(WheelContactFields, CachedEqualsUncachedForPosesModelsAndVelocities) {
   WheelContactCache cache;
+  // pressure balance: the normal stage is reused for another axle speed; total balance (it holds the tangential
+  // solution): keyed by the whole report
+  for (LoadBalance balance : {LoadBalance::Pressure, LoadBalance::Total})
   for (ContactModel m : {ContactModel::Hertz, ContactModel::Kpec, ContactModel::Conformal, ContactModel::Auto}) {
     WheelContactOptions o;
     o.model = m;
     o.keep_fields = true;
+    o.load_balance = balance;
     for (const WheelsetPose& pose : {Pose(3.0, 1.0), Pose(8.0)})
       for (double axle : {2.0 / 0.46, 2.01 / 0.46, 2.0 / 0.46})  // normal reuse, then report reuse
         for (Side side : {Side::Left, Side::Right})

@@ -92,8 +92,9 @@ struct PatchReport {
 
 // Ok: at least one patch in contact (and the load reached in load control). NoContact: no patch (no
 // interpenetration, the wheel does not face the rail, or vertical_load_N == 0). NotConverged: load control failed:
-// no load bracket (no patches reported) or the load missed by more than 10x its tolerance (the last iterate's
-// patches reported).
+// no load bracket (no patches reported), the load missed by more than 10x its tolerance (the last iterate's
+// patches reported), or (total-force balance) the creep forces pull the wheel down so that no push-down carries the
+// load, or its bracket was not found (the pressure-balanced solution reported; docs/physics-reference.md §3.6.1).
 enum class WheelContactStatus { Ok, NoContact, NotConverged };
 const char* to_string(WheelContactStatus status);  // "ok", "no_contact", "not_converged"
 
@@ -103,11 +104,13 @@ struct WheelContactReport {
   ContactModel model = ContactModel::Hertz;  // WheelContactOptions::model (auto stays auto; per patch: PatchReport)
   WheelsetPose pose;                 // the pose the patches were solved at (vertical pushed down in load control)
   std::vector<PatchReport> patches;  // ordered along the rail, gauge side first
-  double vertical_force_N = 0.0;     // sum over patches (side frame z), pressure and creep forces, N
-  // Vertical component of the pressure (normal) forces alone, N: what load control balances against the load.
+  // Sum over patches (side frame z), pressure and creep forces, N: what load control balances against the load
+  // (WheelContactOptions::load_balance total, the default)
+  double vertical_force_N = 0.0;
+  // Vertical component of the pressure (normal) forces alone, N (balanced against the load with load_balance pressure)
   double pressure_vertical_force_N = 0.0;
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side), N
-  int load_iterations = 0;           // root-finder evaluations of the load control; 0 in approach mode
+  int load_iterations = 0;           // root-finder evaluations of the load control (total balance: §3.6.1); 0 in approach mode
   // Plausibility warnings, one "code: message" line each (contact_plausibility.hpp): nominal radius far from the
   // profile's, friction outside 0.05-1, pressure above the material limit, load control not converged
   std::vector<std::string> warnings;

@@ -160,6 +160,7 @@ constexpr void VisitNormalOptionFields(Options& o, Visitor&& v) {
   v("auto_selection.min_hertz_axis_ratio", o.auto_selection.min_hertz_axis_ratio);
   v("exact_max_elements", o.exact_max_elements);
   v("patch_combine_distance_m", o.patch_combine_distance_m);
+  v("load_balance", o.load_balance);  // issue 15; with Total the normal stage also reads the tangential fields
 }
 
 // The rest: what only the tangential stage reads (with the velocity, the whole-report cache key), in the order of

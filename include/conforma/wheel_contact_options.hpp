@@ -1,6 +1,8 @@
 #pragma once
 // The options of a contact solve (one wheel in the pipeline, wheel_contact.hpp, or one patch, patch_solver.hpp):
 // declared once, with their defaults; every other options struct that needs them holds a WheelContactOptions.
+#include <string>
+
 #include "conforma/bem_reference.hpp"
 #include "conforma/conformity.hpp"
 #include "conforma/contact_candidates.hpp"
@@ -20,6 +22,16 @@ namespace conforma {
 // be astronomically large (a 1e308 N load kept the reference BEM busy for more than 300 s).
 constexpr double kMaxWheelLoadN = 1e7;
 
+// What load control balances against the load (docs/physics-reference.md §3.6.1).
+//   Total:    the wheel's total vertical force, pressure AND creep forces of all patches (WheelContactReport::
+//             vertical_force_N), as CONTACT, multibody codes and Nadal's criterion do: every load-control
+//             evaluation solves the normal and the tangential problem at its push-down.
+//   Pressure: the vertical component of the pressure forces alone (WheelContactReport::pressure_vertical_force_N),
+//             the creep forces solved afterwards (the behaviour before issue 15; cheaper, wrong at a flange).
+enum class LoadBalance { Total, Pressure };
+const char* to_string(LoadBalance balance);             // "total", "pressure"
+LoadBalance ParseLoadBalance(const std::string& name);  // InputError for another name
+
 // validate() throws InputError outside the ranges given below.
 struct WheelContactOptions {
   ContactModel model = ContactModel::Hertz;  // contact model of every patch (auto: chosen per patch); default hertz
@@ -29,9 +41,9 @@ struct WheelContactOptions {
   // §7.4). Kind Constant (default): friction_coefficient applies and these parameters are ignored; any other kind
   // replaces friction_coefficient (validated by FrictionLaw::validate).
   FrictionLaw friction_law;
-  // N, finite, <= kMaxWheelLoadN. Load control (default, 10 kN): the wheel is pushed down until the vertical components of its patch
-  // pressure forces carry this load; 0: unloaded wheel, no contact solved (status NoContact). Set vertical_load_N < 0
-  // to use the pose as given (approach mode, for multibody coupling).
+  // N, finite, <= kMaxWheelLoadN. Load control (default, 10 kN): the wheel is pushed down until its vertical force
+  // (load_balance: pressure and creep forces by default) carries this load; 0: unloaded wheel, no contact solved
+  // (status NoContact). Set vertical_load_N < 0 to use the pose as given (approach mode, for multibody coupling).
   double vertical_load_N = 10e3;
   double load_tolerance = kDefaultLoadTolerance;  // relative (load_control.hpp), > 0; default 1e-6
   // FASTSIM elements per strip (and strips for the Hertz ellipse), >= 2; default 30
@@ -70,6 +82,9 @@ struct WheelContactOptions {
   // slip for the conformal model, and the velocity's forward speed need not be > 0).
   bool creepages_given = false;
   Creepages creepages;                 // xi, eta (-), phi (1/m); finite; read only with creepages_given
+  // Load control: what is balanced against vertical_load_N (see LoadBalance); default total. With Total (and
+  // solve_tangential) the normal problem depends on the velocity and the tangential options too.
+  LoadBalance load_balance = LoadBalance::Total;
   void validate() const;  // InputError naming the option
   // The law every FASTSIM uses: friction_law, or Constant(friction_coefficient) when friction_law is constant.
   FrictionLaw effective_friction_law() const;

@@ -42,8 +42,9 @@ def test_fields_integrate_to_the_patch_forces(track, model):
 
 def test_load_control_carries_the_load_and_wheels_mirror_when_centred(track):
     left, right = conforma.contact(track, lateral_m=0.0, model="conformal")
-    assert left["pressure_vertical_force_N"] == pytest.approx(10e3, rel=1e-5)
-    assert right["pressure_vertical_force_N"] == pytest.approx(10e3, rel=1e-5)
+    # total-force balance (issue 15): pressure and creep forces together carry the load
+    assert left["vertical_force_N"] == pytest.approx(10e3, rel=1e-5)
+    assert right["vertical_force_N"] == pytest.approx(10e3, rel=1e-5)
     pl, pr = left["patches"][0], right["patches"][0]
     assert pl["fn_N"] == pytest.approx(pr["fn_N"], rel=1e-6)
     # track frame: lateral forces of the two wheels cancel, contact points mirror about the track centre
@@ -66,7 +67,7 @@ def test_contact_at_pose_reproduces_the_load_controlled_pose(track):
     pose = loaded["pose"]
     given = conforma.contact_at_pose(track, "left", pose["y_m"], pose["z_m"], pose["roll_rad"], pose["yaw_rad"],
                                      model="kp", fields=False)
-    assert given["pressure_vertical_force_N"] == pytest.approx(10e3, rel=1e-3)
+    assert given["vertical_force_N"] == pytest.approx(10e3, rel=1e-3)
     with pytest.raises(conforma.InputError):
         conforma.contact_at_pose(track, "left", math.nan, 0.0)
 

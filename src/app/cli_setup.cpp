@@ -104,6 +104,10 @@ void ContactArgs::add_to(CLI::App* app) {
   app->add_option("--penetration", penetration, "conformal model: virtual penetration rule, variable (KPEC) or "
                                                 "constant (eps = 0.55)")
       ->check(CLI::IsMember({"variable", "constant"}));
+  app->add_option("--load-balance", load_balance,
+                  "load control: balance the load with the wheel's total vertical force, pressure and creep forces "
+                  "(total, default), or with the pressure forces alone (pressure, the creep forces solved afterwards)")
+      ->check(CLI::IsMember({"total", "pressure"}));
   app->add_option("--friction-law", friction_law,
                   "slip-dependent friction law mu(gamma), gamma = slip / rolling speed (paper 002): constant (mu); "
                   "exponential (f1a: mu [r + (1 - r) exp(-decay gamma)]); piecewise-linear (f1b: from mu down to "
@@ -197,6 +201,7 @@ WheelContactOptions ContactArgs::options() const {
   o.exact_element_size_m = exact_element_mm * 1e-3;
   o.conformal_variable_penetration = penetration == "variable";
   o.patch_combine_distance_m = combine_mm * 1e-3;
+  o.load_balance = ParseLoadBalance(load_balance);
   o.validate();
   return o;
 }

@@ -44,4 +44,46 @@ LoadControlResult SolveLoadControl(const std::function<double(double)>& carried_
   return result;
 }
 
+LoadControlResult SolveLoadControlFrom(const std::function<double(double)>& carried_load, double carried_at_zero_N,
+                                       double load_N, double first_step_m, double max_push_m,
+                                       double relative_tolerance) {
+  LoadControlResult result;
+  const double tolerance_abs = relative_tolerance * load_N;
+  const double f0 = carried_at_zero_N - load_N;
+  if (std::fabs(f0) <= tolerance_abs) {
+    result.status = LoadControlStatus::Ok;
+    result.residual_N = f0;
+    return result;
+  }
+  // towards the load: a larger push where too little is carried
+  double step = std::copysign(std::max(std::fabs(first_step_m), 1e-12), -f0);
+  double a = 0.0, fa = f0, b = step, fb = carried_load(b) - load_N;
+  int evaluations = 1;
+  while ((fa < 0.0) == (fb < 0.0) && fb != 0.0) {
+    step *= 2.0;
+    if (std::fabs(b + step) > max_push_m) return result;  // NoBracket
+    a = b, fa = fb;
+    b += step;
+    fb = carried_load(b) - load_N;
+    ++evaluations;
+  }
+  if (std::fabs(fb) <= tolerance_abs) {  // the step landed on the load (the last evaluation is at b)
+    result.status = LoadControlStatus::Ok;
+    result.push_m = b, result.residual_N = fb, result.iterations = evaluations;
+    return result;
+  }
+  const bool increasing_bracket = b > a;
+  const double low = increasing_bracket ? a : b, high = increasing_bracket ? b : a;
+  const double f_low = increasing_bracket ? fa : fb, f_high = increasing_bracket ? fb : fa;
+  if (!(f_low < 0.0 && f_high > 0.0)) return result;  // the carried load decreases with the push here: NoBracket
+  double f_root = 0.0;
+  int root_iterations = 0;
+  result.push_m = SolveIncreasingRoot([&](double push) { return carried_load(push) - load_N; }, low, high, f_low,
+                                      f_high, tolerance_abs, &root_iterations, &f_root);
+  result.iterations = evaluations + root_iterations;
+  result.residual_N = f_root;
+  result.status = std::fabs(f_root) > 10.0 * tolerance_abs ? LoadControlStatus::NotConverged : LoadControlStatus::Ok;
+  return result;
+}
+
 }  // namespace conforma

@@ -29,6 +29,20 @@ const char* to_string(WheelContactStatus status) {
   return "?";
 }
 
+const char* to_string(LoadBalance balance) {
+  switch (balance) {
+    case LoadBalance::Total: return "total";
+    case LoadBalance::Pressure: return "pressure";
+  }
+  return "?";
+}
+
+LoadBalance ParseLoadBalance(const std::string& name) {
+  if (name == "total") return LoadBalance::Total;
+  if (name == "pressure") return LoadBalance::Pressure;
+  throw InputError("load balance: unknown name '" + name + "' (expected total or pressure)");
+}
+
 void WheelContactOptions::validate() const {
   material.validate();
   require_non_negative(friction_coefficient, "friction_coefficient");
@@ -159,7 +173,15 @@ struct NormalStage {
   std::vector<double> auto_alpha_c_deg;
   std::vector<PatchFrame> frames;
   std::vector<PatchNormalSolution> normal;
+  // Total-force load control (LoadBalance::Total): the report of the tangential stage at the final push-down,
+  // solved together with the normal problem (then the stage depends on the velocity and the tangential options)
+  std::shared_ptr<const WheelContactReport> coupled;
 };
+
+// Load control balances the total vertical force (normal and tangential solved together at each push-down).
+bool TotalForceLoadControl(const WheelContactOptions& options) {
+  return options.load_balance == LoadBalance::Total && options.vertical_load_N > 0.0 && options.solve_tangential;
+}
 
 }  // namespace wheel_contact_detail
 
@@ -167,9 +189,13 @@ using namespace wheel_contact_detail;
 
 namespace {
 
-// Stage 1: candidates, model per patch, normal problem (load control). Options validated by the caller.
+WheelContactReport SolveTangentialStage(const NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
+                                      const WheelsetVelocity& velocity, const WheelContactOptions& options);
+
+// Stage 1: candidates, model per patch, normal problem (load control); with total-force load control also the
+// tangential problem at every push-down (NormalStage::coupled). Options validated by the caller.
 NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
-                             const WheelContactOptions& options) {
+                             const WheelsetVelocity& velocity, const WheelContactOptions& options) {
   NormalStage stage;
   WheelContactReport& report = stage.report;
   report.side = side;
@@ -294,19 +320,86 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   normal.resize(n);
   if (load_control) {
     // the one load control (load_control.hpp): the Hertz push-down of the candidates is close, so the first
-    // bracket is the size of the largest rigid approach; its last evaluation is at the solution (no re-solve)
+    // bracket is the size of the largest rigid approach; its last evaluation is at the solution (no re-solve).
+    // Phase 1 balances the pressure forces alone (monotone in the push: every patch's approach grows with it).
     double scale = 0.0;
     for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
     scale = std::max(scale, 1e-6);
+    // (with the total-force balance to follow, phase 1 only starts phase 2: a 1e-3 tolerance is enough)
+    const double pressure_tolerance =
+        TotalForceLoadControl(options) ? std::max(options.load_tolerance, 1e-3) : options.load_tolerance;
     const LoadControlResult load = SolveLoadControl([&](double dz) { return solve_all(dz, &normal); },
-                                                    options.vertical_load_N, scale, options.load_tolerance);
+                                                    options.vertical_load_N, scale, pressure_tolerance);
     if (load.status == LoadControlStatus::NoBracket) {
       report.status = WheelContactStatus::NotConverged;
       return stage;
     }
     report.load_iterations = load.iterations;
-    report.pose.vertical_m -= load.push_m;
     if (load.status == LoadControlStatus::NotConverged) report.status = WheelContactStatus::NotConverged;
+    const WheelsetPose candidates_pose = report.pose;
+    report.pose.vertical_m = candidates_pose.vertical_m - load.push_m;
+    if (TotalForceLoadControl(options) && load.status == LoadControlStatus::Ok) {
+      // Phase 2, total-force balance (docs/physics-reference.md §3.6.1): the wheel's vertical force with the creep
+      // forces, F_z(dz) = sum_j (fn_j n0_j,z + (fs_j + fy_j) t0_j,z), each evaluation solving the normal problem
+      // and then the tangential one on its pressure (the traction bound mu p follows the push). Bracketed
+      // (SolveLoadControl, Illinois false position), started at phase 1's push. F_z is not monotone by
+      // construction: a creep force along t0 pulling the wheel down (mu tan(delta) > 1 at a flange with
+      // the wheel sliding down it) can outweigh the pressure; then F_z <= 0 at phase 1's push and no push-down
+      // carries the load: NotConverged, the pressure-balanced solution reported.
+      stage.finished = false;
+      std::shared_ptr<const WheelContactReport> last;
+      double best_push = 0.0, best_error = 1e300;  // the evaluation nearest to the load
+      auto total_at = [&](double push) {
+        const double dz = load.push_m + push;
+        solve_all(dz, &normal);
+        stage.report.pose.vertical_m = candidates_pose.vertical_m - dz;
+        last = std::make_shared<const WheelContactReport>(
+            SolveTangentialStage(stage, geometry, side, velocity, options));
+        const double error = std::fabs(last->vertical_force_N - options.vertical_load_N);
+        if (error < best_error) best_error = error, best_push = push;
+        return last->vertical_force_N;
+      };
+      const double total_at_pressure_balance = total_at(0.0);
+      if (!(total_at_pressure_balance > 0.0)) {
+        report.status = WheelContactStatus::NotConverged;
+        WheelContactReport failed = *last;
+        failed.status = WheelContactStatus::NotConverged;
+        stage.coupled = std::make_shared<const WheelContactReport>(std::move(failed));
+        return stage;
+      }
+      // the first step: with F_z / pressure about constant in the push and a Hertzian approach ~ N^(2/3), the
+      // root is at approach (ratio^(-2/3) - 1) from phase 1's push, ratio = F_z / load there (exact for a Hertzian
+      // patch); doubled until F_z crosses the load, within 8 approaches
+      const double ratio = total_at_pressure_balance / options.vertical_load_N;
+      // the wheel's vertical push from first touch: each patch's normal approach over its n0_z (a flange patch at
+      // 60-70 deg needs 2-3x its approach vertically)
+      double approach = std::fabs(load.push_m);
+      for (size_t j = 0; j < n; ++j) {
+        const bool hertz = patch_model[j] == ContactModel::Hertz;
+        const double rigid = hertz ? -hertz_points[j].gap_m : candidates.candidates[j].patch.rigid_approach_m;
+        const double nz = hertz ? std::cos(hertz_points[j].contact_angle_rad) : frames[j].normal.z();
+        if (nz > 0.1 && rigid > 0.0) approach = std::max(approach, rigid / nz + load.push_m);
+      }
+      approach = std::max(approach, 1e-7);
+      const LoadControlResult total =
+          SolveLoadControlFrom(total_at, total_at_pressure_balance, options.vertical_load_N,
+                               (std::pow(ratio, -2.0 / 3.0) - 1.0) * approach, 8.0 * approach, options.load_tolerance);
+      if (total.status != LoadControlStatus::Ok && total.status != LoadControlStatus::NotConverged) {
+        report.status = WheelContactStatus::NotConverged;  // no bracket: the pressure-balanced solution
+        total_at(0.0);
+      } else if (total.status == LoadControlStatus::NotConverged && best_push != total.push_m) {
+        // F_z jumps over the load (a discontinuity of a model's normal solution in the push, seen with the
+        // conformal model on worn profiles): the bracket closes on the jump; report the evaluation nearest to it
+        total_at(best_push);
+      }
+      WheelContactReport coupled = *last;
+      coupled.load_iterations = load.iterations + 1 + total.iterations;
+      if (total.status == LoadControlStatus::NotConverged || report.status == WheelContactStatus::NotConverged)
+        coupled.status = WheelContactStatus::NotConverged;
+      report.load_iterations = coupled.load_iterations;
+      report.pose = coupled.pose;
+      stage.coupled = std::make_shared<const WheelContactReport>(std::move(coupled));
+    }
   } else {
     solve_all(0.0, &normal);
   }
@@ -428,7 +521,8 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
 // Stage 2 and the plausibility warnings of the finished report.
 WheelContactReport FinishWheelContact(const NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
                                       const WheelsetVelocity& velocity, const WheelContactOptions& options) {
-  WheelContactReport report = SolveTangentialStage(stage, geometry, side, velocity, options);
+  WheelContactReport report =
+      stage.coupled ? *stage.coupled : SolveTangentialStage(stage, geometry, side, velocity, options);
   report.warnings = ContactPlausibilityWarnings(report, geometry, options);
   return report;
 }
@@ -457,7 +551,8 @@ WheelContactCache::Stats WheelContactCache::stats() const {
 WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
                                      const WheelsetVelocity& velocity, const WheelContactOptions& options) {
   options.validate();
-  return FinishWheelContact(SolveNormalStage(geometry, side, pose, options), geometry, side, velocity, options);
+  return FinishWheelContact(SolveNormalStage(geometry, side, pose, velocity, options), geometry, side, velocity,
+                            options);
 }
 
 WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
@@ -465,8 +560,11 @@ WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry
                                            WheelContactCache& cache) {
   options.validate();
   WheelContactCache::Impl& c = *cache.impl_;
-  const std::vector<double> normal_key = NormalCacheKey(geometry, side, pose, options);
-  const std::vector<double> report_key = ReportCacheKey(normal_key, velocity, options);
+  // With total-force load control the normal stage holds the tangential solution too (it reads everything): it is
+  // keyed as the whole report, and a changed velocity or tangential option solves it again.
+  const std::vector<double> report_key = ReportCacheKey(NormalCacheKey(geometry, side, pose, options), velocity, options);
+  const std::vector<double> normal_key =
+      TotalForceLoadControl(options) ? report_key : NormalCacheKey(geometry, side, pose, options);
   // a NaN cannot be a map key (no ordering): such calls go uncached (and throw where the pipeline throws)
   for (double v : report_key)
     if (!std::isfinite(v)) return SolveWheelContact(geometry, side, pose, velocity, options);
@@ -487,7 +585,7 @@ WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry
     }
   }
   // solved outside the lock (two threads may solve the same pose at once: same result, one is kept)
-  if (!stage) stage = std::make_shared<const NormalStage>(SolveNormalStage(geometry, side, pose, options));
+  if (!stage) stage = std::make_shared<const NormalStage>(SolveNormalStage(geometry, side, pose, velocity, options));
   auto report = std::make_shared<const WheelContactReport>(FinishWheelContact(*stage, geometry, side, velocity, options));
   std::lock_guard<std::mutex> lock(c.mutex);
   if (c.normal.size() >= c.max_entries) c.normal.clear();  // bounded memory; clearing keeps results exact
