@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
+
+#include <Eigen/Dense>
 
 #include "conforma/conformity.hpp"
 #include "conforma/error.hpp"
@@ -49,6 +52,7 @@ KpOptions ConformalKpOptions(const Material& material) {
 KpOptions ConformalKpecOptions(const Material& material) {
   KpOptions options = ConformalKpOptions(material);
   options.penetration = KpPenetrationRule::VariableEpsilon;
+  options.pressure = KpPressureRule::StripCollocation;
   return options;
 }
 
@@ -157,6 +161,71 @@ void ValidateKpOptions(const KpOptions& options) {
     throw InputError("KpOptions.strips_across_contact must lie in [3, 100000], got " +
                      std::to_string(options.strips_across_contact));
   require_finite(options.conformity_threshold_deg, "KpOptions.conformity_threshold_deg");
+  if (options.collocation_strips < 2)
+    throw InputError("KpOptions.collocation_strips must be >= 2, got " + std::to_string(options.collocation_strips));
+}
+
+bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStrip>& strips, double delta,
+                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks) {
+  // docs/physics-reference.md §5.3: u_n(s_i, m_i) = sum_j peak_j / (pi G c_j) I_j(s_i) = delta cos(alpha_i) - gap_i
+  // at every strip's centre line point (the BEM's gap closure, §10.4), I_j of §3.5 seen from strip i.
+  const int n = static_cast<int>(strips.size());
+  Eigen::MatrixXd influence(n, n);
+  Eigen::VectorXd required(n);
+  for (int i = 0; i < n; ++i) {
+    const KpStrip& obs = strips[i];
+    required(i) = delta * std::cos(obs.alpha_rad) - patch.gap(obs.s_m);
+    for (int j = 0; j < n; ++j) {
+      const KpStrip& load_strip = strips[j];
+      if (!(load_strip.half_length_m > 0.0)) {
+        influence(i, j) = 0.0;
+        continue;
+      }
+      StripLoad load;
+      load.s_low = load_strip.s_m - 0.5 * load_strip.ds_m;
+      load.s_high = load_strip.s_m + 0.5 * load_strip.ds_m;
+      load.half_length = load_strip.half_length_m;
+      load.centre_offset = load_strip.x_centre_m - obs.x_centre_m;
+      if (blanco) {
+        load.alpha_low = patch.alpha(load.s_low) - obs.alpha_rad;
+        load.alpha_high = patch.alpha(load.s_high) - obs.alpha_rad;
+      }
+      influence(i, j) = StripNormalDisplacementIntegral(load, obs.s_m, elastic.poisson_ratio, blanco, coupling_K) /
+                        (M_PI * elastic.shear_modulus_Pa * load_strip.half_length_m);
+    }
+  }
+  // Active set: strips whose amplitude comes out non-positive (or without length or required displacement) carry
+  // nothing and are dropped, the rest re-solved, until every remaining amplitude is positive (at most n passes).
+  std::vector<char> active(n);
+  for (int j = 0; j < n; ++j) active[j] = strips[j].half_length_m > 0.0 && required(j) > 0.0;
+  peaks.assign(n, 0.0);
+  for (int pass = 0; pass < n; ++pass) {
+    std::vector<int> index;
+    for (int j = 0; j < n; ++j)
+      if (active[j]) index.push_back(j);
+    const int q = static_cast<int>(index.size());
+    if (q == 0) return false;
+    Eigen::MatrixXd a(q, q);
+    Eigen::VectorXd b(q);
+    for (int r = 0; r < q; ++r) {
+      b(r) = required(index[r]);
+      for (int c = 0; c < q; ++c) a(r, c) = influence(index[r], index[c]);
+    }
+    const Eigen::VectorXd x = a.partialPivLu().solve(b);
+    if (!x.allFinite()) return false;
+    bool changed = false;
+    std::fill(peaks.begin(), peaks.end(), 0.0);
+    for (int r = 0; r < q; ++r) {
+      if (x(r) <= 0.0) {
+        active[index[r]] = 0;
+        changed = true;
+      } else {
+        peaks[index[r]] = x(r);
+      }
+    }
+    if (!changed) return true;
+  }
+  return false;
 }
 
 }  // namespace kp_detail
@@ -220,7 +289,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   const double g_contact = interpenetration(s_contact);
   if (!(g_contact > 0.0)) return result;
   result.virtual_penetration_m = g_contact + gap_contact;
-  const ContactRange range = FindRange(patch, interpenetration, interpenetration_node, s_contact, g_contact);
+  ContactRange range = FindRange(patch, interpenetration, interpenetration_node, s_contact, g_contact);
 
   // Strips over exactly the contact range.
   const int n = options.strips_across_contact;
@@ -264,6 +333,73 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   const double c_norm = kpec ? c_max : c_contact;
   result.p0_Pa = M_PI * elastic.shear_modulus_Pa * delta * c_norm / influence_sum;
   result.pmax_Pa = result.p0_Pa * c_max / c_norm;
+  std::vector<double> peaks(n);
+  for (int j = 0; j < n; ++j) peaks[j] = result.p0_Pa * result.strips[j].half_length_m / c_norm;
+  if (options.pressure == KpPressureRule::StripCollocation) {
+    // §5.3: the amplitudes collocated on `nodes` coarse strips over the contact range (the strips themselves when
+    // nodes >= n); their ratio peak / c, constant on a Hertzian patch, interpolated linearly onto the strips (constant
+    // beyond the outer coarse centres).
+    auto lay_strips = [&](double low_end, double high_end, int count) {
+      std::vector<KpStrip> laid(count);
+      const double width = (high_end - low_end) / count;
+      for (int k = 0; k < count; ++k) {
+        KpStrip& strip = laid[k];
+        const double low = low_end + k * width;
+        const double high = k + 1 == count ? high_end : low + width;
+        strip.s_m = 0.5 * (low + high);
+        strip.ds_m = high - low;
+        strip.x_centre_m = patch.x_offset(strip.s_m);
+        strip.alpha_rad = patch.alpha(strip.s_m);
+        strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
+      }
+      return laid;
+    };
+    const int nodes = std::min(options.collocation_strips, n);
+    std::vector<KpStrip> coarse;
+    std::vector<double> coarse_peaks;
+    for (int pass = 0; pass < 2; ++pass) {
+      coarse = lay_strips(range.low, range.high, nodes);
+      if (!kp_detail::CollocateStripPeaks(patch, coarse, delta, elastic, blanco, coupling_K, coarse_peaks)) {
+        result.status = KpStatus::InfluenceNotPositive;
+        result.strips.clear();
+        return result;
+      }
+      if (pass == 1) break;
+      // The virtual range reaches beyond the loaded part (outer amplitudes dropped): the contact edge is where the
+      // amplitude vanishes, p^2 linear towards the edge (p ~ sqrt(distance) at a smooth contact edge), extrapolated
+      // from the two outermost loaded coarse strips into the interval to the first unloaded one; then solved again
+      // over the cut range.
+      int first = 0, last = nodes - 1;
+      while (first < nodes && !(coarse_peaks[first] > 0.0)) ++first;
+      while (last >= 0 && !(coarse_peaks[last] > 0.0)) --last;
+      if (first > last || (first == 0 && last == nodes - 1)) break;
+      auto edge = [&](int outer, int inner, int unloaded) {
+        const double p1 = coarse_peaks[outer], p2 = coarse_peaks[inner];
+        const double s1 = coarse[outer].s_m, s2 = coarse[inner].s_m, s0 = coarse[unloaded].s_m;
+        if (!(p2 > p1)) return 0.5 * (s0 + s1);
+        const double e = s1 + (s1 - s2) * p1 * p1 / (p2 * p2 - p1 * p1);
+        return std::clamp(e, std::min(s0, s1), std::max(s0, s1));
+      };
+      if (first > 0 && first < last) range.low = edge(first, first + 1, first - 1);
+      if (last < nodes - 1 && last > first) range.high = edge(last, last - 1, last + 1);
+      result.strips = lay_strips(range.low, range.high, n);
+    }
+    if (nodes == n) {
+      peaks = coarse_peaks;
+    } else {
+      std::vector<double> ratio(nodes);
+      for (int k = 0; k < nodes; ++k)
+        ratio[k] = coarse[k].half_length_m > 0.0 ? coarse_peaks[k] / coarse[k].half_length_m : 0.0;
+      for (int j = 0; j < n; ++j) {
+        const double t = std::clamp((result.strips[j].s_m - coarse[0].s_m) / (coarse[1].s_m - coarse[0].s_m), 0.0,
+                                    double(nodes - 1));
+        const int k = std::min(static_cast<int>(t), nodes - 2);
+        const double w = t - k;
+        peaks[j] = result.strips[j].half_length_m * ((1.0 - w) * ratio[k] + w * ratio[k + 1]);
+      }
+    }
+    result.pmax_Pa = *std::max_element(peaks.begin(), peaks.end());
+  }
 
   // Forces along each strip's own normal n_j = cos(alpha_j) n0 + sin(alpha_j) t0, moments, extents.
   std::vector<double> angles;
@@ -277,7 +413,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     KpStrip& strip = result.strips[j];
     if (j > 0) position += SurfaceStep(patch, result.strips[j - 1].s_m, strip.s_m);
     strip.position_m = position;
-    strip.peak_pressure_Pa = result.p0_Pa * strip.half_length_m / c_norm;
+    strip.peak_pressure_Pa = peaks[j];
     strip.force_N = 0.5 * M_PI * strip.peak_pressure_Pa * strip.half_length_m * strip.ds_m;
     const Eigen::Vector2d force(std::sin(strip.alpha_rad) * strip.force_N, std::cos(strip.alpha_rad) * strip.force_N);
     result.force_on_wheel_N += force;
