@@ -60,6 +60,13 @@ namespace {
 
 using kp_detail::PatchInterpolant;
 
+// Strip collocation (docs/physics-reference.md §5.3): cut of the virtual range (fraction of its width) from which a
+// second collocation solve is blended in, fully at the upper value
+constexpr double kCollocationRecutLow = 0.02;
+constexpr double kCollocationRecutHigh = 0.06;
+
+
+
 // Root of f on [inside, outside] where f(inside) > 0 >= f(outside): Illinois false position.
 template <class F>
 double EdgeRoot(const F& f, double inside, double f_inside, double outside, double f_outside) {
@@ -166,7 +173,8 @@ void ValidateKpOptions(const KpOptions& options) {
 }
 
 bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStrip>& strips, double delta,
-                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks) {
+                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks,
+                         std::vector<double>& unconstrained) {
   // docs/physics-reference.md §5.3: u_n(s_i, m_i) = sum_j peak_j / (pi G c_j) I_j(s_i) = delta cos(alpha_i) - gap_i
   // at every strip's centre line point (the BEM's gap closure, §10.4), I_j of §3.5 seen from strip i.
   const int n = static_cast<int>(strips.size());
@@ -213,6 +221,10 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
     }
     const Eigen::VectorXd x = a.partialPivLu().solve(b);
     if (!x.allFinite()) return false;
+    if (pass == 0) {
+      unconstrained.assign(n, 0.0);
+      for (int r = 0; r < q; ++r) unconstrained[index[r]] = x(r);
+    }
     bool changed = false;
     std::fill(peaks.begin(), peaks.end(), 0.0);
     for (int r = 0; r < q; ++r) {
@@ -355,48 +367,81 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       return laid;
     };
     const int nodes = std::min(options.collocation_strips, n);
-    std::vector<KpStrip> coarse;
-    std::vector<double> coarse_peaks;
-    for (int pass = 0; pass < 2; ++pass) {
-      coarse = lay_strips(range.low, range.high, nodes);
-      if (!kp_detail::CollocateStripPeaks(patch, coarse, delta, elastic, blanco, coupling_K, coarse_peaks)) {
+    struct CoarseSolution {
+      std::vector<KpStrip> strips;
+      std::vector<double> peaks, free_peaks;  // active-set and unconstrained amplitudes, Pa
+    };
+    auto solve_on = [&](const ContactRange& on, CoarseSolution& out) {
+      out.strips = lay_strips(on.low, on.high, nodes);
+      return kp_detail::CollocateStripPeaks(patch, out.strips, delta, elastic, blanco, coupling_K, out.peaks,
+                                            out.free_peaks);
+    };
+    // Contact edge in s where the amplitude vanishes (p ~ sqrt(distance) at a smooth edge: q = sign(P) P^2 linear in
+    // s), from the unconstrained amplitudes (continuous in delta, so is the edge): the zero of q between the outermost
+    // positive coarse strip and its outer neighbour, or extrapolated outwards from the two outermost coarse strips
+    // when both are positive; the range is cut there when that lies inside it.
+    auto cut_range = [&](const CoarseSolution& c, ContactRange on) {
+      auto signed_square = [&](int k) { return c.free_peaks[k] * std::fabs(c.free_peaks[k]); };
+      auto edge = [&](int step) {  // step +1: low edge (scan upwards), -1: high edge
+        const int start = step > 0 ? 0 : nodes - 1;
+        int k = start;
+        while (k >= 0 && k < nodes && !(c.free_peaks[k] > 0.0)) k += step;
+        if (k < 0 || k >= nodes) return std::nan("");
+        const int outer = k == start ? k : k - step, inner = k == start ? k + step : k;
+        if (inner < 0 || inner >= nodes) return std::nan("");
+        const double q_outer = signed_square(outer), q_inner = signed_square(inner);
+        if (!(q_inner > q_outer)) return std::nan("");
+        return c.strips[outer].s_m + (c.strips[inner].s_m - c.strips[outer].s_m) * (-q_outer) / (q_inner - q_outer);
+      };
+      const double low = edge(+1), high = edge(-1);
+      if (low > on.low && low < high) on.low = low;
+      if (high < on.high && high > on.low) on.high = high;
+      return on;
+    };
+    // ratio P / c of a coarse solution at s (linear between the coarse centres, constant beyond the outer ones)
+    auto ratio_at = [&](const CoarseSolution& c, double s_m) {
+      const double t = std::clamp((s_m - c.strips[0].s_m) / (c.strips[1].s_m - c.strips[0].s_m), 0.0,
+                                  double(nodes - 1));
+      const int k = std::min(static_cast<int>(t), nodes - 2);
+      const double w = t - k;
+      auto ratio = [&](int i) { return c.strips[i].half_length_m > 0.0 ? c.peaks[i] / c.strips[i].half_length_m : 0.0; };
+      return (1.0 - w) * ratio(k) + w * ratio(k + 1);
+    };
+    // Solve A over the virtual range and cut it (range 1). A cut of more than kCollocationRecutLow of the width asks
+    // for solve B over range 1, cut again (range 2); the result is the blend (1 - w) A + w B of the ranges and of
+    // the ratios P / c, w rising linearly from 0 to 1 between kCollocationRecutLow and kCollocationRecutHigh: every
+    // step continuous in delta, and one solve where the virtual range was nearly right.
+    CoarseSolution first, second;
+    if (!solve_on(range, first)) {
+      result.status = KpStatus::InfluenceNotPositive;
+      result.strips.clear();
+      return result;
+    }
+    const ContactRange range1 = cut_range(first, range);
+    const double cut_fraction = ((range1.low - range.low) + (range.high - range1.high)) / (range.high - range.low);
+    const double blend = std::clamp((cut_fraction - kCollocationRecutLow) / (kCollocationRecutHigh - kCollocationRecutLow),
+                                    0.0, 1.0);
+    ContactRange final_range = range1;
+    if (blend > 0.0) {
+      if (!solve_on(range1, second)) {
         result.status = KpStatus::InfluenceNotPositive;
         result.strips.clear();
         return result;
       }
-      if (pass == 1) break;
-      // The virtual range reaches beyond the loaded part (outer amplitudes dropped): the contact edge is where the
-      // amplitude vanishes, p^2 linear towards the edge (p ~ sqrt(distance) at a smooth contact edge), extrapolated
-      // from the two outermost loaded coarse strips into the interval to the first unloaded one; then solved again
-      // over the cut range.
-      int first = 0, last = nodes - 1;
-      while (first < nodes && !(coarse_peaks[first] > 0.0)) ++first;
-      while (last >= 0 && !(coarse_peaks[last] > 0.0)) --last;
-      if (first > last || (first == 0 && last == nodes - 1)) break;
-      auto edge = [&](int outer, int inner, int unloaded) {
-        const double p1 = coarse_peaks[outer], p2 = coarse_peaks[inner];
-        const double s1 = coarse[outer].s_m, s2 = coarse[inner].s_m, s0 = coarse[unloaded].s_m;
-        if (!(p2 > p1)) return 0.5 * (s0 + s1);
-        const double e = s1 + (s1 - s2) * p1 * p1 / (p2 * p2 - p1 * p1);
-        return std::clamp(e, std::min(s0, s1), std::max(s0, s1));
-      };
-      if (first > 0 && first < last) range.low = edge(first, first + 1, first - 1);
-      if (last < nodes - 1 && last > first) range.high = edge(last, last - 1, last + 1);
+      const ContactRange range2 = cut_range(second, range1);
+      final_range.low = (1.0 - blend) * range1.low + blend * range2.low;
+      final_range.high = (1.0 - blend) * range1.high + blend * range2.high;
+    }
+    if (final_range.low != range.low || final_range.high != range.high) {
+      range.low = final_range.low;
+      range.high = final_range.high;
       result.strips = lay_strips(range.low, range.high, n);
     }
-    if (nodes == n) {
-      peaks = coarse_peaks;
-    } else {
-      std::vector<double> ratio(nodes);
-      for (int k = 0; k < nodes; ++k)
-        ratio[k] = coarse[k].half_length_m > 0.0 ? coarse_peaks[k] / coarse[k].half_length_m : 0.0;
-      for (int j = 0; j < n; ++j) {
-        const double t = std::clamp((result.strips[j].s_m - coarse[0].s_m) / (coarse[1].s_m - coarse[0].s_m), 0.0,
-                                    double(nodes - 1));
-        const int k = std::min(static_cast<int>(t), nodes - 2);
-        const double w = t - k;
-        peaks[j] = result.strips[j].half_length_m * ((1.0 - w) * ratio[k] + w * ratio[k + 1]);
-      }
+    for (int j = 0; j < n; ++j) {
+      const double s_j = result.strips[j].s_m;
+      const double ratio = blend > 0.0 ? (1.0 - blend) * ratio_at(first, s_j) + blend * ratio_at(second, s_j)
+                                       : ratio_at(first, s_j);
+      peaks[j] = result.strips[j].half_length_m * ratio;
     }
     result.pmax_Pa = *std::max_element(peaks.begin(), peaks.end());
   }

@@ -17,10 +17,12 @@ void ValidateKpOptions(const KpOptions& options);
 KpResult SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patch, double approach_m, const KpOptions& options);
 
 // KpPressureRule::StripCollocation (docs/physics-reference.md §5.3): the strips' peak pressures (Pa) that satisfy the
-// contact condition at every strip's centre line point; strips with a non-positive amplitude carry none. False when no
+// contact condition at every strip's centre line point; strips with a non-positive amplitude carry none. unconstrained:
+// the amplitudes of the first solve, before any strip was dropped (negative where the strip would pull). False when no
 // positive solution exists (every amplitude dropped, or a singular system).
 bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStrip>& strips, double delta,
-                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks);
+                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks,
+                         std::vector<double>& unconstrained);
 
 }  // namespace kp_detail
 }  // namespace conforma
