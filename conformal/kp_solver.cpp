@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
+
+#include <Eigen/Dense>
 
 #include "conforma/conformity.hpp"
 #include "conforma/error.hpp"
@@ -49,12 +52,20 @@ KpOptions ConformalKpOptions(const Material& material) {
 KpOptions ConformalKpecOptions(const Material& material) {
   KpOptions options = ConformalKpOptions(material);
   options.penetration = KpPenetrationRule::VariableEpsilon;
+  options.pressure = KpPressureRule::StripCollocation;
   return options;
 }
 
 namespace {
 
 using kp_detail::PatchInterpolant;
+
+// Strip collocation (docs/physics-reference.md §5.3): cut of the virtual range (fraction of its width) from which a
+// second collocation solve is blended in, fully at the upper value
+constexpr double kCollocationRecutLow = 0.02;
+constexpr double kCollocationRecutHigh = 0.06;
+
+
 
 // Root of f on [inside, outside] where f(inside) > 0 >= f(outside): Illinois false position.
 template <class F>
@@ -157,6 +168,76 @@ void ValidateKpOptions(const KpOptions& options) {
     throw InputError("KpOptions.strips_across_contact must lie in [3, 100000], got " +
                      std::to_string(options.strips_across_contact));
   require_finite(options.conformity_threshold_deg, "KpOptions.conformity_threshold_deg");
+  if (options.collocation_strips < 2)
+    throw InputError("KpOptions.collocation_strips must be >= 2, got " + std::to_string(options.collocation_strips));
+}
+
+bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStrip>& strips, double delta,
+                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks,
+                         std::vector<double>& unconstrained) {
+  // docs/physics-reference.md §5.3: u_n(s_i, m_i) = sum_j peak_j / (pi G c_j) I_j(s_i) = delta cos(alpha_i) - gap_i
+  // at every strip's centre line point (the BEM's gap closure, §10.4), I_j of §3.5 seen from strip i.
+  const int n = static_cast<int>(strips.size());
+  Eigen::MatrixXd influence(n, n);
+  Eigen::VectorXd required(n);
+  for (int i = 0; i < n; ++i) {
+    const KpStrip& obs = strips[i];
+    required(i) = delta * std::cos(obs.alpha_rad) - patch.gap(obs.s_m);
+    for (int j = 0; j < n; ++j) {
+      const KpStrip& load_strip = strips[j];
+      if (!(load_strip.half_length_m > 0.0)) {
+        influence(i, j) = 0.0;
+        continue;
+      }
+      StripLoad load;
+      load.s_low = load_strip.s_m - 0.5 * load_strip.ds_m;
+      load.s_high = load_strip.s_m + 0.5 * load_strip.ds_m;
+      load.half_length = load_strip.half_length_m;
+      load.centre_offset = load_strip.x_centre_m - obs.x_centre_m;
+      if (blanco) {
+        load.alpha_low = patch.alpha(load.s_low) - obs.alpha_rad;
+        load.alpha_high = patch.alpha(load.s_high) - obs.alpha_rad;
+      }
+      influence(i, j) = StripNormalDisplacementIntegral(load, obs.s_m, elastic.poisson_ratio, blanco, coupling_K) /
+                        (M_PI * elastic.shear_modulus_Pa * load_strip.half_length_m);
+    }
+  }
+  // Active set: strips whose amplitude comes out non-positive (or without length or required displacement) carry
+  // nothing and are dropped, the rest re-solved, until every remaining amplitude is positive (at most n passes).
+  std::vector<char> active(n);
+  for (int j = 0; j < n; ++j) active[j] = strips[j].half_length_m > 0.0 && required(j) > 0.0;
+  peaks.assign(n, 0.0);
+  for (int pass = 0; pass < n; ++pass) {
+    std::vector<int> index;
+    for (int j = 0; j < n; ++j)
+      if (active[j]) index.push_back(j);
+    const int q = static_cast<int>(index.size());
+    if (q == 0) return false;
+    Eigen::MatrixXd a(q, q);
+    Eigen::VectorXd b(q);
+    for (int r = 0; r < q; ++r) {
+      b(r) = required(index[r]);
+      for (int c = 0; c < q; ++c) a(r, c) = influence(index[r], index[c]);
+    }
+    const Eigen::VectorXd x = a.partialPivLu().solve(b);
+    if (!x.allFinite()) return false;
+    if (pass == 0) {
+      unconstrained.assign(n, 0.0);
+      for (int r = 0; r < q; ++r) unconstrained[index[r]] = x(r);
+    }
+    bool changed = false;
+    std::fill(peaks.begin(), peaks.end(), 0.0);
+    for (int r = 0; r < q; ++r) {
+      if (x(r) <= 0.0) {
+        active[index[r]] = 0;
+        changed = true;
+      } else {
+        peaks[index[r]] = x(r);
+      }
+    }
+    if (!changed) return true;
+  }
+  return false;
 }
 
 }  // namespace kp_detail
@@ -220,7 +301,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   const double g_contact = interpenetration(s_contact);
   if (!(g_contact > 0.0)) return result;
   result.virtual_penetration_m = g_contact + gap_contact;
-  const ContactRange range = FindRange(patch, interpenetration, interpenetration_node, s_contact, g_contact);
+  ContactRange range = FindRange(patch, interpenetration, interpenetration_node, s_contact, g_contact);
 
   // Strips over exactly the contact range.
   const int n = options.strips_across_contact;
@@ -264,6 +345,106 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   const double c_norm = kpec ? c_max : c_contact;
   result.p0_Pa = M_PI * elastic.shear_modulus_Pa * delta * c_norm / influence_sum;
   result.pmax_Pa = result.p0_Pa * c_max / c_norm;
+  std::vector<double> peaks(n);
+  for (int j = 0; j < n; ++j) peaks[j] = result.p0_Pa * result.strips[j].half_length_m / c_norm;
+  if (options.pressure == KpPressureRule::StripCollocation) {
+    // §5.3: the amplitudes collocated on `nodes` coarse strips over the contact range (the strips themselves when
+    // nodes >= n); their ratio peak / c, constant on a Hertzian patch, interpolated linearly onto the strips (constant
+    // beyond the outer coarse centres).
+    auto lay_strips = [&](double low_end, double high_end, int count) {
+      std::vector<KpStrip> laid(count);
+      const double width = (high_end - low_end) / count;
+      for (int k = 0; k < count; ++k) {
+        KpStrip& strip = laid[k];
+        const double low = low_end + k * width;
+        const double high = k + 1 == count ? high_end : low + width;
+        strip.s_m = 0.5 * (low + high);
+        strip.ds_m = high - low;
+        strip.x_centre_m = patch.x_offset(strip.s_m);
+        strip.alpha_rad = patch.alpha(strip.s_m);
+        strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
+      }
+      return laid;
+    };
+    const int nodes = std::min(options.collocation_strips, n);
+    struct CoarseSolution {
+      std::vector<KpStrip> strips;
+      std::vector<double> peaks, free_peaks;  // active-set and unconstrained amplitudes, Pa
+    };
+    auto solve_on = [&](const ContactRange& on, CoarseSolution& out) {
+      out.strips = lay_strips(on.low, on.high, nodes);
+      return kp_detail::CollocateStripPeaks(patch, out.strips, delta, elastic, blanco, coupling_K, out.peaks,
+                                            out.free_peaks);
+    };
+    // Contact edge in s where the amplitude vanishes (p ~ sqrt(distance) at a smooth edge: q = sign(P) P^2 linear in
+    // s), from the unconstrained amplitudes (continuous in delta, so is the edge): the zero of q between the outermost
+    // positive coarse strip and its outer neighbour, or extrapolated outwards from the two outermost coarse strips
+    // when both are positive; the range is cut there when that lies inside it.
+    auto cut_range = [&](const CoarseSolution& c, ContactRange on) {
+      auto signed_square = [&](int k) { return c.free_peaks[k] * std::fabs(c.free_peaks[k]); };
+      auto edge = [&](int step) {  // step +1: low edge (scan upwards), -1: high edge
+        const int start = step > 0 ? 0 : nodes - 1;
+        int k = start;
+        while (k >= 0 && k < nodes && !(c.free_peaks[k] > 0.0)) k += step;
+        if (k < 0 || k >= nodes) return std::nan("");
+        const int outer = k == start ? k : k - step, inner = k == start ? k + step : k;
+        if (inner < 0 || inner >= nodes) return std::nan("");
+        const double q_outer = signed_square(outer), q_inner = signed_square(inner);
+        if (!(q_inner > q_outer)) return std::nan("");
+        return c.strips[outer].s_m + (c.strips[inner].s_m - c.strips[outer].s_m) * (-q_outer) / (q_inner - q_outer);
+      };
+      const double low = edge(+1), high = edge(-1);
+      if (low > on.low && low < high) on.low = low;
+      if (high < on.high && high > on.low) on.high = high;
+      return on;
+    };
+    // ratio P / c of a coarse solution at s (linear between the coarse centres, constant beyond the outer ones)
+    auto ratio_at = [&](const CoarseSolution& c, double s_m) {
+      const double t = std::clamp((s_m - c.strips[0].s_m) / (c.strips[1].s_m - c.strips[0].s_m), 0.0,
+                                  double(nodes - 1));
+      const int k = std::min(static_cast<int>(t), nodes - 2);
+      const double w = t - k;
+      auto ratio = [&](int i) { return c.strips[i].half_length_m > 0.0 ? c.peaks[i] / c.strips[i].half_length_m : 0.0; };
+      return (1.0 - w) * ratio(k) + w * ratio(k + 1);
+    };
+    // Solve A over the virtual range and cut it (range 1). A cut of more than kCollocationRecutLow of the width asks
+    // for solve B over range 1, cut again (range 2); the result is the blend (1 - w) A + w B of the ranges and of
+    // the ratios P / c, w rising linearly from 0 to 1 between kCollocationRecutLow and kCollocationRecutHigh: every
+    // step continuous in delta, and one solve where the virtual range was nearly right.
+    CoarseSolution first, second;
+    if (!solve_on(range, first)) {
+      result.status = KpStatus::InfluenceNotPositive;
+      result.strips.clear();
+      return result;
+    }
+    const ContactRange range1 = cut_range(first, range);
+    const double cut_fraction = ((range1.low - range.low) + (range.high - range1.high)) / (range.high - range.low);
+    const double blend = std::clamp((cut_fraction - kCollocationRecutLow) / (kCollocationRecutHigh - kCollocationRecutLow),
+                                    0.0, 1.0);
+    ContactRange final_range = range1;
+    if (blend > 0.0) {
+      if (!solve_on(range1, second)) {
+        result.status = KpStatus::InfluenceNotPositive;
+        result.strips.clear();
+        return result;
+      }
+      const ContactRange range2 = cut_range(second, range1);
+      final_range.low = (1.0 - blend) * range1.low + blend * range2.low;
+      final_range.high = (1.0 - blend) * range1.high + blend * range2.high;
+    }
+    if (final_range.low != range.low || final_range.high != range.high) {
+      range.low = final_range.low;
+      range.high = final_range.high;
+      result.strips = lay_strips(range.low, range.high, n);
+    }
+    for (int j = 0; j < n; ++j) {
+      const double s_j = result.strips[j].s_m;
+      const double ratio = blend > 0.0 ? (1.0 - blend) * ratio_at(first, s_j) + blend * ratio_at(second, s_j)
+                                       : ratio_at(first, s_j);
+      peaks[j] = result.strips[j].half_length_m * ratio;
+    }
+    result.pmax_Pa = *std::max_element(peaks.begin(), peaks.end());
+  }
 
   // Forces along each strip's own normal n_j = cos(alpha_j) n0 + sin(alpha_j) t0, moments, extents.
   std::vector<double> angles;
@@ -277,7 +458,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     KpStrip& strip = result.strips[j];
     if (j > 0) position += SurfaceStep(patch, result.strips[j - 1].s_m, strip.s_m);
     strip.position_m = position;
-    strip.peak_pressure_Pa = result.p0_Pa * strip.half_length_m / c_norm;
+    strip.peak_pressure_Pa = peaks[j];
     strip.force_N = 0.5 * M_PI * strip.peak_pressure_Pa * strip.half_length_m * strip.ds_m;
     const Eigen::Vector2d force(std::sin(strip.alpha_rad) * strip.force_N, std::cos(strip.alpha_rad) * strip.force_N);
     result.force_on_wheel_N += force;

@@ -127,7 +127,7 @@ TEST(ModelSelection, QuarticGapIsNotHertzianAndAWideGrooveIsConformal) {
   point.hertz_A_per_m = A;
   point.hertz_B_per_m = 1e-3;  // the curvature at the minimum of s^4 is ~0
   const ModelSelection s = SelectContactModel(flat, approach, &point);
-  EXPECT_EQ(s.model, ContactModel::Kpec);
+  EXPECT_EQ(s.model, ContactModel::Conformal);  // issue 15: KP's amplitude rule is exact only on elliptic patches
   EXPECT_EQ(s.reason, ModelSelectionReason::NonElliptic);
   EXPECT_GT(s.gap_fit_residual, 0.05);
 
@@ -136,10 +136,12 @@ TEST(ModelSelection, QuarticGapIsNotHertzianAndAWideGrooveIsConformal) {
   const ModelSelection g = SelectContactModel(groove, 2e-5, &point);
   EXPECT_EQ(g.model, ContactModel::Conformal);
   EXPECT_GT(g.alpha_c_deg, 17.7);
-  // the threshold is the option: above the estimated alpha_c the same groove is planar
+  EXPECT_EQ(g.reason, ModelSelectionReason::Conformal);
+  // the threshold is the option: above the estimated alpha_c the conformity criterion no longer decides (the groove
+  // is then judged by its ellipticity, and its non-parabolic gap still asks for the conformal model, issue 15)
   ModelSelectionOptions o;
   o.conformity_threshold_deg = g.alpha_c_deg + 1.0;
-  EXPECT_NE(SelectContactModel(groove, 2e-5, &point, o).model, ContactModel::Conformal);
+  EXPECT_NE(SelectContactModel(groove, 2e-5, &point, o).reason, ModelSelectionReason::Conformal);
 }
 
 TEST(ModelSelection, BadInputThrows) {
@@ -174,17 +176,21 @@ TEST(AutoModel, HertzianTreadPatchIsSolvedByHertzExactly) {
   EXPECT_NEAR(h.patches[0].fx_N, c.patches[0].fx_N, 0.01 * std::fabs(c.patches[0].fx_N));
 }
 
-TEST(AutoModel, NonEllipticTreadPatchIsSolvedByKpecExactly) {
+TEST(AutoModel, NonEllipticTreadPatchIsSolvedByTheConformalModelExactly) {
+  // S1002/60E1 1:40 centred: the contact straddles the rail's R300/R80 junction (two-lobed pressure, A-2.2 case 1)
   const WheelsetPose pose = Pose(0.0);
   const WheelContactReport a = Solve(ContactModel::Auto, pose);
   ASSERT_EQ(a.patches.size(), 1u);
-  EXPECT_EQ(a.patches[0].model, ContactModel::Kpec);
-  ExpectIdentical(a, Solve(ContactModel::Kpec, pose));
-  // why Hertz is rejected: its p_max is > 10 % off the non-elliptic (and conformal) solution
+  EXPECT_EQ(a.patches[0].model, ContactModel::Conformal);
+  ExpectIdentical(a, Solve(ContactModel::Conformal, pose));
+  // why Hertz is rejected: its p_max is > 10 % off the non-elliptic (and conformal) solution; and why not kpec (issue
+  // 15): KP's amplitude rule gives a p_max 10 % below the collocated one (which is within 1 % of CONTACT's and of the
+  // exact model's, docs/physics-reference.md §5.3)
   const WheelContactReport h = Solve(ContactModel::Hertz, pose, false);
+  const WheelContactReport k = Solve(ContactModel::Kpec, pose, false);
   const WheelContactReport c = Solve(ContactModel::Conformal, pose, false);
   EXPECT_GT(std::fabs(h.patches[0].pmax_Pa / c.patches[0].pmax_Pa - 1.0), 0.10);
-  EXPECT_NEAR(a.patches[0].pmax_Pa, c.patches[0].pmax_Pa, 0.01 * c.patches[0].pmax_Pa);
+  EXPECT_LT(k.patches[0].pmax_Pa / c.patches[0].pmax_Pa - 1.0, -0.05);
 }
 
 TEST(AutoModel, FlangeRootPatchIsSolvedByTheConformalModelExactly) {

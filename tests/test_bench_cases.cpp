@@ -166,16 +166,24 @@ TEST(BenchCases, FastModelsAgainstTheExactReferenceOnTheShallowestGroove) {
 TEST(BenchCases, FixedCaseSetCoversEveryFamily) {
   const std::vector<BenchCase> cases = MakeBenchCases(CONFORMA_SHARED_DATA);
   std::set<std::string> families;
-  int flange_root = 0, mbench = 0;
+  int flange_root = 0, mbench = 0, flange_flank = 0, gauge_corner = 0, gauge_face = 0;
   for (const BenchCase& c : cases) {
     families.insert(c.family);
     flange_root += c.family == "flange_root";
     mbench += c.family == "mbench";
+    // issue 15: the right wheel on its flange flank (contact angle above 45 deg) and the worn gauge corner (above 25 deg)
+    flange_flank += c.family == "flange" && c.patch.contact_angle_rad > M_PI / 4;
+    gauge_corner += c.family == "gauge_corner";
+    gauge_face += c.family == "gauge_corner" && c.patch.contact_angle_rad > 25 * M_PI / 180;
     EXPECT_GT(c.normal_load_N, 0.0) << c.name;
     EXPECT_GT(c.hertz_A_per_m, 0.0) << c.name;
     EXPECT_GT(c.patch.strips(), 3u) << c.name;
   }
-  EXPECT_EQ(families, (std::set<std::string>{"mbench", "groove", "worn", "flange_root"}));
+  EXPECT_EQ(families,
+            (std::set<std::string>{"mbench", "groove", "worn", "flange_root", "flange", "gauge_corner"}));
+  EXPECT_GE(flange_flank, 4);   // y_ws = 7 ... 10 mm: one merged patch on the flange
+  EXPECT_EQ(gauge_corner, 5);   // tread at y = 15.0, tread and gauge corner at 15.4 and 15.5 mm
+  EXPECT_EQ(gauge_face, 2);
   EXPECT_GE(mbench, 21);        // every Manchester case has at least its tread patch
   EXPECT_EQ(flange_root, 2);    // two separate regions at the flange root
 }

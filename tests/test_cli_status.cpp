@@ -87,7 +87,7 @@ TEST(CliStatus, WearWithLostContactsIsPartial) {
   const fs::path out = TempDir("wear_lost");
   const auto r = RunCli("wear --scenario '" + kLostContacts + "' --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 5) << r.out << r.err;
-  EXPECT_NE(r.out.find("WARNING: [conformal] step 1: 4 of 16 wheel contacts FAILED"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("WARNING: [kpec] step 1: 4 of 16 wheel contacts FAILED"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("4 wheel contact(s) failed"), std::string::npos) << r.err;
   // steps.csv: failed_contacts of step 1
   std::ifstream steps(out / "steps.csv");
@@ -111,11 +111,11 @@ TEST(CliStatus, WearWithLostContactsIsPartial) {
 
 TEST(CliStatus, CompareReportShowsLostContacts) {
   const fs::path out = TempDir("compare_lost");
-  const auto r = RunCli("compare --scenario '" + kLostContacts + "' --models conformal --steps 1 --no-plot --out '" +
+  const auto r = RunCli("compare --scenario '" + kLostContacts + "' --models kpec --steps 1 --no-plot --out '" +
                         out.string() + "'");
   EXPECT_EQ(r.exit_code, 5) << r.out << r.err;
   const std::string md = Slurp(out / "report.md");
-  EXPECT_NE(md.find("**WARNING: conformal step 1: 4 of 16 wheel contacts failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("**WARNING: kpec step 1: 4 of 16 wheel contacts failed"), std::string::npos) << md;
   EXPECT_NE(md.find("completed, contacts lost"), std::string::npos) << md;
   fs::remove_all(out);
 }
@@ -161,8 +161,8 @@ TEST(CliStatus, BenchShowsItsExactReference) {
   EXPECT_NE(rows.find(",reference_status\n"), std::string::npos);
   EXPECT_NE(rows.find(",converged\n"), std::string::npos);
   const std::string creep = Slurp(out / "bench_creep_errors.md");
-  EXPECT_NE(creep.find("| hertz | flange |"), std::string::npos) << creep;
-  EXPECT_NE(creep.find("| conformal | flange |"), std::string::npos) << creep;
+  EXPECT_NE(creep.find("| hertz | flange_root |"), std::string::npos) << creep;
+  EXPECT_NE(creep.find("| conformal | flange_root |"), std::string::npos) << creep;
   fs::remove_all(out);
 }
 

@@ -76,6 +76,23 @@ std::vector<BenchCase> BenchCasesFromPose(const WheelsetTrackGeometry& geometry,
   return cases;
 }
 
+std::vector<BenchCase> FlangeBenchCases(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                        double vertical_load_N, const Material& material, const std::string& name,
+                                        const std::string& family) {
+  std::vector<BenchCase> cases = BenchCasesFromPose(geometry, side, pose, vertical_load_N, material, kDefaultCreepages,
+                                                    name, family);
+  // the spin of a wheel rolling on a contact turned by delta from the vertical: phi = -sin(delta) / r
+  // (docs/physics-reference.md §2.6; the sign of the reference file's left-wheel tread creepages)
+  for (BenchCase& c : cases) {
+    const std::vector<double>& s = c.patch.s_m;  // the wheel radius at the strip of the reference point (s = 0)
+    const size_t k = static_cast<size_t>(
+        std::min_element(s.begin(), s.end(), [](double a, double b) { return std::fabs(a) < std::fabs(b); }) - s.begin());
+    const double r = c.patch.wheel_radius_m[k];
+    if (r > 0.0) c.creepages.phi_per_m = -std::sin(c.patch.contact_angle_rad) / r;
+  }
+  return cases;
+}
+
 std::vector<BenchCase> MakeBenchCases(const std::string& shared_data_dir) {
   std::vector<BenchCase> cases;
   ProfileReadOptions wheel_read, rail_read;
@@ -136,6 +153,50 @@ std::vector<BenchCase> MakeBenchCases(const std::string& shared_data_dir) {
         cases.insert(cases.end(), found.begin(), found.end());
         break;
       }
+    }
+  }
+  // 5. Flange (issue 15): S1002 on the Manchester UIC60 1:40 rail (the profiles), the RIGHT wheel of the
+  //    wheelset pose (y_ws = 5 ... 10 mm, yaw 2.4 y_ws mrad, roll of the CONTACT reference file) pushed into
+  //    flange-root and flange-flank contact, 10 kN; every region (merged within the combine distance)
+  {
+    const std::string examples = shared_data_dir + "/profiles/contact/examples/";
+    const WheelsetTrackGeometry geometry(MakeSymmetricTrack(LoadProfile(examples + "MBench_S1002_v3.prw", wheel_read),
+                                                            LoadProfile(examples + "MBench_UIC60_v3.prr", rail_read), 0.0));
+    for (const ManchesterReferenceCase& m :
+         ReadManchesterReference(shared_data_dir + "/reference/contact_mbench_a22_left.csv")) {
+      if (m.y_ws_mm < 4.99 || std::fmod(m.y_ws_mm + 1e-9, 1.0) > 1e-6) continue;  // y_ws = 5, 6, ..., 10 mm
+      WheelsetPose pose;  // the mapping (validation_manchester.hpp): the same wheelset, its right wheel
+      pose.lateral_m = -m.y_ws_mm * 1e-3;
+      pose.yaw_rad = -m.yaw_mrad * 1e-3;
+      pose.roll_rad = m.roll_rad;
+      char name[32];
+      std::snprintf(name, sizeof name, "flange_y%02.0f", m.y_ws_mm);
+      const auto found = FlangeBenchCases(geometry, Side::Right, pose, 10e3, steel, name, "flange");
+      cases.insert(cases.end(), found.begin(), found.end());
+    }
+  }
+  // 6. Gauge corner (issue 15): the worn pair worn_high_mileage.prw on site_b_hr.prr with the issue's track (gauge
+  //    1435.10 mm measured 15.875 mm below the top, flange back 1347.40 mm at profile y = 0, r0 = 444 mm, no
+  //    inclination), right wheel, wheelset shifted y = 15.0, 15.4, 15.5 mm towards the right rail (tread alone, tread and
+  //    gauge corner; the 137 kN tread patch costs the exact reference about 3.5 s), yaw 2 mrad, roll of the
+  //    rigid equilibrium, 137 kN
+  {
+    const std::string bank = shared_data_dir + "/profiles/contact/testbank/profiles/";
+    TrackSetup setup = MakeSymmetricTrack(LoadProfile(bank + "worn_high_mileage.prw", wheel_read),
+                                          LoadProfile(bank + "site_b_hr.prr", rail_read), 0.0);
+    setup.gauge_m = 1.43510;
+    setup.gauge_height_m = 15.875e-3;
+    setup.flange_back_distance_m = 1.34740;
+    setup.flange_back_position_m = 0.0;
+    setup.nominal_radius_m = {0.444, 0.444};
+    const WheelsetTrackGeometry geometry(setup);
+    for (double y_mm : {15.0, 15.4, 15.5}) {
+      const EquilibriumResult eq = geometry.SolveRigidEquilibrium(-y_mm * 1e-3, 2e-3);
+      if (eq.status == EquilibriumStatus::NoContact) continue;
+      char name[32];
+      std::snprintf(name, sizeof name, "gauge_corner_y%.1f", y_mm);
+      const auto found = FlangeBenchCases(geometry, Side::Right, eq.pose, 137e3, steel, name, "gauge_corner");
+      cases.insert(cases.end(), found.begin(), found.end());
     }
   }
   return cases;

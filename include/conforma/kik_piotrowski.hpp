@@ -12,6 +12,8 @@
 // or the largest half-length (KPEC). p0 follows from the contact condition u_n = delta at the contact point
 // (minimum gap), paper 003 eq. 8, with the influence integrals done per strip exactly in x (complete
 // elliptic integrals) and by Gauss quadrature in s with the logarithmic singularity subtracted.
+// KpPressureRule::StripCollocation (the conformal model's default, docs/physics-reference.md §5.3) instead fits one
+// amplitude per strip to the contact condition along the whole patch.
 #include <Eigen/Core>
 #include <vector>
 
@@ -30,6 +32,18 @@ enum class KpPenetrationRule {
 enum class KpInfluence {
   HalfSpace,      // Boussinesq: (1 - nu) / (pi G r), both bodies combined (paper 003 eq. 1)
   BlancoLorenzo,  // paper 003 eqs. 2, 3, 5, 8: [(1 - nu) cos(a) / r + K sin(a) s / r^2] / (pi G), a = alpha_J - alpha_I
+};
+
+// How the strips' pressure amplitudes follow from the contact condition (the strip half-lengths c_j always come from
+// the virtual penetration rule).
+enum class KpPressureRule {
+  // Kik & Piotrowski (paper 003 eq. 8): peak_j = p0 c_j / c_norm, one contact condition u_n = delta at the contact
+  // point (minimum gap)
+  ContactPoint,
+  // Strip collocation (issue 15, docs/physics-reference.md §5.3): one amplitude per strip, the contact condition
+  // u_n = delta cos(alpha_i) - gap_i at every strip's centre line point (s_i, m_i), as the BEM's (§10.4); negative
+  // amplitudes are set to 0 and the rest re-solved
+  StripCollocation,
 };
 
 enum class KpStatus {
@@ -53,6 +67,10 @@ constexpr int kDefaultKpStrips = 31;
 struct KpOptions {
   KpPenetrationRule penetration = KpPenetrationRule::ConstantEpsilon;  // eps rule; default constant (planar KP)
   KpInfluence influence = KpInfluence::HalfSpace;                      // influence function; default half-space
+  KpPressureRule pressure = KpPressureRule::ContactPoint;              // amplitudes; default Kik-Piotrowski's
+  // StripCollocation only: equal strips across the contact on which the amplitudes are collocated, >= 2 (at most
+  // strips_across_contact are used: then the strips themselves); docs/physics-reference.md §5.3
+  int collocation_strips = 11;
   // eps of Kik & Piotrowski (CONTACT user guide eps_kp = 0.55), dimensionless, in (0, 1]; ConstantEpsilon only (the
   // variable rule computes its own eps(s), docs/physics-reference.md §3.3).
   double virtual_penetration_factor = 0.55;
@@ -120,7 +138,8 @@ KpResult SolveKikPiotrowskiForApproach(const PatchGeometry& patch, double approa
 KpOptions PlanarKpOptions(const Material& material);      // eps = 0.55, half-space
 KpOptions KpecOptions(const Material& material);          // variable eps, half-space
 KpOptions ConformalKpOptions(const Material& material);   // eps = 0.55, Blanco-Lorenzo
-// Variable eps (KPEC rule) with the Blanco-Lorenzo influence: the default of the pipeline's `conformal` model.
+// Variable eps (KPEC rule) with the Blanco-Lorenzo influence and the strip-collocated amplitudes
+// (KpPressureRule::StripCollocation, docs/physics-reference.md §5.3): the default of the pipeline's `conformal` model.
 // Paper 003 leaves the virtual-penetration rule open; the constant eps = 0.55 under-estimates p_max by 6-14 % on
 // elliptic and wide patches (docs/physics-reference.md §3.2), which the variable rule removes
 // (tests/test_kp_groove.cpp, tests/test_validation_manchester.cpp).

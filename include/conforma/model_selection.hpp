@@ -26,8 +26,11 @@
 //                    coefficients are asymptotic). `conforma bench` case flange_root_p0 (S1002/60E1 1:40 flange,
 //                    g = 0.053, spin 0.2 1/m) has Hertz p_max within 0.1 % but creep forces 43 % off the conformal
 //                    reference; the mbench / worn cases with g >= 0.12 are within 1 %.
-//                elliptic and not conformal -> `hertz`; not elliptic and not conformal -> `kpec` (planar KP with
-//                the variable virtual penetration, exact for elliptic patches, docs/physics-reference.md §3.3).
+//                elliptic and not conformal -> `hertz`; not elliptic ((a)-(c) fail) -> `conformal` (issue 15: its
+//                strip-collocated amplitudes, docs/physics-reference.md §5.3; KPEC's amplitude rule is exact only on
+//                elliptic patches and missed p_max by 11-19 % on the non-elliptic bench patches mbench_01 and the
+//                worn gauge_corner treads); (d) or (e) failing, or no Hertz point -> `kpec` (planar KP with the
+//                variable virtual penetration, exact for elliptic patches, docs/physics-reference.md §3.3).
 //   Calibration (S1002/60E1 1:40, 10 kN, y = -9..9 mm; S1002/50E4 1:20, 40 kN): patches passing (a)-(c) have Hertz
 //   p_max within 1.1 % and creep forces within 1 % of the conformal model (fit residual up to 0.04); the rejected
 //   tread patches have fit residuals 0.06..0.7 and Hertz p_max errors up to +17 % (60E1 centred: the contact
@@ -64,7 +67,7 @@ struct ModelSelectionOptions {
 // Why a model was chosen ("elliptic", "non_elliptic", ... by to_string).
 enum class ModelSelectionReason {
   Elliptic,          // -> hertz
-  NonElliptic,       // -> kpec: gap not a parabola, or curvatures change across the contact
+  NonElliptic,       // -> conformal (issue 15; kpec before): gap not a parabola, or curvatures change across it
   ElongatedEllipse,  // -> kpec: Hertz axis ratio below min_hertz_axis_ratio (outside Kalker's creep tables)
   NoHertzPoint,      // -> kpec: no rigid contact point with positive curvatures for Hertz
   TooFewStrips,      // -> kpec: the estimated contact covers fewer than min_strips strips

@@ -31,7 +31,8 @@ double Median(std::vector<double> v) {
 
 // The case families of the creep-force summary, with the name it reports them by.
 const std::vector<std::pair<std::string, std::string>> kCreepFamilies = {
-    {"mbench", "tread"}, {"flange_root", "flange"}, {"groove", "groove"}, {"worn", "worn"}};
+    {"mbench", "tread"},  {"flange_root", "flange_root"},   {"groove", "groove"},
+    {"worn", "worn"},     {"flange", "flange"}, {"gauge_corner", "gauge_corner"}};
 // The fast models of the creep-force summary.
 const std::vector<std::string> kCreepModels = {"hertz", "kpec", "conformal"};
 
@@ -147,7 +148,7 @@ void RegisterBenchCommand(CLI::App& app) {
   auto out_dir = std::make_shared<std::string>("bench_out");
   auto data = std::make_shared<std::string>();
   auto models = std::make_shared<std::string>("hertz,kp,kpec,conformal,auto");
-  auto families = std::make_shared<std::string>("mbench,groove,worn,flange_root");
+  auto families = std::make_shared<std::string>("mbench,groove,worn,flange_root,flange,gauge_corner");
   auto plot = std::make_shared<bool>(true);
   auto default_grid = std::make_shared<std::string>("s31e30");
   CLI::App* sub = app.add_subcommand("bench", "run time against error per model and grid (bench.csv, Pareto plot)");

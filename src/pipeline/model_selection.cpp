@@ -105,6 +105,9 @@ ModelSelection SelectContactModel(const PatchGeometry& patch, double approach_m,
                         out.lateral_curvature_error <= options.curvature_tolerance &&
                         out.longitudinal_curvature_error <= options.curvature_tolerance;
   if (!elliptic) {
+    // KP's amplitude rule (peak proportional to the strip half-length, kpec) is exact only on elliptic patches; the
+    // conformal model collocates the amplitudes (docs/physics-reference.md §5.3, §9.2)
+    out.model = ContactModel::Conformal;
     out.reason = ModelSelectionReason::NonElliptic;
     return out;
   }

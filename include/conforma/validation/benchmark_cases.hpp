@@ -9,7 +9,9 @@
 // Cases: Manchester sweep (left wheel, every interpenetration region at the 10 kN Hertz push-down, creepages
 // of the CONTACT reference file), the four CONTACT grooves (analytic groove patch of
 // conforma/validation/analytic_patches.hpp), the worn pair worn_high_mileage.prw / site_b_hr.prr at three lateral
-// shifts, and a flange-root two-patch contact of S1002 / 60E1 at 1:40 (both patches).
+// shifts, a flange-root two-patch contact of S1002 / 60E1 at 1:40 (both patches), and (issue 15) `flange`: the right
+// wheel of the wheelset at y_ws = 5 ... 10 mm on its flange root / flank, and `gauge_corner`: the worn pair's
+// right wheel at 137 kN on the worn gauge corner, y = 15.0 ... 15.5 mm (one merged curved patch each).
 //
 // Wear index of a patch: W = sum over elements |p_t . s| dA (traction times dimensionless slip), i.e. the
 // frictional power per unit rolling speed [N]; the integrand of the T-gamma / Archard wear laws.
@@ -47,6 +49,11 @@ std::vector<BenchCase> BenchCasesFromPose(const WheelsetTrackGeometry& geometry,
                                           double vertical_load_N, const Material& material,
                                           const FastsimCreepages& creepages, const std::string& name,
                                           const std::string& family);
+// BenchCasesFromPose with the non-Manchester creepages (xi, eta) = (1e-3, 0.5e-3) and the spin of a wheel rolling on
+// the patch's contact angle delta, phi = -sin(delta) / r (families `flange` and `gauge_corner`).
+std::vector<BenchCase> FlangeBenchCases(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                        double vertical_load_N, const Material& material, const std::string& name,
+                                        const std::string& family);
 
 // One model on one case at one grid.
 struct PatchSolveOptions {
