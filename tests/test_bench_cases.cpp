@@ -182,8 +182,10 @@ TEST(BenchCases, FixedCaseSetCoversEveryFamily) {
   EXPECT_EQ(families,
             (std::set<std::string>{"mbench", "groove", "worn", "flange_root", "flange", "gauge_corner"}));
   EXPECT_GE(flange_flank, 4);   // y_ws = 7 ... 10 mm: one merged patch on the flange
-  EXPECT_EQ(gauge_corner, 5);   // tread at y = 15.0, tread and gauge corner at 15.4 and 15.5 mm
-  EXPECT_EQ(gauge_face, 2);
+  // tread at y = 15.0, tread and gauge corner at 15.4 and 15.5 mm; at the roll 0 (15.5 mm) tread, gauge
+  // corner and flange face (74 deg)
+  EXPECT_EQ(gauge_corner, 8);
+  EXPECT_EQ(gauge_face, 4);
   EXPECT_GE(mbench, 21);        // every Manchester case has at least its tread patch
   EXPECT_EQ(flange_root, 2);    // two separate regions at the flange root
 }

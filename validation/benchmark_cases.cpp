@@ -11,6 +11,7 @@
 #include "conforma/validation/validation_manchester.hpp"
 // The analytic groove patch shared with the KP and BEM groove tests (one construction, not a copy).
 #include "conforma/validation/analytic_patches.hpp"
+#include "conforma/validation/worn_heavy_haul_track.hpp"
 
 namespace conforma {
 
@@ -179,16 +180,9 @@ std::vector<BenchCase> MakeBenchCases(const std::string& shared_data_dir) {
   //    1435.10 mm measured 15.875 mm below the top, flange back 1347.40 mm at profile y = 0, r0 = 444 mm, no
   //    inclination), right wheel, wheelset shifted y = 15.0, 15.4, 15.5 mm towards the right rail (tread alone, tread and
   //    gauge corner; the 137 kN tread patch costs the exact reference about 3.5 s), yaw 2 mrad, roll of the
-  //    rigid equilibrium, 137 kN
+  //    rigid equilibrium, 137 kN; and the issue's own pose, 15.5 mm at roll 0
   {
-    const std::string bank = shared_data_dir + "/profiles/contact/testbank/profiles/";
-    TrackSetup setup = MakeSymmetricTrack(LoadProfile(bank + "worn_high_mileage.prw", wheel_read),
-                                          LoadProfile(bank + "site_b_hr.prr", rail_read), 0.0);
-    setup.gauge_m = 1.43510;
-    setup.gauge_height_m = 15.875e-3;
-    setup.flange_back_distance_m = 1.34740;
-    setup.flange_back_position_m = 0.0;
-    setup.nominal_radius_m = {0.444, 0.444};
+    const TrackSetup setup = WornHeavyHaulTrack(shared_data_dir);
     const WheelsetTrackGeometry geometry(setup);
     for (double y_mm : {15.0, 15.4, 15.5}) {
       const EquilibriumResult eq = geometry.SolveRigidEquilibrium(-y_mm * 1e-3, 2e-3);
@@ -198,6 +192,14 @@ std::vector<BenchCase> MakeBenchCases(const std::string& shared_data_dir) {
       const auto found = FlangeBenchCases(geometry, Side::Right, eq.pose, 137e3, steel, name, "gauge_corner");
       cases.insert(cases.end(), found.begin(), found.end());
     }
+    // the issue's pose: roll 0 at 15.5 mm, where the worn flange face touches too (three patches: flange face at
+    // 74 deg, gauge corner at 35 deg, tread)
+    WheelsetPose issue_pose;
+    issue_pose.lateral_m = -15.5e-3;
+    issue_pose.yaw_rad = 2e-3;
+    const auto found = FlangeBenchCases(geometry, Side::Right, issue_pose, 137e3, steel, "gauge_corner_y15.5_roll0",
+                                        "gauge_corner");
+    cases.insert(cases.end(), found.begin(), found.end());
   }
   return cases;
 }
