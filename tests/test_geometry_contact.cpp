@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -166,9 +167,23 @@ TEST(GeometryContact, FlangeRootTwoPointContactGivesSeparatePatches) {
   const EquilibriumResult e = g.SolveRigidEquilibrium(lo, yaw, guess);
   WheelsetPose p = e.pose;
   p.vertical_m -= 0.1e-3;  // push 0.1 mm into the rail
-  const CandidateResult r = FindContactCandidates(g, Side::Left, p);
+  // patch grouping (issue 15): by default the two regions, a few mm apart along the rail profile, are one merged
+  // curved patch; combine distance 0 keeps them separate (the behaviour examined below)
+  const CandidateResult merged = FindContactCandidates(g, Side::Left, p);
+  ASSERT_EQ(merged.status, CandidateStatus::Ok);
+  EXPECT_EQ(merged.candidates.size(), 1u);
+  CandidateOptions separate;
+  separate.combine_distance_m = 0.0;
+  const CandidateResult r = FindContactCandidates(g, Side::Left, p, separate);
   ASSERT_EQ(r.status, CandidateStatus::Ok);
   ASSERT_GE(r.candidates.size(), 2u);
+  // the merged patch spans both regions and keeps the deeper one's reference point
+  const auto deepest = std::max_element(r.candidates.begin(), r.candidates.end(), [](const auto& a, const auto& b) {
+    return a.patch.rigid_approach_m < b.patch.rigid_approach_m;
+  });
+  EXPECT_NEAR(merged.candidates[0].region_start_s_m, r.candidates.front().region_start_s_m, 1e-12);
+  EXPECT_NEAR(merged.candidates[0].region_end_s_m, r.candidates.back().region_end_s_m, 1e-12);
+  EXPECT_NEAR(merged.candidates[0].patch.reference_s_on_rail_m, deepest->patch.reference_s_on_rail_m, 1e-12);
   for (const auto& c : r.candidates)
     std::printf("region s [%.2f, %.2f] mm: delta %.3f rad, lead %.2f mm, approach %.4f mm, %zu strips\n",
                 c.region_start_s_m * 1e3, c.region_end_s_m * 1e3, c.patch.contact_angle_rad, c.reference.lead_m * 1e3,

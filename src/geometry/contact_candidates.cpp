@@ -29,14 +29,14 @@ double bisect_crossing(const WheelsetTrackGeometry& g, Side side, const Wheelset
   return 0.5 * (y_in + y_out);
 }
 
+// s_ref: the reference point's arc length (the middle of the region, or of the deepest region of a merged group)
 ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f,
-                             const WheelsetPose& pose, double eta_a, double eta_b, double y_w_seed,
+                             const WheelsetPose& pose, double eta_a, double eta_b, double s_ref, double y_w_seed,
                              const CandidateOptions& o) {
   ContactCandidate c;
   const double s_a = g.RailArcLength(side, eta_a), s_b = g.RailArcLength(side, eta_b);
   c.region_start_s_m = s_a;
   c.region_end_s_m = s_b;
-  const double s_ref = 0.5 * (s_a + s_b);
   const double eta_ref = g.RailEtaAtArcLength(side, s_ref);
   double z_ref, m_ref;
   g.RailHeight(side, eta_ref, &z_ref, &m_ref);
@@ -123,7 +123,7 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     regions.emplace_back(ya, yb);
     seeds.push_back(m.y_w);
   }
-  struct Region { double eta_a, eta_b, s_a, s_b, seed, seed_gap; };
+  struct Region { double eta_a, eta_b, s_a, s_b, seed, seed_gap, s_ref; };
   std::vector<Region> rs;
   for (size_t k = 0; k < regions.size(); ++k) {
     double eta_a = 0, eta_b = 0, eta_seed = 0;
@@ -131,7 +131,8 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     g.VerticalGapAt(side, f, regions[k].second, &eta_b);
     const double seed_gap = g.VerticalGapAt(side, f, seeds[k], &eta_seed);
     if (!(eta_b > eta_a)) continue;
-    rs.push_back({eta_a, eta_b, g.RailArcLength(side, eta_a), g.RailArcLength(side, eta_b), seeds[k], seed_gap});
+    const double s_a = g.RailArcLength(side, eta_a), s_b = g.RailArcLength(side, eta_b);
+    rs.push_back({eta_a, eta_b, s_a, s_b, seeds[k], seed_gap, 0.5 * (s_a + s_b)});
   }
   std::sort(rs.begin(), rs.end(), [](const auto& p, const auto& q) { return p.s_a < q.s_a; });
   std::vector<Region> merged;
@@ -139,13 +140,15 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     if (!merged.empty() && r.s_a - merged.back().s_b < o.combine_distance_m) {
       Region& m = merged.back();
       if (r.s_b > m.s_b) { m.s_b = r.s_b; m.eta_b = r.eta_b; }
-      if (r.seed_gap < m.seed_gap) { m.seed = r.seed; m.seed_gap = r.seed_gap; }
+      // the merged patch keeps the reference point of its deepest region (the middle of the merged span may lie
+      // in the gap between the regions: Manchester at y = 0, a shallow second region 11 mm out)
+      if (r.seed_gap < m.seed_gap) { m.seed = r.seed; m.seed_gap = r.seed_gap; m.s_ref = r.s_ref; }
     } else {
       merged.push_back(r);
     }
   }
   for (const Region& r : merged) {
-    ContactCandidate c = build_patch(g, side, f, pose, r.eta_a, r.eta_b, r.seed, o);
+    ContactCandidate c = build_patch(g, side, f, pose, r.eta_a, r.eta_b, r.s_ref, r.seed, o);
     // a region whose strips the silhouette cannot reach along the rail normals (a flange pressed deep into the
     // gauge face, elastic flange) gives no patch geometry: left out rather than passed on empty
     if (c.patch.s_m.size() >= 2) out.candidates.push_back(std::move(c));
