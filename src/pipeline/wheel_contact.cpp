@@ -349,9 +349,12 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       stage.finished = false;
       std::shared_ptr<const WheelContactReport> last;
       double best_push = 0.0, best_error = 1e300;  // the evaluation nearest to the load
+      // `normal` holds phase 1's last evaluation, which is at its push (SolveLoadControl): not solved again
+      bool normal_at_phase1_push = true;
       auto total_at = [&](double push) {
         const double dz = load.push_m + push;
-        solve_all(dz, &normal);
+        if (!(normal_at_phase1_push && push == 0.0)) solve_all(dz, &normal);
+        normal_at_phase1_push = false;
         stage.report.pose.vertical_m = candidates_pose.vertical_m - dz;
         last = std::make_shared<const WheelContactReport>(
             SolveTangentialStage(stage, geometry, side, velocity, options));
