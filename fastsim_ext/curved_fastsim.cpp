@@ -135,6 +135,29 @@ void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input,
     patch.strips.assign(workspace->strips.begin(), workspace->strips.end());
     SolveFastsimStripsWithLaw(patch, uniform, input.strip_creepages[0], input.friction, input.rolling_speed_m_per_s,
                               core_options, &r.field);
+  } else if (nc == ns && nf <= 1 && input.friction.is_constant()) {
+    // per-strip creepages, one flexibility, constant friction: the core marches every strip with its own creepages
+    // (as one call per strip below, the same arithmetic), strip totals summed in strip order
+    input.friction.validate();
+    patch.strips.assign(workspace->strips.begin(), workspace->strips.end());
+    SolveFastsimStripsEach(patch, uniform, input.strip_creepages, input.friction.parameters[0],
+                           input.rolling_speed_m_per_s, core_options, &r.field, &workspace->strip_totals);
+    double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip = 0.0, power = 0.0;
+    for (const FastsimStripTotals& t : workspace->strip_totals) {
+      fx += t.fx_N;
+      fy += t.fy_N;
+      mz += t.mz_Nm;
+      adhesion += t.adhesion_area_m2;
+      slip += t.slip_area_m2;
+      power += t.frictional_power_W;
+    }
+    r.field.fx_N = fx;
+    r.field.fy_N = fy;
+    r.field.mz_Nm = mz;
+    r.field.adhesion_area_m2 = adhesion;
+    r.field.slip_area_m2 = slip;
+    r.field.frictional_power_W = power;
+    r.field.status = adhesion > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
   } else {  // per strip: the core on a one-strip view of the same element arrays
     patch.strips.resize(1);
     double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip = 0.0, power = 0.0;

@@ -94,6 +94,7 @@ struct CurvedFastsimWorkspace {
   FastsimPatch patch;                // the strip patch passed to the FASTSIM core
   std::vector<FastsimStrip> strips;  // one per KP strip
   std::vector<double> shape_means;   // element means of the normalised semi-ellipse
+  std::vector<FastsimStripTotals> strip_totals;  // per strip (per-strip creepages)
 };
 
 // Throws InputError for a bad KP result (NaN, negative sizes), creepage/flexibility vectors of the wrong size,

@@ -129,6 +129,20 @@ void SolveFastsimStrips(const FastsimPatch& patch, const FastsimFlexibilities& f
                         const FastsimCreepages& creepages, double friction_coefficient,
                         double rolling_speed_m_per_s, const FastsimOptions& options, FastsimResult* result);
 
+// Totals of one strip (as FastsimResult's, over the strip's elements in order).
+struct FastsimStripTotals {
+  double fx_N = 0.0, fy_N = 0.0, mz_Nm = 0.0, adhesion_area_m2 = 0.0, slip_area_m2 = 0.0, frictional_power_W = 0.0;
+};
+
+// Strip core with creepages per strip (creepages.size() == patch.strips.size()): every strip as SolveFastsimStrips
+// on that strip alone with its creepages (the same arithmetic, element by element), the per-element fields in
+// *result and each strip's totals in *strip_totals (result's totals are left 0, its status NoContact: the caller
+// sums the strips). Strips are marched two at a time (independent recurrences), for speed only.
+void SolveFastsimStripsEach(const FastsimPatch& patch, const FastsimFlexibilities& flexibilities,
+                            const std::vector<FastsimCreepages>& creepages, double friction_coefficient,
+                            double rolling_speed_m_per_s, const FastsimOptions& options, FastsimResult* result,
+                            std::vector<FastsimStripTotals>* strip_totals);
+
 // The Hertz ellipse and its load as SolveFastsimHertz takes them; InputError for a value out of the ranges given.
 struct FastsimHertzInput {
   double a_m = 0.0;  // semi-axis along x (rolling), m, > 0

@@ -34,6 +34,7 @@
 // are the local minima of the vertical separation (found on a coarse scan and refined by Brent's method),
 // each then refined to the minimum of the gap along the local rail normal (exactly the rigid gap; at
 // contact both minima coincide).
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -223,7 +224,7 @@ class WheelsetTrackGeometry {
     std::vector<double> z, dz, kappa, s;  // value, slope, signed curvature (convex > 0), arc length
     size_t size() const { return z.size(); }
     double y_end() const { return z.empty() ? y0 : y0 + h * static_cast<double>(z.size() - 1); }
-    bool eval(double y, double* value, double* slope) const;
+    inline bool eval(double y, double* value, double* slope) const;  // (defined below: inlined in the hot loops)
   };
 
  private:
@@ -240,6 +241,23 @@ class WheelsetTrackGeometry {
   double wheel_origin_eta_ = 0.75;
   double mean_radius_ = 0.46;
 };
+
+// Cubic Hermite table value and slope at y; false outside the table.
+inline bool WheelsetTrackGeometry::GraphTable::eval(double y, double* value, double* slope) const {
+  if (z.size() < 2) return false;
+  const double u = (y - y0) / h;
+  if (!(u >= 0.0) || u > static_cast<double>(z.size() - 1)) return false;
+  const size_t i = std::min(static_cast<size_t>(u), z.size() - 2);
+  const double t = u - static_cast<double>(i), t2 = t * t, t3 = t2 * t;
+  // cubic Hermite on [i, i+1] with node values and slopes
+  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+  if (value) *value = h00 * z[i] + h10 * h * dz[i] + h01 * z[i + 1] + h11 * h * dz[i + 1];
+  if (slope) {
+    const double d00 = (6 * t2 - 6 * t) / h, d10 = 3 * t2 - 4 * t + 1, d01 = (-6 * t2 + 6 * t) / h, d11 = 3 * t2 - 2 * t;
+    *slope = d00 * z[i] + d10 * dz[i] + d01 * z[i + 1] + d11 * dz[i + 1];
+  }
+  return true;
+}
 
 // Lateral shift at which the wheel on the outer side (c > 0: right, y < 0) reaches flange contact: the last shift
 // (0.1 mm scan, up to 20 mm) before the smallest-gap rigid contact jumps to the flange (contact angle >

@@ -24,6 +24,7 @@ double bisect_crossing(const WheelsetTrackGeometry& g, Side side, const Wheelset
                        double y_out) {
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (y_in + y_out);
+    if (mid == y_in || mid == y_out) break;  // adjacent doubles: no later step changes the ends
     if (g.VerticalGapAt(side, f, mid) < 0.0) y_in = mid; else y_out = mid;
   }
   return 0.5 * (y_in + y_out);

@@ -47,22 +47,6 @@ TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double 
   return t;
 }
 
-bool WheelsetTrackGeometry::GraphTable::eval(double y, double* value, double* slope) const {
-  if (z.size() < 2) return false;
-  const double u = (y - y0) / h;
-  if (!(u >= 0.0) || u > static_cast<double>(z.size() - 1)) return false;
-  const size_t i = std::min(static_cast<size_t>(u), z.size() - 2);
-  const double t = u - static_cast<double>(i), t2 = t * t, t3 = t2 * t;
-  // cubic Hermite on [i, i+1] with node values and slopes
-  const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + t, h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
-  if (value) *value = h00 * z[i] + h10 * h * dz[i] + h01 * z[i + 1] + h11 * h * dz[i + 1];
-  if (slope) {
-    const double d00 = (6 * t2 - 6 * t) / h, d10 = 3 * t2 - 4 * t + 1, d01 = (-6 * t2 + 6 * t) / h, d11 = 3 * t2 - 2 * t;
-    *slope = d00 * z[i] + d10 * dz[i] + d01 * z[i + 1] + d11 * dz[i + 1];
-  }
-  return true;
-}
-
 namespace {
 
 using GraphTable = WheelsetTrackGeometry::GraphTable;

@@ -100,6 +100,91 @@ void ValidatePatch(const FastsimPatch& patch) {
 
 }  // namespace
 
+namespace {
+
+void ValidateInputs(const FastsimFlexibilities& flexibilities, double friction_coefficient,
+                    double rolling_speed_m_per_s, FastsimResult* result) {
+  if (result == nullptr) throw InputError("SolveFastsimStrips: result must not be null");
+  require_positive(flexibilities.L1, "L1");
+  require_positive(flexibilities.L2, "L2");
+  require_positive(flexibilities.L3, "L3");
+  require_non_negative(friction_coefficient, "friction_coefficient");
+  require_non_negative(rolling_speed_m_per_s, "rolling_speed_m_per_s");
+}
+
+void ValidateCreepages(const FastsimCreepages& creepages) {
+  require_finite(creepages.xi, "xi");
+  require_finite(creepages.eta, "eta");
+  require_finite(creepages.phi_per_m, "phi_per_m");
+}
+
+struct Totals {  // sums over elements, in element order
+  double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip_area = 0.0, power = 0.0;
+};
+
+// The march along one strip (§2.4 steps 1-4): element i of the strip from element i-1 (step(i) in order
+// i = 0, 1, ...). One object per strip; strips are independent, so two marches can be interleaved.
+struct StripMarch {
+  const FastsimStrip& strip;
+  double L1, L2, xi_L1, eta_L2, phi_L3, friction_coefficient;
+  const double* bound;
+  const double* mu_field;
+  bool classic;
+  FastsimResult& r;
+  Totals& sums;
+  bool& any_bad_bound;
+  double y = strip.y_m;
+  double dx = (strip.x_lead_m - strip.x_trail_m) / strip.n_elements;
+  double area = dx * strip.width_m;
+  double increment_x = xi_L1 - phi_L3 * y;  // (xi - phi y L1/L3)/L1, §2.4 step 1
+  double px = 0.0, py = 0.0;
+  double x_prev = strip.x_lead_m;
+
+  inline void step(int i) {
+    const int e = strip.first_element + i;
+    const double x_centre = strip.x_lead_m - (i + 0.5) * dx;
+    const double h = classic ? dx : x_prev - x_centre;
+    const double x_mid = classic ? x_centre : 0.5 * (x_prev + x_centre);
+    const double px_trial = px - increment_x * h;
+    const double py_trial = py - (eta_L2 + phi_L3 * x_mid) * h;
+    const double mu = mu_field ? mu_field[e] : friction_coefficient;
+    const double p_n = bound[e];
+    any_bad_bound |= !(p_n >= 0.0) || !(mu >= 0.0);
+    const double limit = mu * p_n;
+    const double magnitude2 = px_trial * px_trial + py_trial * py_trial;
+    double sx = 0.0, sy = 0.0;
+    unsigned char slipping = 0;
+    if (magnitude2 > limit * limit) {  // §2.4 step 3: traction bound
+      const double scale = limit / std::sqrt(magnitude2);
+      px = px_trial * scale;
+      py = py_trial * scale;
+      sx = L1 * (px - px_trial) / h;
+      sy = L2 * (py - py_trial) / h;
+      slipping = 1;
+      sums.slip_area += area;
+      sums.power += std::abs(px * sx + py * sy) * area;
+    } else {
+      px = px_trial;
+      py = py_trial;
+      sums.adhesion += area;
+    }
+    r.x_m[e] = x_centre;
+    r.y_m[e] = y;
+    r.area_m2[e] = area;
+    r.px_Pa[e] = px;
+    r.py_Pa[e] = py;
+    r.sx[e] = sx;
+    r.sy[e] = sy;
+    r.in_slip[e] = slipping;
+    sums.fx += px * area;  // §2.4 step 4
+    sums.fy += py * area;
+    sums.mz += (x_centre * py - y * px) * area;
+    x_prev = x_centre;
+  }
+};
+
+}  // namespace
+
 void SolveFastsimStrips(const FastsimPatch& patch, const FastsimFlexibilities& flexibilities,
                         const FastsimCreepages& creepages, double friction_coefficient,
                         double rolling_speed_m_per_s, const FastsimOptions& options, FastsimResult* result) {
@@ -107,9 +192,7 @@ void SolveFastsimStrips(const FastsimPatch& patch, const FastsimFlexibilities& f
   require_positive(flexibilities.L1, "L1");
   require_positive(flexibilities.L2, "L2");
   require_positive(flexibilities.L3, "L3");
-  require_finite(creepages.xi, "xi");
-  require_finite(creepages.eta, "eta");
-  require_finite(creepages.phi_per_m, "phi_per_m");
+  ValidateCreepages(creepages);
   require_non_negative(friction_coefficient, "friction_coefficient");
   require_non_negative(rolling_speed_m_per_s, "rolling_speed_m_per_s");
   ValidatePatch(patch);
@@ -124,74 +207,92 @@ void SolveFastsimStrips(const FastsimPatch& patch, const FastsimFlexibilities& f
     return;
   }
 
-  const double L1 = flexibilities.L1, L2 = flexibilities.L2;
   const double inv_L1 = 1.0 / flexibilities.L1, inv_L2 = 1.0 / flexibilities.L2, inv_L3 = 1.0 / flexibilities.L3;
   const double xi_L1 = creepages.xi * inv_L1, eta_L2 = creepages.eta * inv_L2, phi_L3 = creepages.phi_per_m * inv_L3;
-  const double* bound = patch.bound_pressure_Pa.data();
   const double* mu_field = patch.friction_coefficient.empty() ? nullptr : patch.friction_coefficient.data();
   bool any_bad_bound = false;
   const bool classic = options.marching == FastsimMarching::ClassicFullStep;
-
-  double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip_area = 0.0, power = 0.0;
+  Totals sums;  // one sum over every element of every strip
   for (const FastsimStrip& strip : patch.strips) {
     if (strip.n_elements == 0) continue;
-    const double y = strip.y_m;
-    const double dx = (strip.x_lead_m - strip.x_trail_m) / strip.n_elements;
-    const double area = dx * strip.width_m;
-    const double increment_x = xi_L1 - phi_L3 * y;  // (xi - phi y L1/L3)/L1, §2.4 step 1
-    double px = 0.0, py = 0.0;
-    double x_prev = strip.x_lead_m;
-    for (int i = 0; i < strip.n_elements; ++i) {
-      const int e = strip.first_element + i;
-      const double x_centre = strip.x_lead_m - (i + 0.5) * dx;
-      const double h = classic ? dx : x_prev - x_centre;
-      const double x_mid = classic ? x_centre : 0.5 * (x_prev + x_centre);
-      const double px_trial = px - increment_x * h;
-      const double py_trial = py - (eta_L2 + phi_L3 * x_mid) * h;
-      const double mu = mu_field ? mu_field[e] : friction_coefficient;
-      const double p_n = bound[e];
-      any_bad_bound |= !(p_n >= 0.0) || !(mu >= 0.0);
-      const double limit = mu * p_n;
-      const double magnitude2 = px_trial * px_trial + py_trial * py_trial;
-      double sx = 0.0, sy = 0.0;
-      unsigned char slipping = 0;
-      if (magnitude2 > limit * limit) {  // §2.4 step 3: traction bound
-        const double scale = limit / std::sqrt(magnitude2);
-        px = px_trial * scale;
-        py = py_trial * scale;
-        sx = L1 * (px - px_trial) / h;
-        sy = L2 * (py - py_trial) / h;
-        slipping = 1;
-        slip_area += area;
-        power += std::abs(px * sx + py * sy) * area;
-      } else {
-        px = px_trial;
-        py = py_trial;
-        adhesion += area;
-      }
-      r.x_m[e] = x_centre;
-      r.y_m[e] = y;
-      r.area_m2[e] = area;
-      r.px_Pa[e] = px;
-      r.py_Pa[e] = py;
-      r.sx[e] = sx;
-      r.sy[e] = sy;
-      r.in_slip[e] = slipping;
-      fx += px * area;  // §2.4 step 4
-      fy += py * area;
-      mz += (x_centre * py - y * px) * area;
-      x_prev = x_centre;
-    }
+    StripMarch march{strip, flexibilities.L1, flexibilities.L2, xi_L1, eta_L2, phi_L3, friction_coefficient,
+                     patch.bound_pressure_Pa.data(), mu_field, classic, r, sums, any_bad_bound};
+    for (int i = 0; i < strip.n_elements; ++i) march.step(i);
   }
   if (any_bad_bound)
     throw InputError("SolveFastsimStrips: bound_pressure_Pa and friction_coefficient must be finite and >= 0");
-  r.fx_N = fx;
-  r.fy_N = fy;
-  r.mz_Nm = mz;
-  r.adhesion_area_m2 = adhesion;
-  r.slip_area_m2 = slip_area;
-  r.frictional_power_W = power * rolling_speed_m_per_s;
-  r.status = adhesion > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+  r.fx_N = sums.fx;
+  r.fy_N = sums.fy;
+  r.mz_Nm = sums.mz;
+  r.adhesion_area_m2 = sums.adhesion;
+  r.slip_area_m2 = sums.slip_area;
+  r.frictional_power_W = sums.power * rolling_speed_m_per_s;
+  r.status = sums.adhesion > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+}
+
+void SolveFastsimStripsEach(const FastsimPatch& patch, const FastsimFlexibilities& flexibilities,
+                            const std::vector<FastsimCreepages>& creepages, double friction_coefficient,
+                            double rolling_speed_m_per_s, const FastsimOptions& options, FastsimResult* result,
+                            std::vector<FastsimStripTotals>* strip_totals) {
+  ValidateInputs(flexibilities, friction_coefficient, rolling_speed_m_per_s, result);
+  if (strip_totals == nullptr) throw InputError("SolveFastsimStripsEach: strip_totals must not be null");
+  const size_t ns = patch.strips.size();
+  if (creepages.size() != ns)
+    throw InputError("SolveFastsimStripsEach: " + std::to_string(creepages.size()) + " creepages for " +
+                     std::to_string(ns) + " strips");
+  for (const FastsimCreepages& c : creepages) ValidateCreepages(c);
+  ValidatePatch(patch);
+
+  FastsimResult& r = *result;
+  const int n = patch.elements();
+  ResizeResult(n, &r);
+  r.fx_N = r.fy_N = r.mz_Nm = 0.0;
+  r.adhesion_area_m2 = r.slip_area_m2 = r.frictional_power_W = 0.0;
+  strip_totals->assign(ns, FastsimStripTotals{});
+  r.status = FastsimStatus::NoContact;
+  if (n == 0) return;
+
+  const double inv_L1 = 1.0 / flexibilities.L1, inv_L2 = 1.0 / flexibilities.L2, inv_L3 = 1.0 / flexibilities.L3;
+  const double* mu_field = patch.friction_coefficient.empty() ? nullptr : patch.friction_coefficient.data();
+  bool any_bad_bound = false;
+  const bool classic = options.marching == FastsimMarching::ClassicFullStep;
+  std::vector<Totals> sums(ns);
+  auto march_of = [&](size_t j) {
+    const FastsimCreepages& c = creepages[j];
+    return StripMarch{patch.strips[j], flexibilities.L1, flexibilities.L2, c.xi * inv_L1, c.eta * inv_L2,
+                      c.phi_per_m * inv_L3, friction_coefficient, patch.bound_pressure_Pa.data(), mu_field, classic,
+                      r, sums[j], any_bad_bound};
+  };
+  // two strips at a time: each march is a chain of dependent divisions and roots, two chains overlap in the CPU
+  size_t j = 0;
+  for (; j + 1 < ns; j += 2) {
+    const int na = patch.strips[j].n_elements, nb = patch.strips[j + 1].n_elements;
+    if (na == 0 || nb == 0) break;
+    StripMarch a = march_of(j), b = march_of(j + 1);
+    const int common = std::min(na, nb);
+    for (int i = 0; i < common; ++i) {
+      a.step(i);
+      b.step(i);
+    }
+    for (int i = common; i < na; ++i) a.step(i);
+    for (int i = common; i < nb; ++i) b.step(i);
+  }
+  for (; j < ns; ++j) {
+    if (patch.strips[j].n_elements == 0) continue;
+    StripMarch a = march_of(j);
+    for (int i = 0; i < patch.strips[j].n_elements; ++i) a.step(i);
+  }
+  if (any_bad_bound)
+    throw InputError("SolveFastsimStrips: bound_pressure_Pa and friction_coefficient must be finite and >= 0");
+  for (size_t k = 0; k < ns; ++k) {
+    FastsimStripTotals& t = (*strip_totals)[k];
+    t.fx_N = sums[k].fx;
+    t.fy_N = sums[k].fy;
+    t.mz_Nm = sums[k].mz;
+    t.adhesion_area_m2 = sums[k].adhesion;
+    t.slip_area_m2 = sums[k].slip_area;
+    t.frictional_power_W = sums[k].power * rolling_speed_m_per_s;
+  }
 }
 
 }  // namespace conforma

@@ -319,9 +319,68 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   std::vector<PatchNormalSolution>& normal = stage.normal;
   normal.resize(n);
   if (load_control) {
-    // the one load control (load_control.hpp): the Hertz push-down of the candidates is close, so the first
-    // bracket is the size of the largest rigid approach; its last evaluation is at the solution (no re-solve).
-    // Phase 1 balances the pressure forces alone (monotone in the push: every patch's approach grows with it).
+    const WheelsetPose candidates_pose = report.pose;
+    // Total-force balance (docs/physics-reference.md §3.6.1): the wheel's vertical force with the creep forces,
+    // F_z(dz) = sum_j (fn_j n0_j,z + (fs_j + fy_j) t0_j,z), each evaluation solving the normal problem and then the
+    // tangential one on its pressure (the traction bound mu p follows the push). total_at(push) evaluates it at
+    // dz = base_push + push; `last` is the report of its last evaluation.
+    std::shared_ptr<const WheelContactReport> last;
+    double base_push = 0.0;
+    bool normal_at_base = false;                 // `normal` already holds the normal solution at base_push
+    double best_push = 0.0, best_error = 1e300;  // the evaluation nearest to the load
+    auto total_at = [&](double push) {
+      const double dz = base_push + push;
+      if (!(normal_at_base && push == 0.0)) solve_all(dz, &normal);
+      normal_at_base = false;
+      stage.report.pose.vertical_m = candidates_pose.vertical_m - dz;
+      last = std::make_shared<const WheelContactReport>(SolveTangentialStage(stage, geometry, side, velocity, options));
+      const double error = std::fabs(last->vertical_force_N - options.vertical_load_N);
+      if (error < best_error) best_error = error, best_push = push;
+      return last->vertical_force_N;
+    };
+    // The first step from (base_push, F_z there): with F_z / pressure about constant in the push and a Hertzian
+    // approach ~ N^(2/3), the root is at approach (ratio^(-2/3) - 1) from base_push, ratio = F_z / load there (exact
+    // for a Hertzian patch), approach = the wheel's vertical push from first touch: each patch's normal approach
+    // over its n0_z (a flange patch at 60-70 deg needs 2-3x its approach vertically); doubled until F_z crosses
+    // the load, within 8 approaches.
+    auto solve_total_from_base = [&](double total_at_base) {
+      const double ratio = total_at_base / options.vertical_load_N;
+      double approach = std::fabs(base_push);
+      for (size_t j = 0; j < n; ++j) {
+        const bool hertz = patch_model[j] == ContactModel::Hertz;
+        const double rigid = hertz ? -hertz_points[j].gap_m : candidates.candidates[j].patch.rigid_approach_m;
+        const double nz = hertz ? std::cos(hertz_points[j].contact_angle_rad) : frames[j].normal.z();
+        if (nz > 0.1 && rigid > 0.0) approach = std::max(approach, rigid / nz + base_push);
+      }
+      approach = std::max(approach, 1e-7);
+      return SolveLoadControlFrom(total_at, total_at_base, options.vertical_load_N,
+                                  (std::pow(ratio, -2.0 / 3.0) - 1.0) * approach, 8.0 * approach,
+                                  options.load_tolerance);
+    };
+    int direct_evaluations = 0;
+    if (TotalForceLoadControl(options)) {
+      // Direct total-force balance from the candidates' Hertz push-down (dz = 0), without the pressure balance
+      // first: accepted when it converges (Ok); otherwise (F_z <= 0 there, no rising bracket, a jump over the
+      // load) the two phases below decide, from the pressure-balanced push.
+      stage.finished = false;
+      const double total_at_hertz = total_at(0.0);
+      LoadControlResult direct;
+      if (total_at_hertz > 0.0) direct = solve_total_from_base(total_at_hertz);
+      direct_evaluations = 1 + direct.iterations;
+      if (direct.status == LoadControlStatus::Ok) {
+        WheelContactReport coupled = *last;
+        coupled.load_iterations = direct_evaluations;
+        report.load_iterations = coupled.load_iterations;
+        report.pose = coupled.pose;
+        stage.coupled = std::make_shared<const WheelContactReport>(std::move(coupled));
+        return stage;
+      }
+      report.pose = candidates_pose;
+      best_push = 0.0, best_error = 1e300;
+    }
+    // Phase 1, the one load control (load_control.hpp) on the pressure forces alone (monotone in the push: every
+    // patch's approach grows with it): the Hertz push-down of the candidates is close, so the first bracket is the
+    // size of the largest rigid approach; its last evaluation is at the solution (no re-solve).
     double scale = 0.0;
     for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
     scale = std::max(scale, 1e-6);
@@ -332,33 +391,21 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
                                                     options.vertical_load_N, scale, pressure_tolerance);
     if (load.status == LoadControlStatus::NoBracket) {
       report.status = WheelContactStatus::NotConverged;
+      stage.coupled.reset();
+      stage.finished = true;
       return stage;
     }
-    report.load_iterations = load.iterations;
+    report.load_iterations = direct_evaluations + load.iterations;
     if (load.status == LoadControlStatus::NotConverged) report.status = WheelContactStatus::NotConverged;
-    const WheelsetPose candidates_pose = report.pose;
     report.pose.vertical_m = candidates_pose.vertical_m - load.push_m;
     if (TotalForceLoadControl(options) && load.status == LoadControlStatus::Ok) {
-      // Phase 2, total-force balance (docs/physics-reference.md §3.6.1): the wheel's vertical force with the creep
-      // forces, F_z(dz) = sum_j (fn_j n0_j,z + (fs_j + fy_j) t0_j,z), each evaluation solving the normal problem
-      // and then the tangential one on its pressure (the traction bound mu p follows the push). Bracketed
-      // (SolveLoadControl, Illinois false position), started at phase 1's push. F_z is not monotone by
-      // construction: a creep force along t0 pulling the wheel down (mu tan(delta) > 1 at a flange with
-      // the wheel sliding down it) can outweigh the pressure; then F_z <= 0 at phase 1's push and no push-down
-      // carries the load: NotConverged, the pressure-balanced solution reported.
+      // Phase 2: the total-force balance started at phase 1's push (bracketed, SolveLoadControlFrom, Illinois false
+      // position). F_z is not monotone by construction: a creep force along t0 pulling the wheel down
+      // (mu tan(delta) > 1 at a flange with the wheel sliding down it) can outweigh the pressure; then F_z <= 0 at
+      // phase 1's push and no push-down carries the load: NotConverged, the pressure-balanced solution reported.
       stage.finished = false;
-      std::shared_ptr<const WheelContactReport> last;
-      double best_push = 0.0, best_error = 1e300;  // the evaluation nearest to the load
-      auto total_at = [&](double push) {
-        const double dz = load.push_m + push;
-        solve_all(dz, &normal);
-        stage.report.pose.vertical_m = candidates_pose.vertical_m - dz;
-        last = std::make_shared<const WheelContactReport>(
-            SolveTangentialStage(stage, geometry, side, velocity, options));
-        const double error = std::fabs(last->vertical_force_N - options.vertical_load_N);
-        if (error < best_error) best_error = error, best_push = push;
-        return last->vertical_force_N;
-      };
+      base_push = load.push_m;
+      normal_at_base = true;  // phase 1's last evaluation is at its push (SolveLoadControl): not solved again
       const double total_at_pressure_balance = total_at(0.0);
       if (!(total_at_pressure_balance > 0.0)) {
         report.status = WheelContactStatus::NotConverged;
@@ -367,23 +414,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
         stage.coupled = std::make_shared<const WheelContactReport>(std::move(failed));
         return stage;
       }
-      // the first step: with F_z / pressure about constant in the push and a Hertzian approach ~ N^(2/3), the
-      // root is at approach (ratio^(-2/3) - 1) from phase 1's push, ratio = F_z / load there (exact for a Hertzian
-      // patch); doubled until F_z crosses the load, within 8 approaches
-      const double ratio = total_at_pressure_balance / options.vertical_load_N;
-      // the wheel's vertical push from first touch: each patch's normal approach over its n0_z (a flange patch at
-      // 60-70 deg needs 2-3x its approach vertically)
-      double approach = std::fabs(load.push_m);
-      for (size_t j = 0; j < n; ++j) {
-        const bool hertz = patch_model[j] == ContactModel::Hertz;
-        const double rigid = hertz ? -hertz_points[j].gap_m : candidates.candidates[j].patch.rigid_approach_m;
-        const double nz = hertz ? std::cos(hertz_points[j].contact_angle_rad) : frames[j].normal.z();
-        if (nz > 0.1 && rigid > 0.0) approach = std::max(approach, rigid / nz + load.push_m);
-      }
-      approach = std::max(approach, 1e-7);
-      const LoadControlResult total =
-          SolveLoadControlFrom(total_at, total_at_pressure_balance, options.vertical_load_N,
-                               (std::pow(ratio, -2.0 / 3.0) - 1.0) * approach, 8.0 * approach, options.load_tolerance);
+      const LoadControlResult total = solve_total_from_base(total_at_pressure_balance);
       if (total.status != LoadControlStatus::Ok && total.status != LoadControlStatus::NotConverged) {
         report.status = WheelContactStatus::NotConverged;  // no bracket: the pressure-balanced solution
         total_at(0.0);
@@ -393,12 +424,14 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
         total_at(best_push);
       }
       WheelContactReport coupled = *last;
-      coupled.load_iterations = load.iterations + 1 + total.iterations;
+      coupled.load_iterations = report.load_iterations + 1 + total.iterations;
       if (total.status == LoadControlStatus::NotConverged || report.status == WheelContactStatus::NotConverged)
         coupled.status = WheelContactStatus::NotConverged;
       report.load_iterations = coupled.load_iterations;
       report.pose = coupled.pose;
       stage.coupled = std::make_shared<const WheelContactReport>(std::move(coupled));
+    } else {
+      stage.coupled.reset();  // (a failed direct attempt's report is not the answer)
     }
   } else {
     solve_all(0.0, &normal);
