@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -177,13 +176,12 @@ TEST(GeometryContact, FlangeRootTwoPointContactGivesSeparatePatches) {
   const CandidateResult r = FindContactCandidates(g, Side::Left, p, separate);
   ASSERT_EQ(r.status, CandidateStatus::Ok);
   ASSERT_GE(r.candidates.size(), 2u);
-  // the merged patch spans both regions and keeps the deeper one's reference point
-  const auto deepest = std::max_element(r.candidates.begin(), r.candidates.end(), [](const auto& a, const auto& b) {
-    return a.patch.rigid_approach_m < b.patch.rigid_approach_m;
-  });
+  // the merged patch spans both regions; its reference point lies between the regions' middles
   EXPECT_NEAR(merged.candidates[0].region_start_s_m, r.candidates.front().region_start_s_m, 1e-12);
   EXPECT_NEAR(merged.candidates[0].region_end_s_m, r.candidates.back().region_end_s_m, 1e-12);
-  EXPECT_NEAR(merged.candidates[0].patch.reference_s_on_rail_m, deepest->patch.reference_s_on_rail_m, 1e-12);
+  const double s_ref = merged.candidates[0].patch.reference_s_on_rail_m;
+  EXPECT_GT(s_ref, r.candidates.front().patch.reference_s_on_rail_m);
+  EXPECT_LT(s_ref, r.candidates.back().patch.reference_s_on_rail_m);
   for (const auto& c : r.candidates)
     std::printf("region s [%.2f, %.2f] mm: delta %.3f rad, lead %.2f mm, approach %.4f mm, %zu strips\n",
                 c.region_start_s_m * 1e3, c.region_end_s_m * 1e3, c.patch.contact_angle_rad, c.reference.lead_m * 1e3,

@@ -30,7 +30,7 @@ double bisect_crossing(const WheelsetTrackGeometry& g, Side side, const Wheelset
   return 0.5 * (y_in + y_out);
 }
 
-// s_ref: the reference point's arc length (the middle of the region, or of the deepest region of a merged group)
+// s_ref: the reference point's arc length (the middle of the region; of a merged group, see FindContactCandidates)
 ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f,
                              const WheelsetPose& pose, double eta_a, double eta_b, double s_ref, double y_w_seed,
                              const CandidateOptions& o) {
@@ -124,7 +124,8 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     regions.emplace_back(ya, yb);
     seeds.push_back(m.y_w);
   }
-  struct Region { double eta_a, eta_b, s_a, s_b, seed, seed_gap, s_ref; };
+  // weight: the region's interpenetration area, ~ width x depth (a parabolic lobe: 2/3 of it; the factor cancels)
+  struct Region { double eta_a, eta_b, s_a, s_b, seed, seed_gap, s_ref, weight; };
   std::vector<Region> rs;
   for (size_t k = 0; k < regions.size(); ++k) {
     double eta_a = 0, eta_b = 0, eta_seed = 0;
@@ -133,7 +134,7 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     const double seed_gap = g.VerticalGapAt(side, f, seeds[k], &eta_seed);
     if (!(eta_b > eta_a)) continue;
     const double s_a = g.RailArcLength(side, eta_a), s_b = g.RailArcLength(side, eta_b);
-    rs.push_back({eta_a, eta_b, s_a, s_b, seeds[k], seed_gap, 0.5 * (s_a + s_b)});
+    rs.push_back({eta_a, eta_b, s_a, s_b, seeds[k], seed_gap, 0.5 * (s_a + s_b), (s_b - s_a) * std::max(0.0, -seed_gap)});
   }
   std::sort(rs.begin(), rs.end(), [](const auto& p, const auto& q) { return p.s_a < q.s_a; });
   std::vector<Region> merged;
@@ -141,9 +142,12 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     if (!merged.empty() && r.s_a - merged.back().s_b < o.combine_distance_m) {
       Region& m = merged.back();
       if (r.s_b > m.s_b) { m.s_b = r.s_b; m.eta_b = r.eta_b; }
-      // the merged patch keeps the reference point of its deepest region (the middle of the merged span may lie
-      // in the gap between the regions: Manchester at y = 0, a shallow second region 11 mm out)
-      if (r.seed_gap < m.seed_gap) { m.seed = r.seed; m.seed_gap = r.seed_gap; m.s_ref = r.s_ref; }
+      // reference point of the merged patch: the regions' middles weighted by their interpenetration areas (the
+      // middle of the merged span may lie in the gap, far from where the load is: Manchester at y = 0, a
+      // shallow second region 11 mm out; two equal regions: the centre)
+      if (m.weight + r.weight > 0.0) m.s_ref = (m.weight * m.s_ref + r.weight * r.s_ref) / (m.weight + r.weight);
+      m.weight += r.weight;
+      if (r.seed_gap < m.seed_gap) { m.seed = r.seed; m.seed_gap = r.seed_gap; }
     } else {
       merged.push_back(r);
     }
