@@ -227,6 +227,16 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
   ceres::Problem problem(problem_options);
   BogieCost cost(&ctx);
   problem.AddResidualBlock(&cost, nullptr, p);
+  // The wheelsets' shifts stay in the admissible range [y_min, y_max] (flange-contact shift + derailment margin):
+  // with the total-force balance the flange's lateral force is bounded by Nadal's limit, and an unbounded
+  // trust-region step could jump over the flange onto the branch beyond it, where the wheel rides past its flange
+  // and the equations have spurious solutions 10-40 mm out (issue 15: Aosta, default metro R 200 m); those were
+  // rejected as derailed and the class fell back, while an admissible equilibrium existed.
+  for (int j = 0; j < 2; ++j) {
+    p[3 * j] = std::clamp(p[3 * j], 1e3 * ctx.y_min, 1e3 * ctx.y_max);
+    problem.SetParameterLowerBound(p, 3 * j, 1e3 * ctx.y_min);
+    problem.SetParameterUpperBound(p, 3 * j, 1e3 * ctx.y_max);
+  }
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
