@@ -36,8 +36,9 @@
 //   (QuasiStaticOptions::multi_start) and the best attempt overall is kept.
 //   Admissible solutions: every wheelset within derailment_margin_m of its flange-contact shift, and no wheelset
 //   in flange contact whose lateral contact force falls as it moves on towards the flange (climbing_slope: the
-//   wheel rides up its flange, an unstable equilibrium). An inadmissible attempt is never Converged
-//   (BogieQuasiStaticReport::derailed when it is the best one left).
+//   wheel rides up its flange, an unstable equilibrium; both one-sided differences over 0.02 mm must show the
+//   fall, so that a jump of the contact forces next to a stable state is not taken for a slope). An inadmissible
+//   attempt is never Converged (BogieQuasiStaticReport::derailed / climbing when it is the best one left).
 //   RIGID OR ELASTIC FLANGE: with the default rigid flange, the wheelset's vertical position and roll make the
 //   smallest gap of each wheel zero, so a flange face steeper than ~80 deg under the angle of attack (worn
 //   S1002 after a few hundred km) is a wall the wheelset can only pass by jumping onto it: no flange force is
@@ -146,6 +147,9 @@ struct BogieQuasiStaticReport {
   double secondary_lateral_deflection_m = 0.0;
   int iterations = 0;                     // LM iterations (all attempts)
   int contact_evaluations = 0;            // SolveWheelContact calls
+  // ... of which without a solution (status not Ok, e.g. the load control stopped on a jump of the model's normal
+  // force in the push-down): the minimizer cannot step there; many of them explain a NotConverged solve
+  int failed_contact_evaluations = 0;
   double max_residual = 0.0;              // max |scaled residual| at the solution (dimensionless; inf: no contact)
   // The 8 scaled residuals at the solution: per wheelset j = 0, 1 lateral force / Q0, yaw moment / (Q0 b0),
   // axle torque / (Q0 r0); then the frame's lateral force / Q0 and yaw moment / (Q0 b0).
@@ -153,6 +157,7 @@ struct BogieQuasiStaticReport {
   bool continuation_used = false;         // the continuation in c = 1/R was tried (the direct solve failed)
   int extra_starts = 0;                   // multi-start attempts made
   bool derailed = false;                  // the kept attempt has a wheelset beyond derailment_margin_m
+  bool climbing = false;                  // ... or a flange-contact wheelset climbing its flange (climbing_slope)
 };
 
 // When a wheel is unloaded by the load transfer (status NoContact) only unbalanced_acceleration_m_s2 is filled.

@@ -19,6 +19,7 @@
 #include <array>
 #include <atomic>
 #include <memory>
+#include <mutex>
 #include <functional>
 #include <string>
 #include <vector>
@@ -105,14 +106,37 @@ inline ContactModel CurvingContactModel(const Scenario& scenario, ContactModel w
   return scenario.kinematics.contact_model_set ? scenario.kinematics.contact_model : wear_model;
 }
 // The scenario's provider. Quasi-static: a class whose solution is NoContact, derailed (a wheelset beyond flange
-// contact + derailment margin, kinematics_quasistatic.hpp), or NotConverged with a residual above
-// kAcceptedCurvingResidual, falls back to the last accepted solution of the same class (from an earlier wear
-// step of this function: the kinematics frozen over a step, as a multibody code updated every few steps would
-// give), or to KinematicCurvingEstimate when there is none; `fallbacks` (optional, thread-safe counter) counts
-// those classes. The function keeps that per-class memory: one function per run.
+// contact + derailment margin, kinematics_quasistatic.hpp), climbing its flange, with a tangent-track sample
+// whose axle torque balance failed, or NotConverged with a residual above kAcceptedCurvingResidual, falls back
+// to the last accepted solution of the same class (from an earlier wear step of this function: the kinematics
+// frozen over a step, as a multibody code updated every few steps would give), or to KinematicCurvingEstimate
+// when there is none; `fallbacks` (optional, thread-safe) records each such class with the reason. The
+// function keeps that per-class memory: one function per run.
 constexpr double kAcceptedCurvingResidual = 0.05;  // max |scaled residual| (forces / Q0) of an accepted solve
+// Why the provider rejects a quasi-static solve, in words ("" when it accepts it), e.g. "bogie 0 not converged:
+// max residual 0.338 (ws1 lateral) > 0.05".
+std::string QuasiStaticRejection(const QuasiStaticResult& result);
+// Classes whose quasi-static solve was replaced, with the reason (thread-safe; entries in the order recorded).
+class KinematicsFallbackLog {
+ public:
+  struct Entry {
+    int class_index = 0;
+    std::string class_name;
+    std::string reason;       // QuasiStaticRejection
+    std::string replacement;  // "previous solution" or "kinematic estimate"
+  };
+  void add(Entry entry);
+  size_t size() const;
+  std::vector<Entry> since(size_t first) const;  // entries [first, size()), sorted by class index
+  // "R200: bogie 0 not converged: ...; used the kinematic estimate"
+  static std::string describe(const Entry& entry);
+
+ private:
+  mutable std::mutex mutex_;
+  std::vector<Entry> entries_;
+};
 KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
-                                          std::shared_ptr<std::atomic<int>> fallbacks = nullptr);
+                                          std::shared_ptr<KinematicsFallbackLog> fallbacks = nullptr);
 
 // ---------------------------------------------------------------- the whole run
 struct WearSimulationOptions {
@@ -157,6 +181,7 @@ struct WearStepRecord {
   // the StepWear counters of the step
   int samples = 0, failed_contacts = 0, approximate_contacts = 0, hertz_fallback_contacts = 0;
   int kinematics_fallbacks = 0;      // classes where the quasi-static solution was replaced (see above)
+  std::vector<std::string> kinematics_fallback_reasons;  // one per such class (KinematicsFallbackLog::describe)
   double depth_cap_m = 0.0;          // cap used, m (the scenario's, or halved by invalid_step_halvings)
   double overhang_cut_area_m2 = 0.0; // m^2, area cut from a flange worn past vertical (ProfileUpdateResult)
   std::array<int, kContactModelCount> patches_by_model{};  // see StepWear

@@ -47,8 +47,11 @@ void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const 
   std::printf("  equilibrium %s, a_nc %.3f m/s^2, flange-contact shift %+.3f mm\n", to_string(r.status),
               r.unbalanced_acceleration_m_s2, FlangeContactShift(g, c >= 0.0 ? 1.0 : -1.0) * 1e3);
   for (const BogieQuasiStaticReport& b : r.bogies)
-    std::printf("    bogie %d %s: max residual %.2e, %d iterations, continuation %s\n", b.bogie, to_string(b.status),
-                b.max_residual, b.iterations, b.continuation_used ? "yes" : "no");
+    std::printf("    bogie %d %s: max residual %.2e, %d iterations, continuation %s, %d of %d wheel contact solves "
+                "failed%s%s\n",
+                b.bogie, to_string(b.status), b.max_residual, b.iterations, b.continuation_used ? "yes" : "no",
+                b.failed_contact_evaluations, b.contact_evaluations, b.derailed ? ", DERAILED" : "",
+                b.climbing ? ", CLIMBING its flange" : "");
   for (const BogieQuasiStaticReport& b : r.bogies)
     std::printf("    bogie %d residuals: ws0 %+.1e %+.1e %+.1e  ws1 %+.1e %+.1e %+.1e  frame %+.1e %+.1e\n", b.bogie,
                 b.residuals[0], b.residuals[1], b.residuals[2], b.residuals[3], b.residuals[4], b.residuals[5],
@@ -89,17 +92,20 @@ void RegisterCurvingCommand(CLI::App& app) {
     const int nc = static_cast<int>(sc.classes.size());
     if (a->track_class >= nc) throw InputError("--class: index " + std::to_string(a->track_class) + " >= " + std::to_string(nc));
     const WheelsetTrackGeometry g(sc.MakeTrackSetup());
-    auto fallbacks = std::make_shared<std::atomic<int>>(0);
+    auto fallbacks = std::make_shared<KinematicsFallbackLog>();
     const ContactModel curving_model = CurvingContactModel(sc, model);
     const KinematicsFunction kin = MakeScenarioKinematics(sc, curving_model, &SolveWheelContact, fallbacks);
     for (int c = 0; c < nc; ++c) {
       if (a->track_class >= 0 && c != a->track_class) continue;
       const TrackClass& tc = sc.classes[c];
-      const int before = fallbacks->load();
+      const size_t before = fallbacks->size();
       const KinematicsSeries s = kin(g, tc, c);
+      std::string fell_back;
+      for (const KinematicsFallbackLog::Entry& e : fallbacks->since(before))
+        fell_back += " (fell back to the " + e.replacement + ": " + e.reason + ")";
       std::printf("class %d %s: R %.0f m, cant %.0f mm, V %.1f km/h, share %.4f, provider %s%s\n", c, tc.name.c_str(),
                   tc.curve_radius_m, tc.cant_m * 1e3, tc.speed_m_s * 3.6, tc.share, to_string(sc.kinematics.provider),
-                  fallbacks->load() > before ? " (fell back to the kinematic estimate)" : "");
+                  fell_back.c_str());
       if (a->equilibrium && TrackClassCurvature(tc) != 0.0) PrintEquilibrium(sc, g, tc, curving_model);
       PrintSamples(sc, g, s, model);
     }

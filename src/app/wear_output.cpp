@@ -83,6 +83,16 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
       out << "," << s.patches_by_model[static_cast<int>(m)];
     out << "," << s.overhang_cut_area_m2 * 1e6 << "\n";
   }
+  // why each kinematics fallback of steps.csv happened (class: reason; replacement), one row per class and step
+  std::ofstream fb(dir + "/kinematics_fallbacks.csv");
+  if (!fb) throw InputError(dir + "/kinematics_fallbacks.csv: cannot write");
+  fb << "rail_step,step,fallback\n";
+  for (const WearStepRecord& s : r.steps)
+    for (const std::string& why : s.kinematics_fallback_reasons) {
+      std::string quoted = "\"";
+      for (char ch : why) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+      fb << s.rail_step << "," << s.step << "," << quoted << "\"\n";
+    }
   for (size_t k = 0; k < r.rails.size(); ++k) {
     SaveBoth(r.rails[k][0], dir + "/rail_left_" + Num3(static_cast<int>(k + 1)));
     SaveBoth(r.rails[k][1], dir + "/rail_right_" + Num3(static_cast<int>(k + 1)));
@@ -113,9 +123,11 @@ void PrintRunWarnings(const std::string& label, const WearSimulationResult& r) {
       std::printf("  WARNING: [%s] step %d: %d of %d wheel contacts FAILED (no wear taken from them; steps.csv "
                   "failed_contacts)\n",
                   label.c_str(), s.step, s.failed_contacts, s.failed_contacts + s.samples);
-    if (s.kinematics_fallbacks > 0)
-      std::printf("  note: [%s] step %d: %d track class(es) used a kinematics fallback (steps.csv kinematics_fallbacks)\n",
+    if (s.kinematics_fallbacks > 0) {
+      std::printf("  note: [%s] step %d: %d track class(es) used a kinematics fallback (steps.csv kinematics_fallbacks):\n",
                   label.c_str(), s.step, s.kinematics_fallbacks);
+      for (const std::string& why : s.kinematics_fallback_reasons) std::printf("        %s\n", why.c_str());
+    }
   }
   if (r.status != WearSimulationStatus::Completed)
     std::printf("  WARNING: [%s] stopped: %s %s\n", label.c_str(), to_string(r.status), r.message.c_str());

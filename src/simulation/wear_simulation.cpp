@@ -119,7 +119,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
                      std::to_string(scenario.update.smoothing_cutoff_m * 1e3) +
                      " mm is longer than the wheel profile (arc length " + std::to_string(scenario.wheel.length() * 1e3) +
                      " mm); use 0 (no smoothing) up to that length, typically 1.5-7.5 mm");
-  auto fallbacks = std::make_shared<std::atomic<int>>(0);
+  auto fallbacks = std::make_shared<KinematicsFallbackLog>();
   const KinematicsFunction kinematics =
       kinematics_in ? kinematics_in
                     : MakeScenarioKinematics(scenario, CurvingContactModel(scenario, options.contact.model), contact, fallbacks);
@@ -153,7 +153,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       std::vector<KinematicsSeries> series(scenario.classes.size());
       std::vector<std::string> errors(scenario.classes.size());
       const int nc = static_cast<int>(scenario.classes.size());
-      const int fallbacks_before = fallbacks->load();
+      const size_t fallbacks_before = fallbacks->size();
 #pragma omp parallel for schedule(dynamic, 1)
       for (int c = 0; c < nc; ++c) {
         try {
@@ -195,7 +195,9 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.approximate_contacts = wear.approximate_contacts;
       rec.hertz_fallback_contacts = wear.hertz_fallback_contacts;
       rec.patches_by_model = wear.patches_by_model;
-      rec.kinematics_fallbacks = fallbacks->load() - fallbacks_before;
+      for (const KinematicsFallbackLog::Entry& e : fallbacks->since(fallbacks_before))
+        rec.kinematics_fallback_reasons.push_back(KinematicsFallbackLog::describe(e));
+      rec.kinematics_fallbacks = static_cast<int>(rec.kinematics_fallback_reasons.size());
       rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
       rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
       rec.validity = up.validity;

@@ -1,6 +1,8 @@
 // One step of the wear loop: kinematics samples -> wheel contacts with fields -> wear cells -> class integration
 // -> combination of the classes (wear_simulation.hpp; paper 001 eqs. 24-27, paper 003 §6 steps 1-3).
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -231,8 +233,63 @@ QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactM
   return qo;
 }
 
+std::string QuasiStaticRejection(const QuasiStaticResult& r) {
+  static const char* const kResidualNames[8] = {"ws0 lateral", "ws0 yaw",         "ws0 axle torque", "ws1 lateral",
+                                                "ws1 yaw",     "ws1 axle torque", "frame lateral",   "frame yaw"};
+  std::string why;
+  auto add = [&why](const std::string& s) { why += (why.empty() ? "" : "; ") + s; };
+  char b[200];
+  if (r.status == QuasiStaticStatus::NoContact && r.bogies.empty()) return "a wheel unloaded by the load transfer";
+  if (r.series.samples.empty()) add("no kinematics samples");
+  if (r.tangent_rolling_failures > 0)
+    add(std::to_string(r.tangent_rolling_failures) + " tangent-track sample(s) without axle torque balance");
+  for (const BogieQuasiStaticReport& bogie : r.bogies) {
+    const std::string name = "bogie " + std::to_string(bogie.bogie);
+    if (bogie.status == QuasiStaticStatus::NoContact) {
+      add(name + ": a wheel without contact");
+      continue;
+    }
+    if (bogie.derailed) add(name + ": a wheelset beyond its flange-contact shift + margin (derailed)");
+    if (bogie.climbing) add(name + ": a wheelset climbing its flange (lateral force falls towards the flange)");
+    if (!(bogie.max_residual <= kAcceptedCurvingResidual)) {
+      int worst = 0;
+      for (int k = 1; k < 8; ++k)
+        if (std::fabs(bogie.residuals[k]) > std::fabs(bogie.residuals[worst])) worst = k;
+      std::snprintf(b, sizeof b, "%s %s: max residual %.3g (%s) > %g", name.c_str(), to_string(bogie.status),
+                    bogie.max_residual, kResidualNames[worst], kAcceptedCurvingResidual);
+      add(b);
+      if (bogie.failed_contact_evaluations > 0)
+        why += ", " + std::to_string(bogie.failed_contact_evaluations) + " of " +
+               std::to_string(bogie.contact_evaluations) + " wheel contact solves failed on the way";
+    }
+  }
+  return why;
+}
+
+void KinematicsFallbackLog::add(Entry entry) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  entries_.push_back(std::move(entry));
+}
+
+size_t KinematicsFallbackLog::size() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return entries_.size();
+}
+
+std::vector<KinematicsFallbackLog::Entry> KinematicsFallbackLog::since(size_t first) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<Entry> out(entries_.begin() + static_cast<std::ptrdiff_t>(std::min(first, entries_.size())),
+                         entries_.end());
+  std::stable_sort(out.begin(), out.end(), [](const Entry& a, const Entry& b) { return a.class_index < b.class_index; });
+  return out;
+}
+
+std::string KinematicsFallbackLog::describe(const Entry& e) {
+  return e.class_name + ": " + e.reason + "; used the " + e.replacement;
+}
+
 KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
-                                          std::shared_ptr<std::atomic<int>> fallbacks) {
+                                          std::shared_ptr<KinematicsFallbackLog> fallbacks) {
   if (scenario.kinematics.provider == KinematicsProvider::Centred) {
     return [scenario](const WheelsetTrackGeometry& g, const TrackClass& tc, int) { return CentredKinematics(scenario, g, tc); };
   }
@@ -263,18 +320,17 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
       return pipeline ? SolveWheelContactCached(gg, sd, p, v, o, cache) : contact(gg, sd, p, v, o);
     };
     QuasiStaticResult r = SolveQuasiStaticCurving(scenario.vehicle, g, tc, qo, f);
-    bool accept = r.status != QuasiStaticStatus::NoContact && !r.series.samples.empty() &&
-                  r.tangent_rolling_failures == 0;
-    for (const BogieQuasiStaticReport& b : r.bogies)
-      if (b.derailed || !(b.max_residual <= kAcceptedCurvingResidual)) accept = false;
+    const std::string rejection = QuasiStaticRejection(r);
     std::lock_guard<std::mutex> lock(accepted->mutex);
-    if (accept) {
+    if (rejection.empty()) {
       accepted->series[class_index] = r.series;
       return r.series;
     }
-    if (fallbacks) ++*fallbacks;
     const auto previous = accepted->series.find(class_index);
-    if (previous != accepted->series.end()) return previous->second;
+    const bool has_previous = previous != accepted->series.end();
+    if (fallbacks)
+      fallbacks->add({class_index, tc.name, rejection, has_previous ? "previous solution" : "kinematic estimate"});
+    if (has_previous) return previous->second;
     return KinematicCurvingEstimate(scenario, g, tc);
   };
 }
