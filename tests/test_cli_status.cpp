@@ -50,11 +50,12 @@ fs::path ScenarioVariant(const fs::path& dir, const std::string& from, const std
   return f;
 }
 
-// Item 1: the load control of the right wheel stops at 129.9 of 163.1 kN.
+// Item 1: the load control of the right wheel stops at 161.6 of 163.1 kN (conformal on a worn wheel; issue 15's
+// lobe-continuous KP made the former case, kpec at 11.103 mm, converge).
 TEST(CliStatus, ContactNotConvergedIsShownAndExits4) {
-  const std::string args = "contact --model kpec --wheel '" +
+  const std::string args = "contact --model conformal --wheel '" +
                            conforma::test::SharedData("profiles/contact/testbank/profiles/Car7358_0001r.whl") +
-                           "' --rail 50E4 --y-mm 11.103 --yaw-mrad -13.5 --load-N 163143.77 --mu 0.254";
+                           "' --rail 50E4 --y-mm 9.25 --yaw-mrad -11.248 --load-N 163143.77 --mu 0.254";
   const auto r = RunCli(args);
   EXPECT_EQ(r.exit_code, 4) << r.out << r.err;
   EXPECT_NE(r.out.find("right wheel: status not_converged"), std::string::npos) << r.out;
@@ -68,9 +69,9 @@ TEST(CliStatus, ContactNotConvergedIsShownAndExits4) {
 
 // Item 1 in `sweep`: the same non-converged wheel in a one-point sweep is shown in the text and CSV and exits 4.
 TEST(CliStatus, SweepNotConvergedIsShownAndExits4) {
-  const std::string args = "sweep --models kpec --side right --wheel '" +
+  const std::string args = "sweep --models conformal --side right --wheel '" +
                            conforma::test::SharedData("profiles/contact/testbank/profiles/Car7358_0001r.whl") +
-                           "' --rail 50E4 --from-mm 11.103 --to-mm 11.103 --yaw-per-y " + std::to_string(-13.5 / 11.103) +
+                           "' --rail 50E4 --from-mm 9.25 --to-mm 9.25 --yaw-per-y " + std::to_string(-11.248 / 9.25) +
                            " --load-N 163143.77 --mu 0.254";
   const auto r = RunCli(args);
   EXPECT_EQ(r.exit_code, 4) << r.out << r.err;

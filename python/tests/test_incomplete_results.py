@@ -15,12 +15,13 @@ SCENARIO_DIR = pathlib.Path(__file__).resolve().parents[2] / "scenarios"
 
 @pytest.fixture(scope="module")
 def worn_track(shared_data):
-    # issue 13, item 1: the right wheel's load control does not converge (129.9 of 163.1 kN)
+    # issue 13, item 1: the right wheel's load control does not converge (conformal: 161.6 of 163.1 kN; the former
+    # kpec case at 11.103 mm converges since issue 15's lobe-continuous KP range)
     wheel = shared_data / "profiles" / "contact" / "testbank" / "profiles" / "Car7358_0001r.whl"
     return conforma.Track(str(wheel), "50E4")
 
 
-NOT_CONVERGED = dict(lateral_m=11.103e-3, yaw_rad=-13.5e-3, model="kpec", load_N=163143.77, mu=0.254)
+NOT_CONVERGED = dict(lateral_m=9.25e-3, yaw_rad=-11.248e-3, model="conformal", load_N=163143.77, mu=0.254)
 
 
 def test_not_converged_load_control_warns_and_is_marked(worn_track):
@@ -30,7 +31,8 @@ def test_not_converged_load_control_warns_and_is_marked(worn_track):
     assert right["status"] == "not_converged" and right["complete"] is False
     assert any("not_converged" in p for p in right["problems"])
     assert left["complete"] is True and left["problems"] == []
-    assert right["pressure_vertical_force_N"] < 0.9 * NOT_CONVERGED["load_N"]  # what the warning is about
+    # what the warning is about: the load is not carried to 10x the load tolerance (1e-6, load_control.hpp)
+    assert abs(right["vertical_force_N"] / NOT_CONVERGED["load_N"] - 1) > 1e-5
 
 
 def test_strict_raises_with_the_partial_result(worn_track):
@@ -55,7 +57,7 @@ def test_contact_at_pose_flags_the_not_converged_wheel(worn_track):
     # the same wheel at the pose the load control ended at, load control again: it does not converge either
     with pytest.warns(conforma.IncompleteResultWarning, match="contact_at_pose: incomplete result: right wheel"):
         wheel = conforma.contact_at_pose(worn_track, "right", pose["y_m"], pose["z_m"], pose["roll_rad"],
-                                         pose["yaw_rad"], model="kpec", load_N=NOT_CONVERGED["load_N"], mu=0.254)
+                                         pose["yaw_rad"], model="conformal", load_N=NOT_CONVERGED["load_N"], mu=0.254)
     assert wheel["status"] == "not_converged" and wheel["complete"] is False
 
 
