@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
+#include "conforma/error.hpp"
 #include "conforma/validation/threshold.hpp"
 #include "conforma/validation/analytic_patches.hpp"
 
@@ -118,6 +120,37 @@ TEST(Threshold, DifferenceGrowsWithTheConformityOfTheGroove) {
   // the correction grows like a power of alpha_c (alpha_c^2 for the cos(alpha_J - alpha_I) factor at small angles)
   EXPECT_GT(fit.power_k, 1.0);
   EXPECT_LT(fit.power_k, 3.0);
+}
+
+TEST(Threshold, AgainstTheExactSolutionAFlatHertzianPatchIsWithinTheTolerance) {
+  // a flat Hertzian patch (a/b ~ 0.8): planar KP against the exact solver (BEM + Kalker's exact tangential) differs
+  // by KP's own approximation only: p_max and area within a few per cent (bench: KP tread rows 1-8 %), alpha_c of
+  // the exact contact 0
+  BenchCase c;
+  c.name = "flat";
+  const kp_test::Curvatures k = kp_test::CurvaturesForRatio(0.8, 4.0, c.material);
+  c.patch = kp_test::HertzianPatch(k.A, k.B, 10e-3, 201);
+  c.hertz_A_per_m = k.A;
+  c.hertz_B_per_m = k.B;
+  c.normal_load_N = 50e3;
+  c.creepages = {1e-3, 1e-3, 0.5};
+  ThresholdOptions exact;
+  exact.reference = ThresholdReference::Exact;
+  exact.against = PlanarComparison::Hertz;
+  const ThresholdPoint h = CompareConformalPlanar(c, exact);
+  ASSERT_TRUE(h.valid) << h.status;
+  EXPECT_NEAR(h.alpha_c_deg, 0.0, 1e-9);
+  EXPECT_LT(h.d_pmax, 0.02) << "Hertz on a Hertzian patch";
+  EXPECT_LT(h.d_area, 0.03);
+  exact.against = PlanarComparison::CurvilinearKp;
+  const ThresholdPoint kp = CompareConformalPlanar(c, exact);
+  ASSERT_TRUE(kp.valid) << kp.status;
+  EXPECT_GT(kp.d_pmax, h.d_pmax) << "KP's eps = 0.55 is less exact than Hertz on an elliptic patch";
+  EXPECT_LT(kp.d_pmax, 0.15);
+  std::printf("against exact: hertz d_pmax %.4f d_area %.4f; kp d_pmax %.4f d_area %.4f\n", h.d_pmax, h.d_area,
+              kp.d_pmax, kp.d_area);
+  EXPECT_THROW(ParseThresholdReference("bem"), InputError);
+  EXPECT_EQ(ParseThresholdReference("exact"), ThresholdReference::Exact);
 }
 
 }  // namespace

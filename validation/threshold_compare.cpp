@@ -6,6 +6,7 @@
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/validation/threshold.hpp"
+#include "conforma/validation/worn_heavy_haul_track.hpp"
 
 namespace conforma {
 
@@ -24,11 +25,40 @@ const char* to_string(PlanarComparison comparison) {
   return "?";
 }
 
+const char* to_string(ThresholdReference reference) {
+  return reference == ThresholdReference::Exact ? "exact" : "conformal";
+}
+
+ThresholdReference ParseThresholdReference(const std::string& name) {
+  for (ThresholdReference r : {ThresholdReference::Conformal, ThresholdReference::Exact})
+    if (name == to_string(r)) return r;
+  throw InputError("unknown threshold reference '" + name + "' (expected conformal or exact)");
+}
+
 PlanarComparison ParsePlanarComparison(const std::string& name) {
   for (PlanarComparison c : {PlanarComparison::FlattenedKp, PlanarComparison::CurvilinearKp, PlanarComparison::Hertz})
     if (name == to_string(c)) return c;
   throw InputError("unknown planar comparison '" + name + "' (expected flat_kp, kp or hertz)");
 }
+
+namespace {
+
+// What the threshold compares of one solve, from the bench's patch result or from the exact reference.
+struct Compared {
+  bool in_contact = false;
+  double pmax_Pa = 0.0, area_m2 = 0.0, fx_N = 0.0, fy_N = 0.0, wear_index_N = 0.0, alpha_c_deg = 0.0;
+  std::string status;  // "normal/tangential"
+};
+Compared FromBench(const BenchPatchResult& r) {
+  return {r.in_contact, r.pmax_Pa, r.area_m2, r.fx_N, r.fy_N, r.wear_index_N, r.alpha_c_deg,
+          r.normal_status + "/" + r.tangential_status};
+}
+Compared FromExact(const BenchReference& r) {
+  return {r.converged, r.pmax_Pa, r.area_m2, r.fx_N, r.fy_N, r.wear_index_N, r.alpha_c_deg,
+          r.normal_status + "/" + r.tangential_status};
+}
+
+}  // namespace
 
 ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const ThresholdOptions& options) {
   options.validate();
@@ -37,7 +67,8 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
   o.fastsim_elements = options.fastsim_elements;
   o.variable_epsilon = options.variable_epsilon;
   o.model = ContactModel::Conformal;
-  const BenchPatchResult c = SolveBenchCase(situation, o);
+  const Compared c = options.reference == ThresholdReference::Exact ? FromExact(SolveBenchReference(situation))
+                                                                      : FromBench(SolveBenchCase(situation, o));
   // The planar KP-type model with the SAME virtual-penetration rule as the conformal model (KPEC for the default
   // variable eps, KP for eps = 0.55), so that the difference isolates the conformity (curved surface + Blanco
   // influence) and not the penetration rule.
@@ -45,7 +76,7 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
             : o.variable_epsilon                       ? ContactModel::Kpec
                                                        : ContactModel::Kp;
   ThresholdPoint t;
-  BenchPatchResult p;
+  Compared p;
   if (options.against == PlanarComparison::FlattenedKp) {
     BenchCase flat = situation;
     try {
@@ -54,15 +85,15 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
       t.name = situation.name, t.family = situation.family, t.status = std::string("flatten: ") + e.what();
       return t;
     }
-    p = SolveBenchCase(flat, o);
+    p = FromBench(SolveBenchCase(flat, o));
   } else {
-    p = SolveBenchCase(situation, o);
+    p = FromBench(SolveBenchCase(situation, o));
   }
   t.name = situation.name;
   t.family = situation.family;
   t.alpha_c_deg = c.alpha_c_deg;
   t.contact_angle_deg = situation.patch.contact_angle_rad * 180.0 / M_PI;
-  t.status = c.normal_status + "/" + c.tangential_status + "|" + p.normal_status + "/" + p.tangential_status;
+  t.status = c.status + "|" + p.status;
   t.valid = c.in_contact && p.in_contact && c.pmax_Pa > 0.0 && c.area_m2 > 0.0;
   if (!t.valid) return t;
   auto rel = [](double a, double b) { return a != 0.0 ? std::fabs(a - b) / std::fabs(a) : (b == 0.0 ? 0.0 : 1.0); };
@@ -91,27 +122,23 @@ std::vector<BenchCase> MakeThresholdSituations(const std::string& set, const std
     return MakeGrooveBenchCases({14.0e-3, 12.0e-3, 11.0e-3, 10.5e-3, 10.25e-3, 10.1e-3, 10.05e-3, 10.02e-3},
                                 vertical_load_N);
   }
-  Profile wheel, rail;
-  double inclination = 0.0;
+  TrackSetup setup;
+  int k_max = 100;  // lateral shifts -4 ... 10 mm in 0.1 mm steps
   if (set == "new") {
-    wheel = MakeS1002();
-    rail = MakeRail(RailSection::R60E1, 0.0);
-    inclination = std::atan(1.0 / 20.0);
+    setup = MakeSymmetricTrack(MakeS1002(), MakeRail(RailSection::R60E1, 0.0), std::atan(1.0 / 20.0));
   } else if (set == "worn") {
-    ProfileReadOptions w, r;
-    w.kind = ProfileKind::Wheel;
-    r.kind = ProfileKind::Rail;
-    const std::string bank = shared_data_dir + "/profiles/contact/testbank/profiles/";
-    wheel = LoadProfile(bank + "worn_high_mileage.prw", w);
-    rail = LoadProfile(bank + "site_b_hr.prr", r);
+    // the worn heavy-haul pair on its measured track (issue 15), up to the conformal gauge-corner contact at
+    // 15.0-15.5 mm
+    setup = WornHeavyHaulTrack(shared_data_dir);
+    k_max = 155;
   } else {
     throw InputError("threshold: unknown situation set '" + set + "' (expected new, worn or groove)");
   }
-  const WheelsetTrackGeometry geometry(MakeSymmetricTrack(wheel, rail, inclination));
+  const WheelsetTrackGeometry geometry(setup);
   Material steel;
   std::vector<BenchCase> out;
   for (double yaw_mrad : {0.0, 5.0, 10.0, 15.0, 20.0}) {
-    for (int k = -40; k <= 100; ++k) {
+    for (int k = -40; k <= k_max; ++k) {
       WheelsetPose pose;
       pose.lateral_m = k * 0.1e-3;
       pose.yaw_rad = yaw_mrad * 1e-3;

@@ -11,6 +11,7 @@
 #include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
+#include "exit_status.hpp"
 #include "conforma/validation/threshold.hpp"
 
 namespace conforma::cli {
@@ -49,8 +50,10 @@ void RegisterThresholdCommand(CLI::App& app) {
   auto data = std::make_shared<std::string>();
   auto sets = std::make_shared<std::string>("new,worn,groove");
   auto against = std::make_shared<std::string>("flat_kp");
+  auto reference = std::make_shared<std::string>("conformal");
   auto tolerance = std::make_shared<double>(0.05);
   auto load = std::make_shared<double>(10e3);
+  auto worn_load = std::make_shared<double>(137e3);
   auto strips = std::make_shared<int>(kDefaultKpStrips);
   auto elements = std::make_shared<int>(30);
   auto variable_eps = std::make_shared<bool>(false);
@@ -60,8 +63,11 @@ void RegisterThresholdCommand(CLI::App& app) {
   sub->add_option("--data", *data, kDataHelp);
   sub->add_option("--sets", *sets, "comma-separated situation sets: new (S1002/60E1 1:20), worn, groove");
   sub->add_option("--against", *against, "planar comparison: flat_kp (planar KP on the flattened patch), kp (curvilinear KP), hertz");
+  sub->add_option("--reference", *reference,
+                  "measured against: conformal (the conformal model, default) or exact (the exact solver: slow)");
   sub->add_option("--tolerance", *tolerance, "relative difference that counts as significant");
-  sub->add_option("--load-N", *load, "vertical load per wheel");
+  sub->add_option("--load-N", *load, "vertical load per wheel (sets new and groove)");
+  sub->add_option("--worn-load-N", *worn_load, "vertical load per wheel of the worn heavy-haul set");
   sub->add_option("--kp-strips", *strips, "KP strips across the contact");
   sub->add_option("--fastsim-elements", *elements, "FASTSIM elements per strip");
   sub->add_flag("!--no-plot", *plot, "do not run scripts/plot_threshold.py");
@@ -74,15 +80,18 @@ void RegisterThresholdCommand(CLI::App& app) {
     options.variable_epsilon = *variable_eps;
     options.fastsim_elements = *elements;
     options.against = ParsePlanarComparison(*against);
+    options.reference = ParseThresholdReference(*reference);
     require_positive(*load, "--load-N");
+    require_positive(*worn_load, "--worn-load-N");
     EnsureOutputFolder(*out_dir, "--out");
     std::vector<ThresholdPoint> all;
-    nlohmann::json json = {{"tolerance", *tolerance}, {"against", *against}, {"load_N", *load},
+    nlohmann::json json = {{"tolerance", *tolerance}, {"against", *against}, {"reference", *reference}, {"load_N", *load},
+                           {"worn_load_N", *worn_load},
                            {"kp_strips", *strips}, {"fastsim_elements", *elements}};
     std::stringstream ss(*sets);
     for (std::string set; std::getline(ss, set, ',');) {
       const std::vector<ThresholdPoint> points =
-          CompareConformalPlanar(MakeThresholdSituations(set, DataDirOr(*data), *load), options);
+          CompareConformalPlanar(MakeThresholdSituations(set, DataDirOr(*data), set == "worn" ? *worn_load : *load), options);
       json["sets"][set] = FitJson(points, *tolerance);
       const auto& j = json["sets"][set];
       std::printf("%-7s %4d situations, %3d exceed %.0f%%: threshold %s deg (bracket from %.2f deg, %d misclassified);"
@@ -118,7 +127,8 @@ void RegisterThresholdCommand(CLI::App& app) {
     if (*plot) {
       const std::string cmd = PythonOr("") + " '" + PlotScript("plot_threshold.py") + "' '" + csv + "' '" + *out_dir +
                               "/threshold.json' '" + *out_dir + "/threshold.png'";
-      if (std::system(cmd.c_str()) != 0) std::fprintf(stderr, "threshold: plotting failed (%s)\n", cmd.c_str());
+      if (std::system(cmd.c_str()) != 0)
+        throw IncompleteResult(ExitCode::PartialResult, "the plot was not produced (" + cmd + " failed)");
     }
   });
 }

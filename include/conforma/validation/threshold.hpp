@@ -5,7 +5,8 @@
 // Per contact situation (one PatchGeometry with its load and creepages, benchmark_cases.hpp) the conformal model
 // (conformal KP + curved FASTSIM) and the planar comparison model (by default planar KP + FASTSIM on the patch
 // flattened onto the reference tangent plane; see PlanarComparison) are solved at the same grid, normal load and
-// creepages. Relative differences, taken against the conformal result:
+// creepages. Relative differences, taken against the conformal result (or, ThresholdReference::Exact, against the
+// exact solution: c below is then the exact reference):
 //   d_pmax = |p_max,c - p_max,p| / p_max,c,  d_area likewise,
 //   d_creep = |F_t,c - F_t,p| / |F_t,c|   (F_t = (F_x, F_y) in the patch reference frame, vector difference),
 //   d_wear = |W_c - W_p| / W_c            (W = sum |p_t . s| dA),
@@ -36,6 +37,15 @@ enum class PlanarComparison {
 const char* to_string(PlanarComparison comparison);  // "flat_kp", "kp", "hertz"
 PlanarComparison ParsePlanarComparison(const std::string& name);
 
+// The side the planar model is measured against (issue 15).
+enum class ThresholdReference {
+  Conformal,  // the conformal model (paper 003's question: where does the conformal correction matter?); default
+  Exact,      // the exact solver (BEM + Kalker's exact tangential, SolveBenchReference at its default grid): where is
+              // the planar model wrong; alpha_c over the exact contact. Slow (a BEM per situation): a CLI study.
+};
+const char* to_string(ThresholdReference reference);  // "conformal", "exact"
+ThresholdReference ParseThresholdReference(const std::string& name);
+
 // The patch as a planar contact model sees it: rail and wheel surfaces of the curvilinear strips (rail points
 // integrated from the tangents t(s) = cos(alpha) t0 - sin(alpha) n0, wheel points displaced by gap(s) along
 // n(s) = cos(alpha) n0 + sin(alpha) t0, patch.hpp / curved_fastsim.hpp) resampled on a uniform lateral grid along t0
@@ -48,6 +58,7 @@ PatchGeometry FlattenPatch(const PatchGeometry& curved);
 struct ThresholdOptions {
   double tolerance = 0.05;                                   // on d (relative difference, dimensionless), > 0
   PlanarComparison against = PlanarComparison::FlattenedKp;  // the planar model compared
+  ThresholdReference reference = ThresholdReference::Conformal;  // ... against this
   int kp_strips = kDefaultKpStrips;                          // grid of both models: strips across the contact, >= 3
   int fastsim_elements = kDefaultFastsimElements;            // ... and FASTSIM elements per strip, >= 2
   // Virtual-penetration rule of BOTH models compared. false (default): Kik-Piotrowski's eps = 0.55, the formulation
@@ -87,7 +98,9 @@ ThresholdFit FitConformityThreshold(const std::vector<ThresholdPoint>& points, d
 
 // Situation sweeps (left wheel, every interpenetration region as its own situation):
 //  "new":    S1002 on 60E1 at 1:20, lateral shift -4 ... 10 mm step 0.1 mm, yaw 0, 5, 10, 15, 20 mrad
-//  "worn":   worn_high_mileage.prw on site_b_hr.prr (inclination 0: as measured), same shifts and yaws
+//  "worn":   worn_high_mileage.prw on site_b_hr.prr on its measured track (worn_heavy_haul_track.hpp, issue 15),
+//            lateral shift -4 ... 15.5 mm (up to the conformal gauge-corner contact), same yaws; `conforma threshold`
+//            loads it with the heavy-haul wheel load (--worn-load-N, 137 kN)
 //  "groove": CONTACT's circle R = 10 mm in grooves of decreasing radius 14 ... 10.02 mm
 // Creepages xi = 1e-3, eta = 0.5e-3, phi = 0.2 /m; vertical load per wheel vertical_load_N.
 std::vector<BenchCase> MakeThresholdSituations(const std::string& set, const std::string& shared_data_dir,
