@@ -30,8 +30,14 @@ void ValidatePatch(const PatchGeometry& patch) {
       throw InputError(where + "s_m and gap_m must be finite");
     if (!(patch.longitudinal_curvature_per_m[j] > 0.0) || !std::isfinite(patch.longitudinal_curvature_per_m[j]))
       throw InputError(where + "longitudinal_curvature_per_m must be finite and > 0");
-    if (j > 0 && std::fabs(patch.s_m[j] - patch.s_m[j - 1] - patch.ds_m) > 1e-6 * patch.ds_m)
-      throw InputError(where + "strip centres must be uniformly spaced by ds_m");
+    // strips are ds apart, or a whole number of ds where the candidate search left strips out (a silhouette the
+    // rail normal cannot reach, contact_candidates.cpp): the hole is interpolated (SampleStrips)
+    if (j > 0) {
+      const double step = (patch.s_m[j] - patch.s_m[j - 1]) / patch.ds_m;
+      if (!(step > 0.5) || std::fabs(step - std::round(step)) > 1e-6 * std::round(step))
+        throw InputError(where + "strip centres must be a whole number of ds_m apart, increasing (found " +
+                         std::to_string(step) + " ds_m)");
+    }
   }
 }
 
@@ -73,9 +79,16 @@ struct StripSample {
 StripSample SampleStrips(const PatchGeometry& patch, double s) {
   const size_t n = patch.strips();
   const double t = (s - patch.s_m.front()) / patch.ds_m;
-  const size_t k = t <= 0.0 ? 0 : std::min(static_cast<size_t>(t), n - 1);
-  const size_t k1 = std::min(k + 1, n - 1);
-  const double w = k1 == k ? 0.0 : std::clamp(t - static_cast<double>(k), 0.0, 1.0);
+  size_t k = t <= 0.0 ? 0 : std::min(static_cast<size_t>(t), n - 1);
+  size_t k1 = std::min(k + 1, n - 1);
+  double w = k1 == k ? 0.0 : std::clamp(t - static_cast<double>(k), 0.0, 1.0);
+  const bool holes = std::fabs(patch.s_m.back() - patch.s_m.front() - (n - 1.0) * patch.ds_m) > 0.5 * patch.ds_m;
+  if (holes) {  // strips left out (ValidatePatch): the two strips around s
+    k = static_cast<size_t>(std::upper_bound(patch.s_m.begin(), patch.s_m.end(), s) - patch.s_m.begin());
+    k = k == 0 ? 0 : k - 1;
+    k1 = std::min(k + 1, n - 1);
+    w = k1 == k ? 0.0 : std::clamp((s - patch.s_m[k]) / (patch.s_m[k1] - patch.s_m[k]), 0.0, 1.0);
+  }
   auto lerp = [&](const std::vector<double>& v) { return v.empty() ? 0.0 : (1.0 - w) * v[k] + w * v[k1]; };
   return {lerp(patch.gap_m), lerp(patch.longitudinal_curvature_per_m), lerp(patch.alpha_rad), lerp(patch.x_offset_m)};
 }

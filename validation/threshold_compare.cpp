@@ -1,6 +1,8 @@
 // Conformal against planar on one situation, and the situation sweeps (threshold.hpp).
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <string>
 
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
@@ -111,7 +113,17 @@ std::vector<ThresholdPoint> CompareConformalPlanar(const std::vector<BenchCase>&
   options.validate();
   std::vector<ThresholdPoint> out(situations.size());
 #pragma omp parallel for schedule(dynamic)
-  for (int i = 0; i < static_cast<int>(situations.size()); ++i) out[i] = CompareConformalPlanar(situations[i], options);
+  for (int i = 0; i < static_cast<int>(situations.size()); ++i) {
+    // an exception must not leave the parallel region: a situation a model rejects is recorded as not valid, with
+    // the error as its status (threshold.csv), and the sweep goes on
+    try {
+      out[i] = CompareConformalPlanar(situations[i], options);
+    } catch (const std::exception& e) {
+      out[i].name = situations[i].name;
+      out[i].family = situations[i].family;
+      out[i].status = std::string("error: ") + e.what();
+    }
+  }
   return out;
 }
 

@@ -18,6 +18,13 @@ namespace conforma::cli {
 
 namespace {
 
+// a free-text field of threshold.csv (an error message) without the separator
+std::string CsvField(std::string text) {
+  for (char& ch : text)
+    if (ch == ',' || ch == '\n') ch = ';';
+  return text;
+}
+
 nlohmann::json FitJson(const std::vector<ThresholdPoint>& points, double tolerance) {
   const ThresholdFit f = FitConformityThreshold(points, tolerance);
   auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
@@ -88,11 +95,23 @@ void RegisterThresholdCommand(CLI::App& app) {
     nlohmann::json json = {{"tolerance", *tolerance}, {"against", *against}, {"reference", *reference}, {"load_N", *load},
                            {"worn_load_N", *worn_load},
                            {"kp_strips", *strips}, {"fastsim_elements", *elements}};
+    int failed_situations = 0;
     std::stringstream ss(*sets);
     for (std::string set; std::getline(ss, set, ',');) {
       const std::vector<ThresholdPoint> points =
           CompareConformalPlanar(MakeThresholdSituations(set, DataDirOr(*data), set == "worn" ? *worn_load : *load), options);
       json["sets"][set] = FitJson(points, *tolerance);
+      int not_valid = 0, failed = 0;
+      for (const ThresholdPoint& p : points) {
+        not_valid += !p.valid;
+        failed += p.status.rfind("error: ", 0) == 0;
+      }
+      json["sets"][set]["not_valid"] = not_valid;  // no contact in one of the models, or an error (status column)
+      json["sets"][set]["errors"] = failed;
+      failed_situations += failed;
+      if (not_valid > 0)
+        std::printf("%-7s %d of %zu situations not valid (%d errors): see the status column of threshold.csv\n",
+                    set.c_str(), not_valid, points.size(), failed);
       const auto& j = json["sets"][set];
       std::printf("%-7s %4d situations, %3d exceed %.0f%%: threshold %s deg (bracket from %.2f deg, %d misclassified);"
                   " power law d = %.3g alpha^%.2f -> %.2f deg; max alpha_c %.1f deg\n",
@@ -116,7 +135,7 @@ void RegisterThresholdCommand(CLI::App& app) {
       char line[512];
       std::snprintf(line, sizeof line, "%s,%s,%.4f,%.3f,%.6f,%.6f,%.6f,%.6f,%.6f,%d,%s\n", p.name.c_str(),
                     p.family.c_str(), p.alpha_c_deg, p.contact_angle_deg, p.d_pmax, p.d_area, p.d_creep, p.d_wear,
-                    p.d_max, p.valid ? 1 : 0, p.status.c_str());
+                    p.d_max, p.valid ? 1 : 0, CsvField(p.status).c_str());
       f << line;
     }
     f.close();
@@ -130,6 +149,9 @@ void RegisterThresholdCommand(CLI::App& app) {
       if (std::system(cmd.c_str()) != 0)
         throw IncompleteResult(ExitCode::PartialResult, "the plot was not produced (" + cmd + " failed)");
     }
+    if (failed_situations > 0)
+      throw IncompleteResult(ExitCode::PartialResult,
+                             std::to_string(failed_situations) + " situation(s) failed with an error (threshold.csv status)");
   });
 }
 
