@@ -135,6 +135,11 @@ struct UnitRowProblem {
   Material material;
   BemGrid grid;
   BemResult normal;
+  // the exact tangential problem at the row's creepages
+  ExactTangentialResult Solve(const ExactTangentialOptions& options = {}) const {
+    return SolveExactTangential(grid, normal.pressure_Pa, RigidSlipFromCreepages(grid, CreepagesOf(row)), material,
+                                options);
+  }
 };
 UnitRowProblem SolveUnitRow(int n) {
   UnitRowProblem u;
@@ -240,16 +245,11 @@ TEST(ExactTangential, CarterTwoDimensionalSolution) {
 // The FFT product and the direct summation give the same solution; the solve is deterministic.
 TEST(ExactTangential, FftMatchesDirectSummationAndRepeats) {
   const UnitRowProblem u = SolveUnitRow(16);
-  const CreepRow& r = u.row;
-  const Material& m = u.material;
-  const BemGrid& grid = u.grid;
-  const BemResult& normal = u.normal;
   ExactTangentialOptions fft, direct;
   direct.use_fft = false;
-  const RigidSlipField w = RigidSlipFromCreepages(grid, CreepagesOf(r));
-  const ExactTangentialResult a = SolveExactTangential(grid, normal.pressure_Pa, w, m, fft);
-  const ExactTangentialResult b = SolveExactTangential(grid, normal.pressure_Pa, w, m, direct);
-  const ExactTangentialResult c = SolveExactTangential(grid, normal.pressure_Pa, w, m, fft);
+  const ExactTangentialResult a = u.Solve(fft);
+  const ExactTangentialResult b = u.Solve(direct);
+  const ExactTangentialResult c = u.Solve(fft);
   EXPECT_NEAR(a.fx_N, b.fx_N, 1e-8 * std::fabs(a.fx_N));
   EXPECT_NEAR(a.fy_N, b.fy_N, 1e-8 * std::fabs(a.fy_N));
   EXPECT_EQ(a.fx_N, c.fx_N);
@@ -368,16 +368,10 @@ TEST(ExactTangential, SlipDependentFrictionBound) {
 // Thread safety: concurrent solves give the single-thread answer bit for bit.
 TEST(ExactTangential, ConcurrentSolvesAreIdentical) {
   const UnitRowProblem u = SolveUnitRow(24);
-  const CreepRow& r = u.row;
-  const Material& m = u.material;
-  const BemGrid& grid = u.grid;
-  const BemResult& normal = u.normal;
-  const RigidSlipField w = RigidSlipFromCreepages(grid, CreepagesOf(r));
-  const ExactTangentialResult alone = SolveExactTangential(grid, normal.pressure_Pa, w, m, {});
+  const ExactTangentialResult alone = u.Solve();
   std::vector<ExactTangentialResult> results(4);
   std::vector<std::thread> threads;
-  for (auto& result : results)
-    threads.emplace_back([&] { result = SolveExactTangential(grid, normal.pressure_Pa, w, m, {}); });
+  for (auto& result : results) threads.emplace_back([&] { result = u.Solve(); });
   for (auto& t : threads) t.join();
   for (const auto& result : results) {
     EXPECT_EQ(result.fx_N, alone.fx_N);

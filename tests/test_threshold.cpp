@@ -46,7 +46,8 @@ TEST(Threshold, StepAndPowerFitsRecoverAKnownThreshold) {
                              .threshold_deg));
 }
 
-TEST(Threshold, ConformalEqualsPlanarOnAFlatPatch) {
+// A flat Hertzian patch (a/b ~ 0.8, 50 kN, moderate creepages with spin).
+BenchCase FlatHertzianSituation() {
   BenchCase c;
   c.name = "flat";
   const kp_test::Curvatures k = kp_test::CurvaturesForRatio(0.8, 4.0, c.material);
@@ -55,6 +56,11 @@ TEST(Threshold, ConformalEqualsPlanarOnAFlatPatch) {
   c.hertz_B_per_m = k.B;
   c.normal_load_N = 50e3;
   c.creepages = {1e-3, 1e-3, 0.5};
+  return c;
+}
+
+TEST(Threshold, ConformalEqualsPlanarOnAFlatPatch) {
+  const BenchCase c = FlatHertzianSituation();
   const ThresholdPoint t = CompareConformalPlanar(c, ThresholdOptions{});
   ASSERT_TRUE(t.valid) << t.status;
   EXPECT_NEAR(t.alpha_c_deg, 0.0, 1e-12);
@@ -126,14 +132,7 @@ TEST(Threshold, AgainstTheExactSolutionAFlatHertzianPatchIsWithinTheTolerance) {
   // a flat Hertzian patch (a/b ~ 0.8): planar KP against the exact solver (BEM + Kalker's exact tangential) differs
   // by KP's own approximation only: p_max and area within a few per cent (bench: KP tread rows 1-8 %), alpha_c of
   // the exact contact 0
-  BenchCase c;
-  c.name = "flat";
-  const kp_test::Curvatures k = kp_test::CurvaturesForRatio(0.8, 4.0, c.material);
-  c.patch = kp_test::HertzianPatch(k.A, k.B, 10e-3, 201);
-  c.hertz_A_per_m = k.A;
-  c.hertz_B_per_m = k.B;
-  c.normal_load_N = 50e3;
-  c.creepages = {1e-3, 1e-3, 0.5};
+  const BenchCase c = FlatHertzianSituation();
   ThresholdOptions exact;
   exact.reference = ThresholdReference::Exact;
   exact.against = PlanarComparison::Hertz;

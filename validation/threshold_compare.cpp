@@ -64,6 +64,17 @@ Compared FromExact(const BenchReference& r) {
 
 ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const ThresholdOptions& options) {
   options.validate();
+  ThresholdPoint t;
+  // the planar model's patch first: a patch that cannot be flattened ends here, before any (exact: costly) solve
+  BenchCase planar = situation;
+  if (options.against == PlanarComparison::FlattenedKp) {
+    try {
+      planar.patch = FlattenPatch(situation.patch);
+    } catch (const InputError& e) {
+      t.name = situation.name, t.family = situation.family, t.status = std::string("flatten: ") + e.what();
+      return t;
+    }
+  }
   PatchSolveOptions o;
   o.kp_strips = options.kp_strips;
   o.fastsim_elements = options.fastsim_elements;
@@ -77,20 +88,7 @@ ThresholdPoint CompareConformalPlanar(const BenchCase& situation, const Threshol
   o.model = options.against == PlanarComparison::Hertz ? ContactModel::Hertz
             : o.variable_epsilon                       ? ContactModel::Kpec
                                                        : ContactModel::Kp;
-  ThresholdPoint t;
-  Compared p;
-  if (options.against == PlanarComparison::FlattenedKp) {
-    BenchCase flat = situation;
-    try {
-      flat.patch = FlattenPatch(situation.patch);
-    } catch (const InputError& e) {
-      t.name = situation.name, t.family = situation.family, t.status = std::string("flatten: ") + e.what();
-      return t;
-    }
-    p = FromBench(SolveBenchCase(flat, o));
-  } else {
-    p = FromBench(SolveBenchCase(situation, o));
-  }
+  const Compared p = FromBench(SolveBenchCase(planar, o));
   t.name = situation.name;
   t.family = situation.family;
   t.alpha_c_deg = c.alpha_c_deg;
@@ -121,6 +119,7 @@ std::vector<ThresholdPoint> CompareConformalPlanar(const std::vector<BenchCase>&
     } catch (const std::exception& e) {
       out[i].name = situations[i].name;
       out[i].family = situations[i].family;
+      out[i].failed = true;
       out[i].status = std::string("error: ") + e.what();
     }
   }

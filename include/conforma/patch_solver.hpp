@@ -22,6 +22,7 @@
 #include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/load_control.hpp"
+#include "conforma/local_creepage.hpp"
 #include "conforma/patch.hpp"
 #include "conforma/wheel_contact_options.hpp"
 
@@ -95,9 +96,13 @@ struct ContactModelSolver {
                                         const PatchCreepages& creepages, double rolling_speed_m_per_s,
                                         const WheelContactOptions& options);
   double (*pressure_at)(const PatchNormalSolution& normal, double x_m, double s_m);  // on a solved normal problem
+  std::vector<FastsimCreepages> (*strip_creepages)(const PatchNormalSolution& normal, const RigidBodyMotion& motion,
+                                                   const PatchReferenceFrame& reference);
 };
 // normal: the model's normal solve at an approach (m); tangential: its FASTSIM (null without a tangential part);
-// pressure_at: pressure in Pa at (x, s) in m of the patch frame (every model keeps one).
+// pressure_at: pressure in Pa at (x, s) in m of the patch frame (every model keeps one); strip_creepages: the rigid
+// slip of every strip of the solution from the wheelset kinematics (local_creepage.hpp), for
+// PatchCreepages::per_strip (null: the model takes the reference point's creepages only).
 // The solver of `model` (InputError for auto, which is resolved per patch first: ChoosePatchModel).
 const ContactModelSolver& ContactModelSolverOf(ContactModel model);
 

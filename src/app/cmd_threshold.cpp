@@ -104,7 +104,7 @@ void RegisterThresholdCommand(CLI::App& app) {
       int not_valid = 0, failed = 0;
       for (const ThresholdPoint& p : points) {
         not_valid += !p.valid;
-        failed += p.status.rfind("error: ", 0) == 0;
+        failed += p.failed;
       }
       json["sets"][set]["not_valid"] = not_valid;  // no contact in one of the models, or an error (status column)
       json["sets"][set]["errors"] = failed;

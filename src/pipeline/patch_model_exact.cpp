@@ -5,12 +5,54 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Dense>
+
 #include "conforma/error.hpp"
 #include "conforma/exact_tangential.hpp"
 #include "conforma/friction_law.hpp"
+#include "conforma/local_creepage.hpp"
 #include "patch_models.hpp"
 
 namespace conforma {
+
+namespace {
+
+// The columns of an exact patch's BEM grid as strips (centre s, normal angle, centre of the column's pressure along x,
+// position on the rail surface in (t0, n0) components from the reference point at s = 0), for the per-column rigid
+// slip (local_creepage.hpp). The position integrates the unit tangent t = (cos alpha, -sin alpha) (patch.hpp) with the
+// mean angle of neighbouring columns.
+KpResult ColumnsAsStrips(const BemResult& bem) {
+  const BemGrid& g = bem.grid;
+  KpResult out;
+  out.strips.resize(static_cast<size_t>(std::max(g.ns, 0)));
+  if (g.ns < 1) return out;
+  auto tangent = [](double alpha) { return Eigen::Vector2d(std::cos(alpha), -std::sin(alpha)); };
+  int origin = 0;  // the column nearest to s = 0
+  for (int j = 1; j < g.ns; ++j)
+    if (std::fabs(g.s_centre_m(j)) < std::fabs(g.s_centre_m(origin))) origin = j;
+  for (int j = 0; j < g.ns; ++j) {
+    KpStrip& strip = out.strips[static_cast<size_t>(j)];
+    strip.s_m = g.s_centre_m(j);
+    strip.ds_m = g.ds_m;
+    strip.alpha_rad = g.alpha(j);
+    double weight = 0.0, moment = 0.0;
+    for (int i = 0; i < g.nx; ++i) {
+      weight += bem.pressure_Pa(i, j);
+      moment += bem.pressure_Pa(i, j) * g.x_centre_m(i);
+    }
+    strip.x_centre_m = weight > 0.0 ? moment / weight : g.x_centre_m(g.nx / 2);
+  }
+  out.strips[static_cast<size_t>(origin)].position_m = g.s_centre_m(origin) * tangent(g.alpha(origin));
+  for (int j = origin + 1; j < g.ns; ++j)
+    out.strips[static_cast<size_t>(j)].position_m =
+        out.strips[static_cast<size_t>(j - 1)].position_m + g.ds_m * tangent(0.5 * (g.alpha(j) + g.alpha(j - 1)));
+  for (int j = origin - 1; j >= 0; --j)
+    out.strips[static_cast<size_t>(j)].position_m =
+        out.strips[static_cast<size_t>(j + 1)].position_m - g.ds_m * tangent(0.5 * (g.alpha(j) + g.alpha(j + 1)));
+  return out;
+}
+
+}  // namespace
 
 PatchTangentialSolution SolveExactPatchTangential(ContactModel, const PatchNormalSolution& normal,
                                                   const PatchCreepages& creepages, double rolling_speed_m_per_s,
@@ -73,6 +115,11 @@ double ExactPatchPressureAt(const PatchNormalSolution& normal, double x_m, doubl
   const double fi = (x_m - g.x_first_m) / g.dx_m + 0.5, fj = (s_m - g.s_first_m) / g.ds_m + 0.5;
   if (!(fi >= 0.0) || !(fj >= 0.0) || fi >= g.nx || fj >= g.ns) return 0.0;
   return normal.bem.pressure_Pa(static_cast<int>(fi), static_cast<int>(fj));
+}
+
+std::vector<FastsimCreepages> ExactColumnCreepages(const PatchNormalSolution& normal, const RigidBodyMotion& motion,
+                                                   const PatchReferenceFrame& reference) {
+  return StripCreepagesFromKinematics(motion, reference, ColumnsAsStrips(normal.bem));
 }
 
 }  // namespace conforma

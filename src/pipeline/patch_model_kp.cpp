@@ -6,6 +6,7 @@
 #include "conforma/error.hpp"
 #include "conforma/friction_law.hpp"
 #include "conforma/kik_piotrowski.hpp"
+#include "conforma/local_creepage.hpp"
 #include "patch_models.hpp"
 
 namespace conforma {
@@ -92,6 +93,11 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
 
 double KpPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m) {
   return KpPressureAt(normal.kp, x_m, s_m);
+}
+
+std::vector<FastsimCreepages> KpStripCreepages(const PatchNormalSolution& normal, const RigidBodyMotion& motion,
+                                               const PatchReferenceFrame& reference) {
+  return StripCreepagesFromKinematics(motion, reference, normal.kp);
 }
 
 }  // namespace conforma

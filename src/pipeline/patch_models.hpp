@@ -17,6 +17,8 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
                                                const PatchCreepages& creepages, double rolling_speed_m_per_s,
                                                const WheelContactOptions& options);
 double KpPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m);
+std::vector<FastsimCreepages> KpStripCreepages(const PatchNormalSolution& normal, const RigidBodyMotion& motion,
+                                               const PatchReferenceFrame& reference);
 
 // Sets out's totals (fx, fy, mz, adhesion and slip areas, frictional power) from those of its element field.
 void CopyFieldTotals(PatchTangentialSolution& out);
@@ -27,5 +29,7 @@ PatchTangentialSolution SolveExactPatchTangential(ContactModel model, const Patc
                                                   const PatchCreepages& creepages, double rolling_speed_m_per_s,
                                                   const WheelContactOptions& options);
 double ExactPatchPressureAt(const PatchNormalSolution& normal, double x_m, double s_m);
+std::vector<FastsimCreepages> ExactColumnCreepages(const PatchNormalSolution& normal, const RigidBodyMotion& motion,
+                                                   const PatchReferenceFrame& reference);
 
 }  // namespace conforma

@@ -18,11 +18,14 @@ constexpr double kFirstBracketFraction = 0.1;  // SolvePatch, load given: first 
 // The registry: one entry per model, in the order of ContactModel (auto has none: it chooses one of these per
 // patch). Adding a model: docs/adding-a-model.md.
 const std::array<ContactModelSolver, 5> kSolvers = {{
-    {ContactModel::Hertz, false, true, &SolveHertzPatchNormal, &SolveHertzPatchTangential, &HertzPatchPressureAt},
-    {ContactModel::Kp, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt},
-    {ContactModel::Kpec, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt},
-    {ContactModel::Conformal, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt},
-    {ContactModel::Exact, true, true, &SolveReferencePatchNormal, &SolveExactPatchTangential, &ExactPatchPressureAt},
+    {ContactModel::Hertz, false, true, &SolveHertzPatchNormal, &SolveHertzPatchTangential, &HertzPatchPressureAt,
+     nullptr},
+    {ContactModel::Kp, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt, nullptr},
+    {ContactModel::Kpec, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt, nullptr},
+    {ContactModel::Conformal, true, true, &SolveKpPatchNormal, &SolveKpPatchTangential, &KpPatchPressureAt,
+     &KpStripCreepages},
+    {ContactModel::Exact, true, true, &SolveReferencePatchNormal, &SolveExactPatchTangential, &ExactPatchPressureAt,
+     &ExactColumnCreepages},
 }};
 
 }  // namespace

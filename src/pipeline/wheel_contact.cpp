@@ -88,41 +88,6 @@ struct ProfileMapping {
   double wheel_y(double s) const { return wheel_y_ref + rail->position(rail_s_ref + s).x() - rail_y_ref; }
 };
 
-// The columns of an exact patch's BEM grid as strips (centre s, normal angle, centre of the column's pressure along x,
-// position on the rail surface in (t0, n0) components from the reference point at s = 0), for the per-column rigid
-// slip (local_creepage.hpp). The position integrates the unit tangent t = (cos alpha, -sin alpha) (patch.hpp) with the
-// mean angle of neighbouring columns.
-KpResult ColumnsAsStrips(const BemResult& bem) {
-  const BemGrid& g = bem.grid;
-  KpResult out;
-  out.strips.resize(static_cast<size_t>(std::max(g.ns, 0)));
-  if (g.ns < 1) return out;
-  auto tangent = [](double alpha) { return Eigen::Vector2d(std::cos(alpha), -std::sin(alpha)); };
-  int origin = 0;  // the column nearest to s = 0
-  for (int j = 1; j < g.ns; ++j)
-    if (std::fabs(g.s_centre_m(j)) < std::fabs(g.s_centre_m(origin))) origin = j;
-  for (int j = 0; j < g.ns; ++j) {
-    KpStrip& strip = out.strips[static_cast<size_t>(j)];
-    strip.s_m = g.s_centre_m(j);
-    strip.ds_m = g.ds_m;
-    strip.alpha_rad = g.alpha(j);
-    double weight = 0.0, moment = 0.0;
-    for (int i = 0; i < g.nx; ++i) {
-      weight += bem.pressure_Pa(i, j);
-      moment += bem.pressure_Pa(i, j) * g.x_centre_m(i);
-    }
-    strip.x_centre_m = weight > 0.0 ? moment / weight : g.x_centre_m(g.nx / 2);
-  }
-  out.strips[static_cast<size_t>(origin)].position_m = g.s_centre_m(origin) * tangent(g.alpha(origin));
-  for (int j = origin + 1; j < g.ns; ++j)
-    out.strips[static_cast<size_t>(j)].position_m =
-        out.strips[static_cast<size_t>(j - 1)].position_m + g.ds_m * tangent(0.5 * (g.alpha(j) + g.alpha(j - 1)));
-  for (int j = origin - 1; j >= 0; --j)
-    out.strips[static_cast<size_t>(j)].position_m =
-        out.strips[static_cast<size_t>(j + 1)].position_m - g.ds_m * tangent(0.5 * (g.alpha(j) + g.alpha(j + 1)));
-  return out;
-}
-
 // Cells of a FASTSIM field; dx of element e = area / strip width (strip_width(e)), pressure from the normal solver.
 template <class StripWidth, class Pressure>
 std::vector<ContactCell> CellsOf(const FastsimResult& f, const ProfileMapping& map, double x_shift, StripWidth strip_width,
@@ -497,16 +462,15 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
     PatchCreepages creep;
     creep.reference = FastsimCreepages{cr.longitudinal, cr.lateral, cr.spin_per_m};
     if (options.solve_tangential) {
-      // conformal model with the wheelset kinematics: the rigid slip of every strip (local_creepage.hpp)
-      // and the exact model: of every BEM column
-      if ((model == ContactModel::Conformal || model == ContactModel::Exact) && kinematics && creep.any()) {
+      // with the wheelset kinematics, the models that take it (conformal, exact): the rigid slip of every strip
+      const auto strip_creepages = ContactModelSolverOf(model).strip_creepages;
+      if (strip_creepages != nullptr && kinematics && creep.any()) {
         PatchReferenceFrame ref;
         ref.point_m = Eigen::Vector3d(0.0, geometry.rail_origin_eta_m(side) + c.patch.reference_point_m.x(),
                                       c.patch.reference_point_m.y());
         ref.tangent = frames[j].tangent;
         ref.normal = frames[j].normal;
-        creep.per_strip = StripCreepagesFromKinematics(motion, ref, model == ContactModel::Exact ? ColumnsAsStrips(s.bem)
-                                                                                                : s.kp);
+        creep.per_strip = strip_creepages(s, motion, ref);
       }
       const PatchTangentialSolution t =
           SolvePatchTangential(model, s, creep, velocity.forward_speed_m_s, options);

@@ -74,7 +74,9 @@ struct ThresholdPoint {
   double contact_angle_deg = 0.0; // reference normal from the track vertical
   double d_pmax = 0.0, d_area = 0.0, d_creep = 0.0, d_wear = 0.0, d_max = 0.0;  // relative differences (above), >= 0
   bool valid = false;             // both models found a contact
-  // "normal/tangential|normal/tangential" statuses of the conformal and the planar model, or "flatten: <error>"
+  bool failed = false;            // a solve threw (the sweep's CompareConformalPlanar): status holds the error
+  // "normal/tangential|normal/tangential" statuses of the conformal and the planar model, "flatten: <error>", or
+  // "error: <what the solve threw>" (failed)
   std::string status;
 };
 
