@@ -64,6 +64,10 @@ using kp_detail::PatchInterpolant;
 // second collocation solve is blended in, fully at the upper value
 constexpr double kCollocationRecutLow = 0.02;
 constexpr double kCollocationRecutHigh = 0.06;
+// KPEC (§3.3): total gap between the lobes of the eps = 0.5 region, as a multiple of their summed widths, from which
+// the lobes get separate equivalent ellipses (blended in up to the upper value)
+constexpr double kKpecSeparateLobesLow = 0.1;
+constexpr double kKpecSeparateLobesHigh = 0.3;
 
 
 
@@ -198,6 +202,33 @@ std::vector<ContactRange> FindAllRanges(const PatchInterpolant& patch, const F& 
   return lobes;
 }
 
+// Strip edges over the lobes of the contact range clipped to [low, high], `per_lobe` equal strips in each lobe.
+// A lobe enters with zero width (FindAllRanges) and so with strips of zero width: the solution stays continuous
+// when a lobe appears (strips laid over the span of all lobes left the main lobe with a third of its strips as soon
+// as a distant lobe reached a node: the patch's p_max and SDEC jumped by 20-50 %, issue 15). One lobe: `per_lobe`
+// strips over [low, high] exactly as before.
+std::vector<std::pair<double, double>> StripEdges(const std::vector<ContactRange>& lobes, double low, double high,
+                                                  int per_lobe) {
+  std::vector<std::pair<double, double>> edges;
+  auto lay = [&](double from, double to) {
+    const double ds = (to - from) / per_lobe;
+    for (int j = 0; j < per_lobe; ++j) {
+      const double strip_low = from + j * ds;
+      edges.emplace_back(strip_low, j + 1 == per_lobe ? to : strip_low + ds);
+    }
+  };
+  if (lobes.size() <= 1) {
+    lay(low, high);
+    return edges;
+  }
+  for (const ContactRange& lobe : lobes) {
+    const double from = std::max(lobe.low, low), to = std::min(lobe.high, high);
+    if (to > from) lay(from, to);
+  }
+  if (edges.empty()) lay(low, high);
+  return edges;
+}
+
 // Position on the rail surface relative to the reference point (s = 0), (t0, n0) components:
 // integral of the tangent (cos alpha, -sin alpha) from 0 to s (the tangent turns with the normal).
 Eigen::Vector2d SurfaceStep(const PatchInterpolant& patch, double from, double to) {
@@ -317,7 +348,17 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
 
   // Virtual interpenetration g(s) = eps(s) delta - gap(s) (docs/physics-reference.md §3.1 / §3.3).
   const bool kpec = options.penetration == KpPenetrationRule::VariableEpsilon;
-  double s_mid = 0.0, a_squared_A = 0.0, spread = 0.0, b_hertz = 1.0;
+  // KPEC's equivalent ellipses: eps(s) = clamp((a^2 A - spread t^2) / delta, 0, 1), t = (s - s_mid) / b (§3.3 step 3)
+  struct EquivalentEllipse {
+    double s_mid = 0.0, a_squared_A = 0.0, spread = 0.0, b = 1.0;
+    double eps(double s, double delta) const {
+      const double t = (s - s_mid) / b;
+      return std::clamp((a_squared_A - spread * t * t) / delta, 0.0, 1.0);
+    }
+  };
+  EquivalentEllipse combined;            // one ellipse over every lobe of the eps = 0.5 region
+  std::vector<EquivalentEllipse> separate;  // one per lobe, when the lobes lie apart
+  double separation_weight = 0.0;        // 0: the combined ellipse, 1: the separate ones, blended between
   if (kpec) {
     // KPEC step 2: equivalent Hertz problem from the eps = 0.5 region (CONTACT m_snorm.f90,
     // docs/physics-reference.md §3.3).
@@ -325,33 +366,61 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     auto half_region_node = [&](size_t k) { return 0.5 * delta - patch.node_gaps()[k]; };  // = half_region(nodes[k])
     const double f0 = half_region(s_contact);
     if (!(f0 > 0.0)) return result;
+    auto ellipse = [&](double A, double half_width, double s_mid, EquivalentEllipse* out) {
+      const double B = 0.5 * delta / (half_width * half_width);
+      const HertzResult hertz = SolveHertzForApproach(A, B, delta, options.material);
+      if (hertz.status != HertzStatus::Ok) return false;
+      out->s_mid = s_mid;
+      out->a_squared_A = A * hertz.a_m * hertz.a_m;
+      out->spread = out->a_squared_A - B * hertz.b_m * hertz.b_m;
+      out->b = hertz.b_m;
+      return true;
+    };
     // Every lobe of the eps = 0.5 region counts, by its width (CONTACT's region is one ellipse; for a gap with
     // several minima along s, as on worn treads, the connected lobe alone made B, eps(s) and so the force jump by
     // up to 40 % in 10 nm of approach when a second lobe joined it, issue 15): half-width = half the summed
     // widths, centre = their width-weighted mean. One lobe: the connected range as before.
+    const std::vector<ContactRange> lobes = FindAllRanges(patch, half_region, half_region_node, s_contact, f0);
     double width = 0.0, weighted_centre = 0.0;
-    for (const ContactRange& lobe : FindAllRanges(patch, half_region, half_region_node, s_contact, f0)) {
+    for (const ContactRange& lobe : lobes) {
       width += lobe.high - lobe.low;
       weighted_centre += (lobe.high - lobe.low) * 0.5 * (lobe.low + lobe.high);
     }
-    const double half_width = 0.5 * width;
-    s_mid = width > 0.0 ? weighted_centre / width : s_contact;
-    const double A = patch.curvature(s_contact);
-    const double B = 0.5 * delta / (half_width * half_width);
-    const HertzResult hertz = SolveHertzForApproach(A, B, delta, options.material);
-    if (hertz.status != HertzStatus::Ok) {
+    const double s_mid = width > 0.0 ? weighted_centre / width : s_contact;
+    if (!ellipse(patch.curvature(s_contact), 0.5 * width, s_mid, &combined)) {
       result.status = KpStatus::NoEquivalentEllipse;
       return result;
     }
-    a_squared_A = A * hertz.a_m * hertz.a_m;
-    spread = a_squared_A - B * hertz.b_m * hertz.b_m;
-    b_hertz = hertz.b_m;
+    // Lobes far apart are separate contacts: the combined ellipse centred in the gap between them lowered eps at
+    // the main lobe as a distant lobe grew, so the force fell while the wheel was pushed down (several load-
+    // controlled equilibria: stress case 432, S1002/60E1 tread, lobes 8 mm apart). There every lobe gets its own
+    // ellipse (eps = the largest of them; a lobe entering with zero width adds nothing), blended in with the gaps
+    // between the lobes: weight 0 up to a total gap of kKpecSeparateLobesLow times the summed widths (continuous
+    // when lobes join), 1 from kKpecSeparateLobesHigh.
+    const double gaps = lobes.back().high - lobes.front().low - width;
+    separation_weight = width > 0.0 ? std::clamp((gaps / width - kKpecSeparateLobesLow) /
+                                                     (kKpecSeparateLobesHigh - kKpecSeparateLobesLow), 0.0, 1.0)
+                                    : 0.0;
+    if (separation_weight > 0.0) {
+      for (const ContactRange& lobe : lobes) {
+        const double middle = 0.5 * (lobe.low + lobe.high);
+        const bool main = s_contact >= lobe.low && s_contact <= lobe.high;
+        EquivalentEllipse e;
+        // a lobe too narrow for an ellipse (just entered) carries nothing yet
+        if (ellipse(patch.curvature(main ? s_contact : middle), 0.5 * (lobe.high - lobe.low), middle, &e))
+          separate.push_back(e);
+      }
+    }
   }
   const double eps = options.virtual_penetration_factor;
   auto interpenetration_with_gap = [&](double s, double gap) {
     if (!kpec) return eps * delta - gap;
-    const double t = (s - s_mid) / b_hertz;
-    const double eps_s = std::clamp((a_squared_A - spread * t * t) / delta, 0.0, 1.0);  // §3.3 step 3
+    double eps_s = combined.eps(s, delta);
+    if (separation_weight > 0.0) {
+      double eps_separate = 0.0;
+      for (const EquivalentEllipse& e : separate) eps_separate = std::max(eps_separate, e.eps(s, delta));
+      eps_s = (1.0 - separation_weight) * eps_s + separation_weight * eps_separate;
+    }
     return eps_s * delta - gap;
   };
   auto interpenetration = [&](double s) { return interpenetration_with_gap(s, patch.gap(s)); };
@@ -364,18 +433,16 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   // Strips over every lobe of the virtual interpenetration (strips between lobes carry nothing: c_j = 0). The
   // connected lobe around the contact point alone dropped a second lobe until the two joined, and the force then
   // jumped (up to 40 % on worn treads, issue 15); a new lobe enters with zero width.
-  ContactRange range;
-  {
-    const std::vector<ContactRange> lobes =
-        FindAllRanges(patch, interpenetration, interpenetration_node, s_contact, g_contact);
-    range = lobes.front();
-    range.high = lobes.back().high;
-    for (const ContactRange& lobe : lobes) range.cut |= lobe.cut;
-  }
+  const std::vector<ContactRange> lobes =
+      FindAllRanges(patch, interpenetration, interpenetration_node, s_contact, g_contact);
+  ContactRange range = lobes.front();
+  range.high = lobes.back().high;
+  for (const ContactRange& lobe : lobes) range.cut |= lobe.cut;
 
-  // Strips over exactly the contact range.
-  const int n = options.strips_across_contact;
-  const double ds = (range.high - range.low) / n;
+  // Strips over exactly the contact range, strips_across_contact in each lobe.
+  const int per_lobe = options.strips_across_contact;
+  const std::vector<std::pair<double, double>> edges = StripEdges(lobes, range.low, range.high, per_lobe);
+  int n = static_cast<int>(edges.size());  // changes with the cut of the strip collocation
   const double c_contact = std::sqrt(g_contact / patch.curvature(s_contact));
   const double x_contact = result.contact_point_x_m;
   const bool blanco = options.influence == KpInfluence::BlancoLorenzo;
@@ -386,8 +453,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   double influence_sum = 0.0;
   for (int j = 0; j < n; ++j) {
     KpStrip& strip = result.strips[j];
-    const double low = range.low + j * ds;
-    const double high = j + 1 == n ? range.high : low + ds;
+    const double low = edges[j].first, high = edges[j].second;
     strip.s_m = 0.5 * (low + high);
     strip.ds_m = high - low;
     strip.x_centre_m = patch.x_offset(strip.s_m);
@@ -421,22 +487,23 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     // §5.3: the amplitudes collocated on `nodes` coarse strips over the contact range (the strips themselves when
     // nodes >= n); their ratio peak / c, constant on a Hertzian patch, interpolated linearly onto the strips (constant
     // beyond the outer coarse centres).
-    auto lay_strips = [&](double low_end, double high_end, int count) {
-      std::vector<KpStrip> laid(count);
-      const double width = (high_end - low_end) / count;
-      for (int k = 0; k < count; ++k) {
+    // strips on the given edges; lay_strips: `count` equal ones over [low_end, high_end]
+    auto strips_on = [&](const std::vector<std::pair<double, double>>& on) {
+      std::vector<KpStrip> laid(on.size());
+      for (size_t k = 0; k < on.size(); ++k) {
         KpStrip& strip = laid[k];
-        const double low = low_end + k * width;
-        const double high = k + 1 == count ? high_end : low + width;
-        strip.s_m = 0.5 * (low + high);
-        strip.ds_m = high - low;
+        strip.s_m = 0.5 * (on[k].first + on[k].second);
+        strip.ds_m = on[k].second - on[k].first;
         strip.x_centre_m = patch.x_offset(strip.s_m);
         strip.alpha_rad = patch.alpha(strip.s_m);
         strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
       }
       return laid;
     };
-    const int nodes = std::min(options.collocation_strips, n);
+    const int nodes = std::min(options.collocation_strips, per_lobe);
+    auto lay_strips = [&](double low_end, double high_end, int count) {
+      return strips_on(StripEdges({}, low_end, high_end, count));
+    };
     struct CoarseSolution {
       std::vector<KpStrip> strips;
       std::vector<double> peaks, free_peaks;  // active-set and unconstrained amplitudes, Pa
@@ -505,7 +572,9 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     if (final_range.low != range.low || final_range.high != range.high) {
       range.low = final_range.low;
       range.high = final_range.high;
-      result.strips = lay_strips(range.low, range.high, n);
+      result.strips = strips_on(StripEdges(lobes, range.low, range.high, per_lobe));
+      n = static_cast<int>(result.strips.size());
+      peaks.assign(n, 0.0);
     }
     for (int j = 0; j < n; ++j) {
       const double s_j = result.strips[j].s_m;

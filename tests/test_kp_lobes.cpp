@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "conforma/kik_piotrowski.hpp"
 
@@ -17,16 +18,15 @@ namespace {
 
 // Two wells of the gap, at s = -s0 (depth 0) and s = +s0 (1 um higher), curvature B each: the bump between them
 // is about B s0^2 = 8 um high. Planar (alpha = 0), longitudinal curvature A of a 460 mm wheel.
-PatchGeometry TwoWellPatch() {
-  const double s0 = 2e-3, B = 2.0, A = 0.5 / 0.46, second_well = 1e-6;
+PatchGeometry TwoWellPatch(double s0 = 2e-3, double second_well = 1e-6, double B2 = 2.0, double half_range = 10e-3) {
+  const double B = 2.0, A = 0.5 / 0.46;
   PatchGeometry patch;
   const int strips = 401;
-  const double half_range = 10e-3;
   patch.ds_m = 2.0 * half_range / (strips - 1);
   for (int j = 0; j < strips; ++j) {
     const double s = -half_range + j * patch.ds_m;
     patch.s_m.push_back(s);
-    patch.gap_m.push_back(std::min(B * (s + s0) * (s + s0), B * (s - s0) * (s - s0) + second_well));
+    patch.gap_m.push_back(std::min(B * (s + s0) * (s + s0), B2 * (s - s0) * (s - s0) + second_well));
     patch.longitudinal_curvature_per_m.push_back(A);
     patch.wheel_radius_m.push_back(0.46);
     patch.alpha_rad.push_back(0.0);
@@ -37,16 +37,20 @@ PatchGeometry TwoWellPatch() {
 
 // Largest local exponent d ln(fn) / d ln(delta) between neighbouring approaches over [from, to] in steps of `step`
 // (m), and whether the contact ever covered both wells.
-void Scan(const KpOptions& options, double from, double to, double step, double* max_exponent, bool* both_wells) {
-  const PatchGeometry patch = TwoWellPatch();
+void Scan(const KpOptions& options, double from, double to, double step, double* max_exponent, bool* both_wells,
+          double* min_exponent = nullptr, const PatchGeometry& patch = TwoWellPatch()) {
   *max_exponent = 0.0;
+  if (min_exponent) *min_exponent = 1e300;
   *both_wells = false;
   double previous = 0.0;
   for (double delta = from; delta <= to; delta += step) {
     const KpResult r = SolveKikPiotrowskiForApproach(patch, delta, options);
     ASSERT_EQ(r.status, KpStatus::Ok) << "delta " << delta * 1e6 << " um";
-    if (previous > 0.0)
-      *max_exponent = std::max(*max_exponent, std::log(r.fn_N / previous) / std::log(delta / (delta - step)));
+    if (previous > 0.0) {
+      const double exponent = std::log(r.fn_N / previous) / std::log(delta / (delta - step));
+      *max_exponent = std::max(*max_exponent, exponent);
+      if (min_exponent) *min_exponent = std::min(*min_exponent, exponent);
+    }
     *both_wells |= r.s_min_m < -2e-3 && r.s_max_m > 2e-3;
     previous = r.fn_N;
   }
@@ -64,6 +68,35 @@ TEST(KpLobes, ForceContinuousWhenTheLobesJoin) {
     EXPECT_LT(max_exponent, 4.0) << "penetration rule " << static_cast<int>(options.penetration) << ", influence "
                                  << static_cast<int>(options.influence);
   }
+}
+
+TEST(KpLobes, ForceGrowsWithTheApproachForPairsOfWells) {
+  // Second wells 3-6 mm from the first, 10-40 um higher, curvature 0.5-4 /m: a lobe enters the virtual
+  // interpenetration (and KPEC's eps = 0.5 region) after the main contact is established. The normal force must
+  // keep growing with the approach: a force that falls while the wheel is pushed down has several load-controlled
+  // equilibria, and the load control jumps between them (stress case 432: kpec, S1002/60E1 tread, lobes 8 mm apart,
+  // 1.3 kN over 1 um of lateral shift). KPEC's combined ellipse centred in the gap between the lobes did it:
+  // d ln fn / d ln delta down to 0.86 (s0 = 6 mm, h = 10 um, B2 = 1 /m; -0.06 on a 10 mm patch at B2 = 0.5 /m);
+  // with separate ellipses for lobes apart it stays above 1 here. The local exponent stays below 10 (12.7 before at
+  // s0 = 6 mm, h = 10 um, B2 = 0.5 /m; 16 on the 10 mm patch); a second Hertzian contact
+  // entering would give 1.5-3, so the entry is still steeper than it should be (the blend of the ellipses).
+  // Not yet the conformal model (KPEC with strip collocation, ConformalKpecOptions): when the distant lobe's eps = 0.5
+  // region appears the virtual half-lengths there are far below what the rigid gap asks for, the collocated
+  // amplitudes come out ~1/c and p_max spikes to 4-40 GPa (docs/physics-reference.md §5.3 "Limit"; open in issue 15).
+  for (const KpOptions& options : {ConformalKpOptions(Material{}), PlanarKpOptions(Material{}), KpecOptions(Material{})})
+    for (double s0 : {3e-3, 4e-3, 5e-3, 6e-3})
+      for (double h : {10e-6, 20e-6, 40e-6})
+        for (double B2 : {0.5, 1.0, 2.0, 4.0}) {
+          double max_exponent = 0.0, min_exponent = 0.0;
+          bool both_wells = false;
+          Scan(options, 5e-6, 150e-6, 0.5e-6, &max_exponent, &both_wells, &min_exponent, TwoWellPatch(s0, h, B2, 20e-3));
+          const std::string what = "penetration rule " + std::to_string(static_cast<int>(options.penetration)) +
+                                   ", influence " + std::to_string(static_cast<int>(options.influence)) + ", s0 " +
+                                   std::to_string(s0 * 1e3) + " mm, h " + std::to_string(h * 1e6) + " um, B2 " +
+                                   std::to_string(B2);
+          EXPECT_GT(min_exponent, 1.0) << what;
+          EXPECT_LT(max_exponent, 10.0) << what;
+        }
 }
 
 TEST(KpLobes, SecondWellCarriesLoadBeforeTheLobesJoin) {
