@@ -19,10 +19,15 @@ bool LoadNotCarried(const WheelContactReport& r, double load_N) {
 
 std::vector<std::string> WheelProblems(const WheelContactReport& r, double load_N) {
   std::vector<std::string> out;
-  char buf[240];
+  char buf[320];
   if (LoadNotCarried(r, load_N)) {
-    std::snprintf(buf, sizeof buf, "%s wheel: status %s: carries %.1f kN of the prescribed %.1f kN", to_string(r.side),
-                  to_string(r.status), r.pressure_vertical_force_N * 1e-3, load_N * 1e-3);
+    // both vertical forces: which one load control balanced depends on WheelContactOptions::load_balance (the total
+    // by default); at a flange they differ by the creep force's vertical part
+    std::snprintf(buf, sizeof buf,
+                  "%s wheel: status %s: carries %.1f kN of the prescribed %.1f kN (total vertical force; the "
+                  "pressure alone %.1f kN)",
+                  to_string(r.side), to_string(r.status), r.vertical_force_N * 1e-3, load_N * 1e-3,
+                  r.pressure_vertical_force_N * 1e-3);
     out.push_back(buf);
   } else if (r.status == WheelContactStatus::NotConverged) {
     out.push_back(std::string(to_string(r.side)) + " wheel: status " + to_string(r.status));

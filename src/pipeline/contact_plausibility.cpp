@@ -30,14 +30,17 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
                          law ? "the friction law's static value mu(0)" : "the friction coefficient mu", mu,
                          kMinPlausibleFriction, kMaxPlausibleFriction));
   if (report.status == WheelContactStatus::NotConverged) {
-    if (options.vertical_load_N >= 0.0 && !report.patches.empty())
-      out.push_back(Format("load_not_converged: load control did not converge: the patches carry %.1f N of the "
-                           "wheel load %.1f N (%.2f %%) after %d evaluations; the forces are those of the last "
+    if (options.vertical_load_N >= 0.0 && !report.patches.empty()) {
+      // the balanced force (WheelContactOptions::load_balance): the total vertical force by default
+      const bool total = options.load_balance == LoadBalance::Total;
+      const double carried = total ? report.vertical_force_N : report.pressure_vertical_force_N;
+      out.push_back(Format("load_not_converged: load control did not converge: the patches carry %.1f N (%s) of "
+                           "the wheel load %.1f N (%.2f %%) after %d evaluations; the forces are those of the last "
                            "iterate",
-                           report.pressure_vertical_force_N, options.vertical_load_N,
-                           100.0 * report.pressure_vertical_force_N / options.vertical_load_N,
+                           carried, total ? "total vertical force, pressure and creep forces" : "pressure forces",
+                           options.vertical_load_N, 100.0 * carried / options.vertical_load_N,
                            report.load_iterations));
-    else
+    } else
       out.push_back(Format("load_not_converged: load control found no push-down that carries the wheel load "
                            "%.1f N; no patch is reported",
                            options.vertical_load_N));
