@@ -72,6 +72,29 @@ double BuildPatch(const KpResult& normal, const CurvedFastsimOptions& options, C
   return load;
 }
 
+// Totals of a patch solved strip by strip, summed in strip order (the same arithmetic for both per-strip paths)
+struct StripSums {
+  double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip = 0.0, power = 0.0;
+  template <class Totals>
+  void Add(const Totals& t) {
+    fx += t.fx_N;
+    fy += t.fy_N;
+    mz += t.mz_Nm;
+    adhesion += t.adhesion_area_m2;
+    slip += t.slip_area_m2;
+    power += t.frictional_power_W;
+  }
+  void WriteTo(FastsimResult* field) const {
+    field->fx_N = fx;
+    field->fy_N = fy;
+    field->mz_Nm = mz;
+    field->adhesion_area_m2 = adhesion;
+    field->slip_area_m2 = slip;
+    field->frictional_power_W = power;
+    field->status = adhesion > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+  }
+};
+
 }  // namespace
 
 void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input, const CurvedFastsimOptions& options,
@@ -142,44 +165,20 @@ void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input,
     patch.strips.assign(workspace->strips.begin(), workspace->strips.end());
     SolveFastsimStripsEach(patch, uniform, input.strip_creepages, input.friction.parameters[0],
                            input.rolling_speed_m_per_s, core_options, &r.field, &workspace->strip_totals);
-    double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip = 0.0, power = 0.0;
-    for (const FastsimStripTotals& t : workspace->strip_totals) {
-      fx += t.fx_N;
-      fy += t.fy_N;
-      mz += t.mz_Nm;
-      adhesion += t.adhesion_area_m2;
-      slip += t.slip_area_m2;
-      power += t.frictional_power_W;
-    }
-    r.field.fx_N = fx;
-    r.field.fy_N = fy;
-    r.field.mz_Nm = mz;
-    r.field.adhesion_area_m2 = adhesion;
-    r.field.slip_area_m2 = slip;
-    r.field.frictional_power_W = power;
-    r.field.status = adhesion > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+    StripSums sums;
+    for (const FastsimStripTotals& t : workspace->strip_totals) sums.Add(t);
+    sums.WriteTo(&r.field);
   } else {  // per strip: the core on a one-strip view of the same element arrays
     patch.strips.resize(1);
-    double fx = 0.0, fy = 0.0, mz = 0.0, adhesion = 0.0, slip = 0.0, power = 0.0;
+    StripSums sums;
     for (size_t j = 0; j < ns; ++j) {
       patch.strips[0] = workspace->strips[j];
       const FastsimFlexibilities L = nf > 1 ? flexibility_of(j) : uniform;
       SolveFastsimStripsWithLaw(patch, L, input.strip_creepages[nc == 1 ? 0 : j], input.friction,
                                 input.rolling_speed_m_per_s, core_options, &r.field);
-      fx += r.field.fx_N;
-      fy += r.field.fy_N;
-      mz += r.field.mz_Nm;
-      adhesion += r.field.adhesion_area_m2;
-      slip += r.field.slip_area_m2;
-      power += r.field.frictional_power_W;
+      sums.Add(r.field);
     }
-    r.field.fx_N = fx;
-    r.field.fy_N = fy;
-    r.field.mz_Nm = mz;
-    r.field.adhesion_area_m2 = adhesion;
-    r.field.slip_area_m2 = slip;
-    r.field.frictional_power_W = power;
-    r.field.status = adhesion > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+    sums.WriteTo(&r.field);
   }
   r.status = r.field.status;
   r.fx_N = r.field.fx_N;
