@@ -117,6 +117,7 @@ TEST(ContactPlausibility, LoadControlNotConverged) {
   o.vertical_load_N = 163e3;
   WheelContactReport r;
   r.status = WheelContactStatus::NotConverged;
+  r.vertical_force_N = 131.2e3;
   r.pressure_vertical_force_N = 129.9e3;
   r.load_iterations = 40;
   r.patches.resize(1);
@@ -124,7 +125,14 @@ TEST(ContactPlausibility, LoadControlNotConverged) {
   std::vector<std::string> w = ContactPlausibilityWarnings(r, PipelineGeometry(), o);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_EQ(w[0].rfind("load_not_converged:", 0), 0u) << w[0];
-  EXPECT_NE(w[0].find("129900.0 N of the wheel load 163000.0 N"), std::string::npos) << w[0];
+  // the balanced force: the total vertical force by default, the pressure alone with load_balance pressure
+  EXPECT_NE(w[0].find("131200.0 N (total vertical force, pressure and creep forces) of the wheel load 163000.0 N"),
+            std::string::npos)
+      << w[0];
+  o.load_balance = LoadBalance::Pressure;
+  w = ContactPlausibilityWarnings(r, PipelineGeometry(), o);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("129900.0 N (pressure forces) of the wheel load 163000.0 N"), std::string::npos) << w[0];
   r.patches.clear();  // no load bracket
   w = ContactPlausibilityWarnings(r, PipelineGeometry(), o);
   ASSERT_EQ(w.size(), 1u);
