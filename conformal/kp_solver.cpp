@@ -481,7 +481,8 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
         for (long i = side == 0 ? static_cast<long>(first_right) - 1 : static_cast<long>(first_right);
              i >= 0 && i < static_cast<long>(node_count); i += step) {
           if (is_bottom(static_cast<size_t>(i))) {
-            edge[side] = nodes[crest], valley_edge[side] = nodes[crest], done = true;
+            const double crest_s = crest >= 0 ? nodes[crest] : nodes[i];  // (a bottom next to the contact point)
+            edge[side] = crest_s, valley_edge[side] = crest_s, done = true;
             break;
           }
           if (crest < 0 || node_gaps[i] > node_gaps[crest]) crest = i;
