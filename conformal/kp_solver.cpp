@@ -2,6 +2,7 @@
 // docs/physics-reference.md §3.1-3.3, §4, §9; paper 003 eqs. 2-8 and 13.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,11 @@ constexpr double kCollocationRecutHigh = 0.06;
 // the lobes get separate equivalent ellipses (blended in up to the upper value)
 constexpr double kKpecSeparateLobesLow = 0.1;
 constexpr double kKpecSeparateLobesHigh = 0.3;
+// KPEC wells (§3.3): a well whose prominence (crest towards a deeper well above its bottom) is below the lower value
+// times its approach delta_k is no separate contact (a ripple on a flank), fully one from the upper value
+// (log-linear between)
+constexpr double kWellProminenceLow = 0.002;
+constexpr double kWellProminenceHigh = 0.01;
 
 
 
@@ -349,16 +355,26 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   // Virtual interpenetration g(s) = eps(s) delta - gap(s) (docs/physics-reference.md §3.1 / §3.3).
   const bool kpec = options.penetration == KpPenetrationRule::VariableEpsilon;
   // KPEC's equivalent ellipses: eps(s) = clamp((a^2 A - spread t^2) / delta, 0, 1), t = (s - s_mid) / b (§3.3 step 3)
+  // Each well of the gap is such an ellipse of its own (bottom gap g_k, approach delta_k = delta - g_k): its virtual
+  // level is g_k + weight eps_k(s) delta_k inside its valley where eps_k > 0, none (0) elsewhere. The main well (the
+  // contact point, g = 0) has approach delta.
   struct EquivalentEllipse {
     double s_mid = 0.0, a_squared_A = 0.0, spread = 0.0, b = 1.0;
-    double eps(double s, double delta) const {
+    double bottom_gap = 0.0, weight = 1.0;
+    double valley_low = -std::numeric_limits<double>::infinity(), valley_high = std::numeric_limits<double>::infinity();
+    double eps(double s, double approach) const {
       const double t = (s - s_mid) / b;
-      return std::clamp((a_squared_A - spread * t * t) / delta, 0.0, 1.0);
+      return std::clamp((a_squared_A - spread * t * t) / approach, 0.0, 1.0);
+    }
+    double level(double s, double delta) const {
+      if (s < valley_low || s > valley_high) return 0.0;
+      const double e = eps(s, delta - bottom_gap);
+      return e > 0.0 ? bottom_gap + weight * e * (delta - bottom_gap) : 0.0;
     }
   };
   EquivalentEllipse combined;            // one ellipse over every lobe of the eps = 0.5 region
-  std::vector<EquivalentEllipse> separate;  // one per lobe, when the lobes lie apart
-  double separation_weight = 0.0;        // 0: the combined ellipse, 1: the separate ones, blended between
+  std::vector<EquivalentEllipse> wells;  // one per well, the main one first, when the wells are separate contacts
+  double separation_weight = 0.0;        // 0: the combined ellipse, 1: the separate wells, blended between
   if (kpec) {
     // KPEC step 2: equivalent Hertz problem from the eps = 0.5 region (CONTACT m_snorm.f90,
     // docs/physics-reference.md §3.3).
@@ -366,9 +382,9 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     auto half_region_node = [&](size_t k) { return 0.5 * delta - patch.node_gaps()[k]; };  // = half_region(nodes[k])
     const double f0 = half_region(s_contact);
     if (!(f0 > 0.0)) return result;
-    auto ellipse = [&](double A, double half_width, double s_mid, EquivalentEllipse* out) {
-      const double B = 0.5 * delta / (half_width * half_width);
-      const HertzResult hertz = SolveHertzForApproach(A, B, delta, options.material);
+    auto ellipse_for = [&](double A, double half_width, double s_mid, double approach, EquivalentEllipse* out) {
+      const double B = 0.5 * approach / (half_width * half_width);
+      const HertzResult hertz = SolveHertzForApproach(A, B, approach, options.material);
       if (hertz.status != HertzStatus::Ok) return false;
       out->s_mid = s_mid;
       out->a_squared_A = A * hertz.a_m * hertz.a_m;
@@ -387,41 +403,161 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       weighted_centre += (lobe.high - lobe.low) * 0.5 * (lobe.low + lobe.high);
     }
     const double s_mid = width > 0.0 ? weighted_centre / width : s_contact;
-    if (!ellipse(patch.curvature(s_contact), 0.5 * width, s_mid, &combined)) {
+    if (!ellipse_for(patch.curvature(s_contact), 0.5 * width, s_mid, delta, &combined)) {
       result.status = KpStatus::NoEquivalentEllipse;
       return result;
     }
-    // Lobes far apart are separate contacts: the combined ellipse centred in the gap between them lowered eps at
-    // the main lobe as a distant lobe grew, so the force fell while the wheel was pushed down (several load-
-    // controlled equilibria: stress case 432, S1002/60E1 tread, lobes 8 mm apart). There every lobe gets its own
-    // ellipse (eps = the largest of them; a lobe entering with zero width adds nothing), blended in with the gaps
-    // between the lobes: weight 0 up to a total gap of kKpecSeparateLobesLow times the summed widths (continuous
-    // when lobes join), 1 from kKpecSeparateLobesHigh.
+    // Lobes far apart: the combined ellipse centred in the gap between them lowered eps at the main lobe as a
+    // distant lobe grew, so the force fell while the wheel was pushed down (stress case 432, S1002/60E1 tread, lobes
+    // 8 mm apart). Weight of the separate wells: 0 up to a total gap of kKpecSeparateLobesLow times the summed
+    // widths (continuous when lobes join), 1 from kKpecSeparateLobesHigh; at least the largest well weight below.
     const double gaps = lobes.back().high - lobes.front().low - width;
     separation_weight = width > 0.0 ? std::clamp((gaps / width - kKpecSeparateLobesLow) /
                                                      (kKpecSeparateLobesHigh - kKpecSeparateLobesLow), 0.0, 1.0)
                                     : 0.0;
+    // Wells (§3.3 "wells", issue 15): every interior local minimum k of the gap at the nodes below the approach
+    // (g_k < delta) is a Hertzian contact of approach delta_k = delta - g_k with its own eps = 0.5 region
+    // g - g_k < delta_k / 2 around its bottom, up to the crests towards deeper wells (its valley). Measured from
+    // the main well's bottom instead, a distant well entered only at eps delta = g_k, with a rigid approach of
+    // about g_k already asked for there, far narrower than that approach gives (the strip collocation then came
+    // out ~1/c: p_max of 4-40 GPa on two-well gaps). A well enters with zero width at delta = g_k. Its weight
+    // rises log-linearly from 0 to 1 as its prominence p_k (crest above its bottom) grows from kWellProminenceLow to
+    // kWellProminenceHigh times delta_k: a ripple is no separate contact. Wells stay separate after their lobes
+    // join (fading them into the combined ellipse then cost force growth: the combined ellipse cannot reach a well
+    // whose bottom lies above delta / 2).
+    const auto& nodes = patch.nodes();
+    const auto& node_gaps = patch.node_gaps();
+    const size_t node_count = nodes.size();
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    struct Valley {
+      size_t bottom = 0;
+      double crest[2] = {kInfinity, kInfinity};  // s of the crest towards a deeper node (low, high side), or none
+      double prominence = kInfinity;
+      double weight = 0.0;
+    };
+    std::vector<Valley> valleys;
+    for (size_t k = 1; k + 1 < node_count; ++k) {
+      if (!(node_gaps[k] < node_gaps[k - 1] && node_gaps[k] <= node_gaps[k + 1]) || !(node_gaps[k] < delta)) continue;
+      Valley v;
+      v.bottom = k;
+      for (int side = 0; side < 2; ++side) {
+        const long step = side == 0 ? -1 : 1;
+        size_t crest = k;
+        for (long i = static_cast<long>(k) + step; i >= 0 && i < static_cast<long>(node_count); i += step) {
+          if (node_gaps[i] < node_gaps[k]) {
+            v.crest[side] = nodes[crest];
+            v.prominence = std::min(v.prominence, node_gaps[crest] - node_gaps[k]);
+            break;
+          }
+          if (node_gaps[i] > node_gaps[crest]) crest = static_cast<size_t>(i);
+        }
+      }
+      if (!std::isfinite(v.prominence)) continue;  // the deepest node: the main well
+      const double delta_k = delta - node_gaps[k];
+      v.weight = v.prominence > kWellProminenceLow * delta_k
+                     ? std::min(1.0, std::log(v.prominence / (kWellProminenceLow * delta_k)) /
+                                         std::log(kWellProminenceHigh / kWellProminenceLow))
+                     : 0.0;
+      if (v.weight > 0.0) valleys.push_back(v);
+    }
+    for (const Valley& v : valleys) separation_weight = std::max(separation_weight, v.weight);
     if (separation_weight > 0.0) {
-      for (const ContactRange& lobe : lobes) {
-        const double middle = 0.5 * (lobe.low + lobe.high);
-        const bool main = s_contact >= lobe.low && s_contact <= lobe.high;
+      // the main well: the connected eps = 0.5 region around the contact point, up to the crests towards the valleys
+      // of the other wells (it neither floods them nor jumps when it reaches them)
+      auto is_bottom = [&](size_t i) {
+        for (const Valley& v : valleys)
+          if (v.bottom == i) return true;
+        return false;
+      };
+      double edge[2] = {s_contact, s_contact};
+      double valley_edge[2] = {-kInfinity, kInfinity};
+      const size_t first_right =
+          static_cast<size_t>(std::upper_bound(nodes.begin(), nodes.end(), s_contact) - nodes.begin());
+      for (int side = 0; side < 2; ++side) {
+        const long step = side == 0 ? -1 : 1;
+        double inside = s_contact, f_in = f0;
+        long crest = -1;
+        bool done = false;
+        for (long i = side == 0 ? static_cast<long>(first_right) - 1 : static_cast<long>(first_right);
+             i >= 0 && i < static_cast<long>(node_count); i += step) {
+          if (is_bottom(static_cast<size_t>(i))) {
+            const double crest_s = crest >= 0 ? nodes[crest] : nodes[i];  // (a bottom next to the contact point)
+            edge[side] = crest_s, valley_edge[side] = crest_s, done = true;
+            break;
+          }
+          if (crest < 0 || node_gaps[i] > node_gaps[crest]) crest = i;
+          const double value = 0.5 * delta - node_gaps[i];
+          if (value <= 0.0) {
+            edge[side] = EdgeRoot(half_region, inside, f_in, nodes[i], value), done = true;
+            // the valley of the main well reaches on to the next well's crest
+            for (long j = i; j >= 0 && j < static_cast<long>(node_count); j += step) {
+              if (is_bottom(static_cast<size_t>(j))) {
+                valley_edge[side] = nodes[crest];
+                break;
+              }
+              if (node_gaps[j] > node_gaps[crest]) crest = j;
+            }
+            break;
+          }
+          inside = nodes[i], f_in = value;
+        }
+        if (!done) edge[side] = side == 0 ? patch.domain_low() : patch.domain_high();
+      }
+      EquivalentEllipse main_well;
+      if (edge[1] > edge[0] &&
+          ellipse_for(patch.curvature(s_contact), 0.5 * (edge[1] - edge[0]), 0.5 * (edge[0] + edge[1]), delta,
+                      &main_well)) {
+        main_well.valley_low = valley_edge[0];
+        main_well.valley_high = valley_edge[1];
+        wells.push_back(main_well);
+      } else {
+        separation_weight = 0.0;
+      }
+      // the other wells: own-level region around the bottom, up to the crests of its valley
+      for (const Valley& v : valleys) {
+        if (wells.empty()) break;
+        const double g_k = node_gaps[v.bottom], delta_k = delta - g_k, level = g_k + 0.5 * delta_k;
+        auto f = [&](double s) { return level - patch.gap(s); };
+        double well_edge[2];
+        for (int side = 0; side < 2; ++side) {
+          const long step = side == 0 ? -1 : 1;
+          double inside = nodes[v.bottom], f_in = 0.5 * delta_k;
+          well_edge[side] = side == 0 ? std::max(patch.domain_low(), v.crest[0] == kInfinity ? -kInfinity : v.crest[0])
+                                      : std::min(patch.domain_high(), v.crest[1]);
+          for (long i = static_cast<long>(v.bottom) + step; i >= 0 && i < static_cast<long>(node_count); i += step) {
+            if (side == 0 ? nodes[i] <= well_edge[0] : nodes[i] >= well_edge[1]) break;  // the crest: clipped
+            const double value = level - node_gaps[i];
+            if (value <= 0.0) {
+              well_edge[side] = EdgeRoot(f, inside, f_in, nodes[i], value);
+              break;
+            }
+            inside = nodes[i], f_in = value;
+          }
+        }
         EquivalentEllipse e;
-        // a lobe too narrow for an ellipse (just entered) carries nothing yet
-        if (ellipse(patch.curvature(main ? s_contact : middle), 0.5 * (lobe.high - lobe.low), middle, &e))
-          separate.push_back(e);
+        // a region too narrow for an ellipse (a well just entered) carries nothing yet
+        if (!(well_edge[1] > well_edge[0]) ||
+            !ellipse_for(patch.curvature(nodes[v.bottom]), 0.5 * (well_edge[1] - well_edge[0]),
+                         0.5 * (well_edge[0] + well_edge[1]), delta_k, &e))
+          continue;
+        e.bottom_gap = g_k;
+        e.weight = v.weight;
+        e.valley_low = v.crest[0] == kInfinity ? -kInfinity : v.crest[0];
+        e.valley_high = v.crest[1];
+        wells.push_back(e);
       }
     }
   }
   const double eps = options.virtual_penetration_factor;
   auto interpenetration_with_gap = [&](double s, double gap) {
     if (!kpec) return eps * delta - gap;
-    double eps_s = combined.eps(s, delta);
+    double level = combined.eps(s, delta) * delta;
     if (separation_weight > 0.0) {
-      double eps_separate = 0.0;
-      for (const EquivalentEllipse& e : separate) eps_separate = std::max(eps_separate, e.eps(s, delta));
-      eps_s = (1.0 - separation_weight) * eps_s + separation_weight * eps_separate;
+      double level_separate = 0.0;
+      for (const EquivalentEllipse& e : wells) level_separate = std::max(level_separate, e.level(s, delta));
+      level = (1.0 - separation_weight) * level + separation_weight * level_separate;
     }
-    return eps_s * delta - gap;
+    return level - gap;
   };
   auto interpenetration = [&](double s) { return interpenetration_with_gap(s, patch.gap(s)); };
   auto interpenetration_node = [&](size_t k) {  // = interpenetration(nodes[k]): the interpolant is exact at nodes
@@ -433,8 +569,49 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   // Strips over every lobe of the virtual interpenetration (strips between lobes carry nothing: c_j = 0). The
   // connected lobe around the contact point alone dropped a second lobe until the two joined, and the force then
   // jumped (up to 40 % on worn treads, issue 15); a new lobe enters with zero width.
-  const std::vector<ContactRange> lobes =
-      FindAllRanges(patch, interpenetration, interpenetration_node, s_contact, g_contact);
+  std::vector<ContactRange> lobes = FindAllRanges(patch, interpenetration, interpenetration_node, s_contact, g_contact);
+  // Separate wells whose virtual lobes have joined stay separate lobes (strips laid per lobe), split where the
+  // interpenetration is least near the crest between them: the lobes join there, so the strips do not jump when
+  // they do (31 strips over the joined lobe instead of 31 in each moved the force by 1-3 %).
+  if (separation_weight > 0.0 && wells.size() > 1) {
+    std::vector<double> crests;
+    for (const EquivalentEllipse& e : wells)
+      for (double c : {e.valley_low, e.valley_high})
+        if (std::isfinite(c) && std::find(crests.begin(), crests.end(), c) == crests.end()) crests.push_back(c);
+    std::sort(crests.begin(), crests.end());
+    const auto& nodes = patch.nodes();
+    for (double crest : crests) {
+      for (size_t l = 0; l < lobes.size(); ++l) {
+        if (!(crest > lobes[l].low && crest < lobes[l].high)) continue;
+        // least interpenetration on [crest - 2h, crest + 2h] within the lobe (h: the node spacing there), golden
+        // section on either side of the crest (the level has a kink at the crest)
+        const size_t i = static_cast<size_t>(std::lower_bound(nodes.begin(), nodes.end(), crest) - nodes.begin());
+        const double h = nodes.size() > 1 ? nodes[std::min(i, nodes.size() - 1)] -
+                                                nodes[std::min(i, nodes.size() - 1) > 0 ? std::min(i, nodes.size() - 1) - 1 : 0]
+                                          : 0.0;
+        double best = crest, best_value = interpenetration(crest);
+        for (int side = 0; side < 2; ++side) {
+          double a = side == 0 ? std::max(lobes[l].low, crest - 2.0 * h) : crest;
+          double b = side == 0 ? crest : std::min(lobes[l].high, crest + 2.0 * h);
+          constexpr double kGolden = 0.6180339887498949;
+          double x1 = b - kGolden * (b - a), x2 = a + kGolden * (b - a);
+          double f1 = interpenetration(x1), f2 = interpenetration(x2);
+          for (int it = 0; it < 60 && b - a > 1e-12; ++it) {
+            if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - kGolden * (b - a), f1 = interpenetration(x1);
+            else a = x1, x1 = x2, f1 = f2, x2 = a + kGolden * (b - a), f2 = interpenetration(x2);
+          }
+          const double x = 0.5 * (a + b), f = interpenetration(x);
+          if (f < best_value) best = x, best_value = f;
+        }
+        if (!(best > lobes[l].low && best < lobes[l].high)) break;
+        ContactRange upper = lobes[l];
+        upper.low = best;
+        lobes[l].high = best;
+        lobes.insert(lobes.begin() + static_cast<long>(l) + 1, upper);
+        break;
+      }
+    }
+  }
   ContactRange range = lobes.front();
   range.high = lobes.back().high;
   for (const ContactRange& lobe : lobes) range.cut |= lobe.cut;
@@ -484,10 +661,10 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   std::vector<double> peaks(n);
   for (int j = 0; j < n; ++j) peaks[j] = result.p0_Pa * result.strips[j].half_length_m / c_norm;
   if (options.pressure == KpPressureRule::StripCollocation) {
-    // §5.3: the amplitudes collocated on `nodes` coarse strips over the contact range (the strips themselves when
-    // nodes >= n); their ratio peak / c, constant on a Hertzian patch, interpolated linearly onto the strips (constant
-    // beyond the outer coarse centres).
-    // strips on the given edges; lay_strips: `count` equal ones over [low_end, high_end]
+    // §5.3: the amplitudes collocated on `nodes` coarse strips in each lobe of the contact range (the strips
+    // themselves when nodes >= n); their ratio peak / c, constant on a Hertzian patch, interpolated linearly onto the
+    // strips within each lobe (constant beyond its outer coarse centres). Coarse strips per lobe: laid over the span
+    // of all lobes, a coarse centre falling into an entering lobe brought a finite half-length at once (issue 15).
     auto strips_on = [&](const std::vector<std::pair<double, double>>& on) {
       std::vector<KpStrip> laid(on.size());
       for (size_t k = 0; k < on.size(); ++k) {
@@ -501,47 +678,106 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       return laid;
     };
     const int nodes = std::min(options.collocation_strips, per_lobe);
-    auto lay_strips = [&](double low_end, double high_end, int count) {
-      return strips_on(StripEdges({}, low_end, high_end, count));
-    };
+    // the lobes of the contact range clipped to [range.low, range.high]; a lobe outside keeps zero width
+    std::vector<ContactRange> coarse_lobes;
+    if (lobes.size() <= 1) {
+      coarse_lobes.push_back(range);
+    } else {
+      for (const ContactRange& lobe : lobes) {
+        ContactRange clipped = lobe;
+        clipped.low = std::clamp(lobe.low, range.low, range.high);
+        clipped.high = std::clamp(lobe.high, range.low, range.high);
+        coarse_lobes.push_back(clipped);
+      }
+    }
     struct CoarseSolution {
+      std::vector<ContactRange> lobes;  // `nodes` equal coarse strips in each (zero width: none)
+      std::vector<int> first;           // index of each lobe's first coarse strip (-1: none)
       std::vector<KpStrip> strips;
       std::vector<double> peaks, free_peaks;  // active-set and unconstrained amplitudes, Pa
     };
-    auto solve_on = [&](const ContactRange& on, CoarseSolution& out) {
-      out.strips = lay_strips(on.low, on.high, nodes);
+    auto solve_on = [&](const std::vector<ContactRange>& on, CoarseSolution& out) {
+      out.lobes = on;
+      out.first.assign(on.size(), -1);
+      std::vector<std::pair<double, double>> edges_on;
+      // a lobe far narrower than the range (entering, or cut down to its last positive amplitude) carries no coarse
+      // strips: they would be degenerate, and its strips take the ratio of the nearest lobe
+      const double narrow = 1e-6 * (on.back().high - on.front().low);
+      for (size_t l = 0; l < on.size(); ++l) {
+        if (!(on[l].high - on[l].low > narrow)) continue;
+        out.first[l] = static_cast<int>(edges_on.size());
+        for (const auto& e : StripEdges({}, on[l].low, on[l].high, nodes)) edges_on.push_back(e);
+      }
+      if (edges_on.empty()) return false;
+      out.strips = strips_on(edges_on);
       return kp_detail::CollocateStripPeaks(patch, out.strips, delta, elastic, blanco, coupling_K, out.peaks,
                                             out.free_peaks);
     };
     // Contact edge in s where the amplitude vanishes (p ~ sqrt(distance) at a smooth edge: q = sign(P) P^2 linear in
-    // s), from the unconstrained amplitudes (continuous in delta, so is the edge): the zero of q between the outermost
-    // positive coarse strip and its outer neighbour, or extrapolated outwards from the two outermost coarse strips
-    // when both are positive; the range is cut there when that lies inside it.
-    auto cut_range = [&](const CoarseSolution& c, ContactRange on) {
-      auto signed_square = [&](int k) { return c.free_peaks[k] * std::fabs(c.free_peaks[k]); };
-      auto edge = [&](int step) {  // step +1: low edge (scan upwards), -1: high edge
-        const int start = step > 0 ? 0 : nodes - 1;
-        int k = start;
-        while (k >= 0 && k < nodes && !(c.free_peaks[k] > 0.0)) k += step;
-        if (k < 0 || k >= nodes) return std::nan("");
-        const int outer = k == start ? k : k - step, inner = k == start ? k + step : k;
-        if (inner < 0 || inner >= nodes) return std::nan("");
-        const double q_outer = signed_square(outer), q_inner = signed_square(inner);
-        if (!(q_inner > q_outer)) return std::nan("");
-        return c.strips[outer].s_m + (c.strips[inner].s_m - c.strips[outer].s_m) * (-q_outer) / (q_inner - q_outer);
-      };
-      const double low = edge(+1), high = edge(-1);
-      if (low > on.low && low < high) on.low = low;
-      if (high < on.high && high > on.low) on.high = high;
-      return on;
+    // s), per lobe, from the unconstrained amplitudes (continuous in delta, so is the edge): the zero of q between the
+    // lobe's outermost positive coarse strip and its outer neighbour, or extrapolated outwards from its two outermost
+    // coarse strips when both are positive; the lobe is cut there when that lies inside it. Of several lobes, one
+    // without a positive amplitude shrinks to zero width (at its strip of largest amplitude, where it would enter).
+    auto cut_lobes = [&](const CoarseSolution& c) {
+      std::vector<ContactRange> out = c.lobes;
+      for (size_t l = 0; l < out.size(); ++l) {
+        if (c.first[l] < 0) continue;
+        const int base = c.first[l];
+        auto amplitude = [&](int k) { return c.free_peaks[base + k]; };
+        auto centre = [&](int k) { return c.strips[base + k].s_m; };
+        auto signed_square = [&](int k) { return amplitude(k) * std::fabs(amplitude(k)); };
+        auto edge = [&](int step) {  // step +1: low edge (scan upwards), -1: high edge
+          const int start = step > 0 ? 0 : nodes - 1;
+          int k = start;
+          while (k >= 0 && k < nodes && !(amplitude(k) > 0.0)) k += step;
+          if (k < 0 || k >= nodes) return std::nan("");
+          const int outer = k == start ? k : k - step, inner = k == start ? k + step : k;
+          if (inner < 0 || inner >= nodes) return std::nan("");
+          const double q_outer = signed_square(outer), q_inner = signed_square(inner);
+          if (!(q_inner > q_outer)) return std::nan("");
+          return centre(outer) + (centre(inner) - centre(outer)) * (-q_outer) / (q_inner - q_outer);
+        };
+        bool any_positive = false;
+        int largest = 0;
+        for (int k = 0; k < nodes; ++k) {
+          any_positive |= amplitude(k) > 0.0;
+          if (amplitude(k) > amplitude(largest)) largest = k;
+        }
+        if (!any_positive) {
+          if (out.size() > 1) out[l].low = out[l].high = centre(largest);
+          continue;
+        }
+        const double low = edge(+1), high = edge(-1);
+        if (low > out[l].low && low < high) out[l].low = low;
+        if (high < out[l].high && high > out[l].low) out[l].high = high;
+      }
+      return out;
     };
-    // ratio P / c of a coarse solution at s (linear between the coarse centres, constant beyond the outer ones)
+    auto total_width = [](const std::vector<ContactRange>& on) {
+      double w = 0.0;
+      for (const ContactRange& r : on) w += std::max(r.high - r.low, 0.0);
+      return w;
+    };
+    // ratio P / c of a coarse solution at s: within the lobe that holds s (else the nearest), linear between its
+    // coarse centres, constant beyond the outer ones
     auto ratio_at = [&](const CoarseSolution& c, double s_m) {
-      const double t = std::clamp((s_m - c.strips[0].s_m) / (c.strips[1].s_m - c.strips[0].s_m), 0.0,
+      int best = -1;
+      double best_distance = 0.0;
+      for (size_t l = 0; l < c.lobes.size(); ++l) {
+        if (c.first[l] < 0) continue;
+        const double distance = std::max({c.lobes[l].low - s_m, s_m - c.lobes[l].high, 0.0});
+        if (best < 0 || distance < best_distance) best = static_cast<int>(l), best_distance = distance;
+      }
+      if (best < 0) return 0.0;
+      const int base = c.first[best];
+      const double t = std::clamp((s_m - c.strips[base].s_m) / (c.strips[base + 1].s_m - c.strips[base].s_m), 0.0,
                                   double(nodes - 1));
       const int k = std::min(static_cast<int>(t), nodes - 2);
       const double w = t - k;
-      auto ratio = [&](int i) { return c.strips[i].half_length_m > 0.0 ? c.peaks[i] / c.strips[i].half_length_m : 0.0; };
+      auto ratio = [&](int i) {
+        const KpStrip& strip = c.strips[base + i];
+        return strip.half_length_m > 0.0 ? c.peaks[base + i] / strip.half_length_m : 0.0;
+      };
       return (1.0 - w) * ratio(k) + w * ratio(k + 1);
     };
     // Solve A over the virtual range and cut it (range 1). A cut of more than kCollocationRecutLow of the width asks
@@ -549,32 +785,44 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     // the ratios P / c, w rising linearly from 0 to 1 between kCollocationRecutLow and kCollocationRecutHigh: every
     // step continuous in delta, and one solve where the virtual range was nearly right.
     CoarseSolution first, second;
-    if (!solve_on(range, first)) {
+    if (!solve_on(coarse_lobes, first)) {
       result.status = KpStatus::InfluenceNotPositive;
       result.strips.clear();
       return result;
     }
-    const ContactRange range1 = cut_range(first, range);
-    const double cut_fraction = ((range1.low - range.low) + (range.high - range1.high)) / (range.high - range.low);
+    const std::vector<ContactRange> range1 = cut_lobes(first);
+    const double width0 = total_width(coarse_lobes);
+    const double cut_fraction = width0 > 0.0 ? 1.0 - total_width(range1) / width0 : 0.0;
     const double blend = std::clamp((cut_fraction - kCollocationRecutLow) / (kCollocationRecutHigh - kCollocationRecutLow),
                                     0.0, 1.0);
-    ContactRange final_range = range1;
+    std::vector<ContactRange> final_lobes = range1;
     if (blend > 0.0) {
       if (!solve_on(range1, second)) {
         result.status = KpStatus::InfluenceNotPositive;
         result.strips.clear();
         return result;
       }
-      const ContactRange range2 = cut_range(second, range1);
-      final_range.low = (1.0 - blend) * range1.low + blend * range2.low;
-      final_range.high = (1.0 - blend) * range1.high + blend * range2.high;
+      const std::vector<ContactRange> range2 = cut_lobes(second);
+      for (size_t l = 0; l < final_lobes.size(); ++l) {
+        final_lobes[l].low = (1.0 - blend) * range1[l].low + blend * range2[l].low;
+        final_lobes[l].high = (1.0 - blend) * range1[l].high + blend * range2[l].high;
+      }
     }
-    if (final_range.low != range.low || final_range.high != range.high) {
-      range.low = final_range.low;
-      range.high = final_range.high;
-      result.strips = strips_on(StripEdges(lobes, range.low, range.high, per_lobe));
-      n = static_cast<int>(result.strips.size());
-      peaks.assign(n, 0.0);
+    bool changed = false;
+    for (size_t l = 0; l < final_lobes.size(); ++l)
+      changed |= final_lobes[l].low != coarse_lobes[l].low || final_lobes[l].high != coarse_lobes[l].high;
+    if (changed) {
+      std::vector<std::pair<double, double>> final_edges;
+      for (const ContactRange& lobe : final_lobes)
+        if (lobe.high > lobe.low)
+          for (const auto& e : StripEdges({}, lobe.low, lobe.high, per_lobe)) final_edges.push_back(e);
+      if (!final_edges.empty()) {
+        range.low = final_edges.front().first;
+        range.high = final_edges.back().second;
+        result.strips = strips_on(final_edges);
+        n = static_cast<int>(result.strips.size());
+        peaks.assign(n, 0.0);
+      }
     }
     for (int j = 0; j < n; ++j) {
       const double s_j = result.strips[j].s_m;

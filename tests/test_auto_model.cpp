@@ -184,13 +184,13 @@ TEST(AutoModel, NonEllipticTreadPatchIsSolvedByTheConformalModelExactly) {
   EXPECT_EQ(a.patches[0].model, ContactModel::Conformal);
   ExpectIdentical(a, Solve(ContactModel::Conformal, pose));
   // why Hertz is rejected: its p_max is > 10 % off the non-elliptic (and conformal) solution; and why not kpec (issue
-  // 15): KP's amplitude rule gives a p_max 10 % below the collocated one (which is within 1 % of CONTACT's and of the
-  // exact model's, docs/physics-reference.md §5.3)
+  // 15): KP's amplitude rule gives a p_max 5 % below the collocated one (which is within 1 % of CONTACT's and of the
+  // exact model's, docs/physics-reference.md §5.3; 10 % below before KPEC's wells, §3.3)
   const WheelContactReport h = Solve(ContactModel::Hertz, pose, false);
   const WheelContactReport k = Solve(ContactModel::Kpec, pose, false);
   const WheelContactReport c = Solve(ContactModel::Conformal, pose, false);
   EXPECT_GT(std::fabs(h.patches[0].pmax_Pa / c.patches[0].pmax_Pa - 1.0), 0.10);
-  EXPECT_LT(k.patches[0].pmax_Pa / c.patches[0].pmax_Pa - 1.0, -0.05);
+  EXPECT_LT(k.patches[0].pmax_Pa / c.patches[0].pmax_Pa - 1.0, -0.04);
 }
 
 TEST(AutoModel, FlangeRootPatchIsSolvedByTheConformalModelExactly) {

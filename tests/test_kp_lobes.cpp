@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include "conforma/hertz.hpp"
 #include "conforma/kik_piotrowski.hpp"
 
 namespace conforma {
@@ -37,11 +38,13 @@ PatchGeometry TwoWellPatch(double s0 = 2e-3, double second_well = 1e-6, double B
 
 // Largest local exponent d ln(fn) / d ln(delta) between neighbouring approaches over [from, to] in steps of `step`
 // (m), and whether the contact ever covered both wells.
+// peak_ratio: the largest p_max over the Hertz p0 of the first well alone at the same approach.
 void Scan(const KpOptions& options, double from, double to, double step, double* max_exponent, bool* both_wells,
-          double* min_exponent = nullptr, const PatchGeometry& patch = TwoWellPatch()) {
+          double* min_exponent = nullptr, const PatchGeometry& patch = TwoWellPatch(), double* peak_ratio = nullptr) {
   *max_exponent = 0.0;
   if (min_exponent) *min_exponent = 1e300;
   *both_wells = false;
+  if (peak_ratio) *peak_ratio = 0.0;
   double previous = 0.0;
   for (double delta = from; delta <= to; delta += step) {
     const KpResult r = SolveKikPiotrowskiForApproach(patch, delta, options);
@@ -53,6 +56,10 @@ void Scan(const KpOptions& options, double from, double to, double step, double*
     }
     *both_wells |= r.s_min_m < -2e-3 && r.s_max_m > 2e-3;
     previous = r.fn_N;
+    if (peak_ratio) {
+      const HertzResult first_well = SolveHertzForApproach(0.5 / 0.46, 2.0, delta, options.material);
+      *peak_ratio = std::max(*peak_ratio, r.pmax_Pa / first_well.p0_Pa);
+    }
   }
 }
 
@@ -76,26 +83,31 @@ TEST(KpLobes, ForceGrowsWithTheApproachForPairsOfWells) {
   // keep growing with the approach: a force that falls while the wheel is pushed down has several load-controlled
   // equilibria, and the load control jumps between them (stress case 432: kpec, S1002/60E1 tread, lobes 8 mm apart,
   // 1.3 kN over 1 um of lateral shift). KPEC's combined ellipse centred in the gap between the lobes did it:
-  // d ln fn / d ln delta down to 0.86 (s0 = 6 mm, h = 10 um, B2 = 1 /m; -0.06 on a 10 mm patch at B2 = 0.5 /m);
-  // with separate ellipses for lobes apart it stays above 1 here. The local exponent stays below 10 (12.7 before at
-  // s0 = 6 mm, h = 10 um, B2 = 0.5 /m; 16 on the 10 mm patch); a second Hertzian contact
-  // entering would give 1.5-3, so the entry is still steeper than it should be (the blend of the ellipses).
-  // Not yet the conformal model (KPEC with strip collocation, ConformalKpecOptions): when the distant lobe's eps = 0.5
-  // region appears the virtual half-lengths there are far below what the rigid gap asks for, the collocated
-  // amplitudes come out ~1/c and p_max spikes to 4-40 GPa (docs/physics-reference.md §5.3 "Limit"; open in issue 15).
-  for (const KpOptions& options : {ConformalKpOptions(Material{}), PlanarKpOptions(Material{}), KpecOptions(Material{})})
+  // d ln fn / d ln delta down to 0.86 (s0 = 6 mm, h = 10 um, B2 = 1 /m; -0.06 on a 10 mm patch at B2 = 0.5 /m).
+  // A second Hertzian contact entering gives 1.5-3. With lobes measured from the main well's bottom the entry was
+  // steep (up to 12.7 for KPEC) and the conformal model's strip collocation spiked to p_max of 4-40 GPa with the
+  // force falling (the entering well's virtual half-lengths far below what its rigid approach asks for); with every
+  // well its own KPEC ellipse of approach delta - g_k (docs/physics-reference.md §3.3 "wells") and coarse
+  // collocation strips per lobe (§5.3) the exponent stays in [1.14, 2.3] for all four rules, and p_max at most 1.03
+  // times the first well's Hertz p0 (the collocation gave 5-30 times it).
+  for (const KpOptions& options : {ConformalKpOptions(Material{}), PlanarKpOptions(Material{}), KpecOptions(Material{}),
+                                   ConformalKpecOptions(Material{})})
     for (double s0 : {3e-3, 4e-3, 5e-3, 6e-3})
       for (double h : {10e-6, 20e-6, 40e-6})
         for (double B2 : {0.5, 1.0, 2.0, 4.0}) {
-          double max_exponent = 0.0, min_exponent = 0.0;
+          double max_exponent = 0.0, min_exponent = 0.0, peak_ratio = 0.0;
           bool both_wells = false;
-          Scan(options, 5e-6, 150e-6, 0.5e-6, &max_exponent, &both_wells, &min_exponent, TwoWellPatch(s0, h, B2, 20e-3));
+          Scan(options, 5e-6, 150e-6, 0.5e-6, &max_exponent, &both_wells, &min_exponent, TwoWellPatch(s0, h, B2, 20e-3),
+               &peak_ratio);
           const std::string what = "penetration rule " + std::to_string(static_cast<int>(options.penetration)) +
                                    ", influence " + std::to_string(static_cast<int>(options.influence)) + ", s0 " +
                                    std::to_string(s0 * 1e3) + " mm, h " + std::to_string(h * 1e6) + " um, B2 " +
                                    std::to_string(B2);
           EXPECT_GT(min_exponent, 1.0) << what;
-          EXPECT_LT(max_exponent, 10.0) << what;
+          EXPECT_LT(max_exponent, 3.0) << what;
+          // the second well takes load off the first: p_max stays near the first well's Hertz p0 (KP's p_max is
+          // 6-10 % off Hertz, §3.2)
+          EXPECT_LT(peak_ratio, 1.15) << what;
         }
 }
 

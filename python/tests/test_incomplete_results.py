@@ -15,14 +15,14 @@ SCENARIO_DIR = pathlib.Path(__file__).resolve().parents[2] / "scenarios"
 
 @pytest.fixture(scope="module")
 def worn_track(shared_data):
-    # issue 13, item 1: the right wheel's load control does not converge (conformal: 154.6 of 163.1 kN, the strip
-    # collocation on a patch whose gap has several wells, docs/physics-reference.md §5.3 "Limit"; the former cases,
-    # kpec at 11.103 mm and conformal at 9.25 mm, converge since issue 15's KP lobe fixes)
+    # issue 13, item 1: the right wheel's load control does not converge (conformal at 3.8 mm: 161.2 of 163.1 kN;
+    # the former cases, kpec at 11.103 mm and conformal at 9.25 mm, converge since issue 15's KP lobe fixes, conformal
+    # at 8.9 mm since KPEC's wells, docs/physics-reference.md §3.3)
     wheel = shared_data / "profiles" / "contact" / "testbank" / "profiles" / "Car7358_0001r.whl"
     return conforma.Track(str(wheel), "50E4")
 
 
-NOT_CONVERGED = dict(lateral_m=8.9e-3, yaw_rad=-10.8224e-3, model="conformal", load_N=163143.77, mu=0.254)
+NOT_CONVERGED = dict(lateral_m=3.8e-3, yaw_rad=-4.6208e-3, model="conformal", load_N=163143.77, mu=0.254)
 
 
 def test_not_converged_load_control_warns_and_is_marked(worn_track):
