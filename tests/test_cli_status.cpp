@@ -92,8 +92,8 @@ TEST(CliStatus, WearWithLostContactsIsPartial) {
   const fs::path out = TempDir("wear_lost");
   const auto r = RunCli("wear --scenario '" + kLostContacts + "' --out '" + out.string() + "'");
   EXPECT_EQ(r.exit_code, 5) << r.out << r.err;
-  EXPECT_NE(r.out.find("WARNING: [conformal] step 1: 2 of 16 wheel contacts FAILED"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("2 wheel contact(s) failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("WARNING: [conformal] step 1: 4 of 16 wheel contacts FAILED"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("4 wheel contact(s) failed"), std::string::npos) << r.err;
   // steps.csv: failed_contacts of step 1
   std::ifstream steps(out / "steps.csv");
   std::string header, row0, row1;
@@ -105,7 +105,7 @@ TEST(CliStatus, WearWithLostContactsIsPartial) {
   for (std::stringstream c(row1); c.good();) cells.emplace_back(), std::getline(c, cells.back(), ',');
   const auto col = std::find(names.begin(), names.end(), "failed_contacts") - names.begin();
   ASSERT_LT(static_cast<size_t>(col), cells.size());
-  EXPECT_EQ(cells[col], "2");
+  EXPECT_EQ(cells[col], "4");
   // item 11: the wear rate column is in mm per km, and its header says so
   const std::string wear = Slurp(out / "wear_step_001.csv");
   EXPECT_EQ(wear.find("m per m travelled"), std::string::npos);
@@ -120,7 +120,7 @@ TEST(CliStatus, CompareReportShowsLostContacts) {
                         out.string() + "'");
   EXPECT_EQ(r.exit_code, 5) << r.out << r.err;
   const std::string md = Slurp(out / "report.md");
-  EXPECT_NE(md.find("**WARNING: conformal step 1: 2 of 16 wheel contacts failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("**WARNING: conformal step 1: 4 of 16 wheel contacts failed"), std::string::npos) << md;
   EXPECT_NE(md.find("completed, contacts lost"), std::string::npos) << md;
   fs::remove_all(out);
 }

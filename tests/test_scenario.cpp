@@ -77,6 +77,8 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError("track_classes: [{radius_m: 0, share: 1}]\n", "speed_kmh");
   ExpectError("name: x\n", "no track classes");
   ExpectError(std::string("profiles: {rail: /nonexistent/rail.prr}\n") + kClasses, "rail.prr");
+  ExpectError(std::string("load_tolerance: 0\n") + kClasses, "load_tolerance");
+  ExpectError(std::string("load_acceptance: -0.1\n") + kClasses, "load_acceptance");
 }
 
 TEST(Scenario, MinimalFileTakesTheDefaults) {
@@ -86,6 +88,8 @@ TEST(Scenario, MinimalFileTakesTheDefaults) {
   EXPECT_EQ(s.kinematics.provider, KinematicsProvider::QuasiStatic);
   EXPECT_NEAR(s.classes[0].friction_coefficient, 0.3, 0.0);
   EXPECT_FALSE(s.kinematics.contact_model_set);  // the curving solve uses the wear step's model
+  EXPECT_NEAR(s.load_tolerance, 1e-6, 0.0);         // WheelContactOptions' default
+  EXPECT_NEAR(s.load_acceptance, 0.10, 0.0);        // StepWearOptions' default
 }
 
 TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {

@@ -21,6 +21,11 @@
 //   friction: 0.3                       (default friction of the classes)
 //   elastic_flange_deg: 60              (optional: contacts steeper than this are elastic flange contacts that may
 //                                        interpenetrate at a wheel's reference position; absent: rigid flange)
+//   load_tolerance: 1e-6                (optional: relative tolerance of every wheel's load control,
+//                                        WheelContactOptions::load_tolerance; a contact that misses it by more
+//                                        than 10x is not converged)
+//   load_acceptance: 0.10               (optional: a not converged wheel contact still gives wear when its carried
+//                                        load is within this fraction of the wheel load; else it is a failed one)
 //   wear_law: usfd | <wear-law file>    (wear_law.hpp; the same law for wheel and rail unless rail_wear_law given)
 //   rail_wear_law: usfd | <file>
 //   contact_model: conformal            (hertz | kp | kpec | conformal; the command line may override)
@@ -38,6 +43,7 @@
 
 #include "conforma/contact_model.hpp"
 #include "conforma/kinematics.hpp"
+#include "conforma/load_control.hpp"
 #include "conforma/material.hpp"
 #include "conforma/profile.hpp"
 #include "conforma/vehicle.hpp"
@@ -94,6 +100,9 @@ struct Scenario {
   // elastic_flange_deg: contact points steeper than this may interpenetrate at a wheel's reference position
   // (WheelContactOptions::max_touching_contact_angle_rad), in the curving solve and the wear step. Absent: rigid.
   double elastic_flange_angle_rad = 1e300;
+  // load_tolerance: WheelContactOptions::load_tolerance of the curving and wear solves
+  double load_tolerance = kDefaultLoadTolerance;
+  double load_acceptance = 0.10;  // load_acceptance: StepWearOptions::load_acceptance
   WearModel wear;
   ContactModel model = ContactModel::Conformal;
   ScenarioUpdate update;

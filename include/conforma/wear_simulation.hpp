@@ -48,8 +48,9 @@ struct StepWearOptions {
   WheelContactOptions contact;
   WearModel wear;                  // wheel and rail wear laws (wear_distribution.hpp)
   double grid_spacing_m = 0.1e-3;  // m, > 0: wear grids on the wheel and rail arc lengths
-  // A wheel whose load control ended NotConverged is used when its carried vertical load (pressure forces) is within
-  // this fraction of the target (otherwise it is a failed contact, without wear). Dimensionless, default 10 %.
+  // A wheel whose load control ended NotConverged is used when its carried vertical load (the balanced force: the
+  // total vertical force, or the pressure forces with load_balance pressure) is within this fraction of the target
+  // (otherwise it is a failed contact, without wear). Dimensionless, >= 0, default 10 % (scenario load_acceptance).
   double load_acceptance = 0.10;
   // A wheel whose load control finds no bracket with the chosen model (NotConverged without patches; seen with the
   // kp/conformal models at flange contact on worn profiles) is solved with the Hertz model instead (counted).

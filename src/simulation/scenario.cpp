@@ -307,7 +307,8 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     throw InputError(source + ": YAML: " + e.what());
   }
   r.check_keys(root, "top level",
-               {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "elastic_flange_deg", "wear_law",
+               {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "elastic_flange_deg",
+                "load_tolerance", "load_acceptance", "wear_law",
                 "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv"});
   Scenario s;
   s.source = source;
@@ -376,6 +377,14 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     const double deg = r.number(root["elastic_flange_deg"], "elastic_flange_deg");
     if (!(deg > 0.0 && deg < 90.0)) r.fail("elastic_flange_deg", "must be between 0 and 90 degrees");
     s.elastic_flange_angle_rad = deg * M_PI / 180.0;
+  }
+  if (root["load_tolerance"]) {
+    s.load_tolerance = r.number(root["load_tolerance"], "load_tolerance");
+    if (!(s.load_tolerance > 0.0 && s.load_tolerance < 1.0)) r.fail("load_tolerance", "must lie in (0, 1)");
+  }
+  if (root["load_acceptance"]) {
+    s.load_acceptance = r.number(root["load_acceptance"], "load_acceptance");
+    if (!(s.load_acceptance >= 0.0 && s.load_acceptance < 1.0)) r.fail("load_acceptance", "must lie in [0, 1)");
   }
   try {
     if (root["wear_law"]) {
