@@ -5,6 +5,11 @@
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+#include <vector>
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "conforma/hertz.hpp"
 
@@ -109,10 +114,12 @@ double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offse
          GradedGauss(rest, t_zero, -0.5 * M_PI, first_panel);
 }
 
-void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, const double* u, int count,
-                                  double* values) {
+namespace {
+
+// The closed form below, lane by lane in scalar arithmetic (any x86-64 CPU and other architectures), lane i with
+// half-length c_in[i], centre offset d_in[i] and distance u[i]; count <= kMaxSemiEllipseBatch.
+void SemiEllipseLanesScalar(const double* c_in, const double* d_in, const double* u, int count, double* values) {
   constexpr int kMaxBatch = kMaxSemiEllipseBatch;
-  if (count < 0 || count > kMaxBatch) throw std::logic_error("SemiEllipseOverDistanceBatch: count out of range");
   // Closed form (own derivation, checked against 40-digit quadrature in tests/test_kp_strip_closed_form.cpp): with
   // the distances A, B from the observation point to the two ends of the semi-ellipse, Byrd & Friedman 259.00's
   // substitution turns F1 into complete elliptic integrals of the first, second and third kind,
@@ -126,8 +133,6 @@ void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, cons
   // K - E = K sum_n 2^(n-1) c_n^2 (docs/physics-reference.md §1.2, as EllipticIntegralsFromComplementaryModulus),
   // c_0 = k, c_(n+1) = (a_n - b_n) / 2. The lanes run side by side (independent dependency chains overlap in the
   // CPU); each lane stops at its own convergence, so its value does not depend on the other lanes.
-  const double c = half_length;
-  const double D = std::abs(centre_offset);  // F1 is even in d
   double qc[kMaxBatch], e[kMaxBatch], em[kMaxBatch], p[kMaxBatch], a[kMaxBatch], b[kMaxBatch], sum[kMaxBatch],
       prefactor[kMaxBatch], cel_weight[kMaxBatch];
   bool active[kMaxBatch], closed_form[kMaxBatch];
@@ -137,6 +142,8 @@ void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, cons
   for (int i = 0; i < count; ++i) {
     active[i] = closed_form[i] = false;
     values[i] = 0.0;
+    const double c = c_in[i];
+    const double D = std::abs(d_in[i]);  // F1 is even in d
     if (c <= 0.0) continue;
     const double u2 = u[i] * u[i];
     const double A = std::sqrt((c + D) * (c + D) + u2);  // to the far end
@@ -150,7 +157,7 @@ void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, cons
     const double near_excess_D = D >= c ? near_excess : B - (D - c);                          // B - (D - c)
     const double kc_squared = (far_excess + near_excess_c) * (A + B + 2.0 * c) * inverse_four_AB;
     if (!(kc_squared > 0.0)) {  // on the segment: log-infinite (or NaN input); the quadrature says what it says
-      values[i] = SemiEllipseOverDistanceQuadrature(c, centre_offset, u[i]);
+      values[i] = SemiEllipseOverDistanceQuadrature(c, d_in[i], u[i]);
       continue;
     }
     const double A_minus_B = 4.0 * c * D * inverse_sum;  // (A^2 - B^2) / (A + B)
@@ -204,6 +211,167 @@ void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, cons
   }
 }
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#define CONFORMA_SEMI_ELLIPSE_AVX 1
+// The same closed form with AVX (vdivpd, vsqrtpd: as exact as their scalar forms) on 4 * kVectors lanes, each with
+// its own (c, D, u), operation for operation as SemiEllipseLanesScalar, so every lane is bit-identical to it: no fused
+// multiply-add (target "avx" without "fma"), the same association and order; a lane that converged keeps its values
+// (blend), as the scalar lane that leaves the loop. kVectors independent vectors overlap their division and square
+// root latencies. Lanes whose closed form does not apply (on the segment, c <= 0) are flagged in `quadrature` for the
+// caller. count in [1, 4 kVectors]; unused lanes repeat the last one.
+template <int kVectors>
+__attribute__((target("avx"))) void SemiEllipseLanesAvx(const double* c_in, const double* D_in, const double* u_in,
+                                                        int count, double* values, bool* quadrature) {
+  constexpr int kLanes = 4 * kVectors;
+  alignas(32) double c_lanes[kLanes], D_lanes[kLanes], u_lanes[kLanes], out[kLanes];
+  for (int i = 0; i < kLanes; ++i) {
+    const int from = i < count ? i : count - 1;
+    c_lanes[i] = c_in[from], D_lanes[i] = D_in[from], u_lanes[i] = u_in[from];
+  }
+  const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd(), two = _mm256_set1_pd(2.0);
+  const __m256d four = _mm256_set1_pd(4.0), half = _mm256_set1_pd(0.5), sign_mask = _mm256_set1_pd(-0.0);
+  const __m256d tolerance = _mm256_set1_pd(1e-9);  // kTolerance of SemiEllipseLanesScalar
+  __m256d qc[kVectors], e[kVectors], em[kVectors], p[kVectors], a[kVectors], b[kVectors], sum[kVectors];
+  __m256d prefactor[kVectors], cel_weight[kVectors], active[kVectors], lane_scale[kVectors];
+  int closed_mask = 0;
+  for (int v = 0; v < kVectors; ++v) {
+    const __m256d c = _mm256_load_pd(c_lanes + 4 * v), D = _mm256_load_pd(D_lanes + 4 * v);
+    const __m256d u = _mm256_load_pd(u_lanes + 4 * v);
+    const __m256d u2 = _mm256_mul_pd(u, u);
+    const __m256d c_plus_D = _mm256_add_pd(c, D), D_minus_c = _mm256_sub_pd(D, c), c_minus_D = _mm256_sub_pd(c, D);
+    const __m256d A = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(c_plus_D, c_plus_D), u2));
+    const __m256d B = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(D_minus_c, D_minus_c), u2));
+    const __m256d four_AB = _mm256_mul_pd(_mm256_mul_pd(four, A), B);
+    const __m256d inverse_four_AB = _mm256_div_pd(one, four_AB);
+    const __m256d A_plus_B = _mm256_add_pd(A, B);
+    const __m256d inverse_sum = _mm256_div_pd(one, A_plus_B);
+    const __m256d far_excess = _mm256_div_pd(u2, _mm256_add_pd(_mm256_add_pd(A, c), D));
+    const __m256d near_excess = _mm256_div_pd(u2, _mm256_add_pd(B, _mm256_andnot_pd(sign_mask, c_minus_D)));
+    const __m256d c_at_least_D = _mm256_cmp_pd(c, D, _CMP_GE_OQ), D_at_least_c = _mm256_cmp_pd(D, c, _CMP_GE_OQ);
+    const __m256d near_excess_c = _mm256_blendv_pd(_mm256_sub_pd(B, c_minus_D), near_excess, c_at_least_D);
+    const __m256d near_excess_D = _mm256_blendv_pd(_mm256_sub_pd(B, D_minus_c), near_excess, D_at_least_c);
+    const __m256d two_c = _mm256_mul_pd(two, c);
+    const __m256d kc_squared = _mm256_mul_pd(
+        _mm256_mul_pd(_mm256_add_pd(far_excess, near_excess_c), _mm256_add_pd(A_plus_B, two_c)), inverse_four_AB);
+    const __m256d closed_form =
+        _mm256_and_pd(_mm256_cmp_pd(c, zero, _CMP_GT_OQ), _mm256_cmp_pd(kc_squared, zero, _CMP_GT_OQ));
+    closed_mask |= _mm256_movemask_pd(closed_form) << (4 * v);
+    const __m256d A_minus_B = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(four, c), D), inverse_sum);
+    const __m256d k_squared = _mm256_mul_pd(
+        _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(two_c, _mm256_add_pd(far_excess, near_excess_D)), inverse_sum),
+                      _mm256_add_pd(two_c, A_minus_B)),
+        inverse_four_AB);
+    qc[v] = e[v] = _mm256_min_pd(_mm256_sqrt_pd(kc_squared), one);
+    em[v] = a[v] = one;
+    b[v] = lane_scale[v] = zero;
+    p[v] = _mm256_sqrt_pd(_mm256_mul_pd(_mm256_mul_pd(A_plus_B, A_plus_B), inverse_four_AB));
+    sum[v] = _mm256_mul_pd(half, k_squared);
+    prefactor[v] = _mm256_mul_pd(two, _mm256_sqrt_pd(_mm256_mul_pd(A, B)));
+    cel_weight[v] = _mm256_mul_pd(_mm256_mul_pd(A_minus_B, A_minus_B), inverse_four_AB);
+    active[v] = closed_form;
+  }
+  double weight = 0.25, scale = 1.0;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    int any_active = 0;
+    for (int v = 0; v < kVectors; ++v) any_active |= _mm256_movemask_pd(active[v]);
+    if (!any_active) break;
+    scale *= 2.0;
+    const __m256d weight_v = _mm256_set1_pd(weight), scale_v = _mm256_set1_pd(scale);
+    for (int v = 0; v < kVectors; ++v) {
+      const __m256d inverse_p = _mm256_div_pd(one, p[v]);
+      const __m256d a_next = _mm256_add_pd(a[v], _mm256_mul_pd(b[v], inverse_p));
+      const __m256d g = _mm256_mul_pd(e[v], inverse_p);
+      __m256d b_next = _mm256_add_pd(b[v], _mm256_mul_pd(a[v], g));
+      b_next = _mm256_add_pd(b_next, b_next);
+      const __m256d p_next = _mm256_add_pd(p[v], g);
+      const __m256d em_next = _mm256_add_pd(em[v], qc[v]);
+      const __m256d spread = _mm256_sub_pd(em[v], qc[v]);
+      const __m256d sum_next = _mm256_add_pd(sum[v], _mm256_mul_pd(_mm256_mul_pd(weight_v, spread), spread));
+      const __m256d converged = _mm256_and_pd(
+          active[v],
+          _mm256_cmp_pd(_mm256_andnot_pd(sign_mask, spread), _mm256_mul_pd(em[v], tolerance), _CMP_LE_OQ));
+      a[v] = _mm256_blendv_pd(a[v], a_next, active[v]);
+      b[v] = _mm256_blendv_pd(b[v], b_next, active[v]);
+      p[v] = _mm256_blendv_pd(p[v], p_next, active[v]);
+      em[v] = _mm256_blendv_pd(em[v], em_next, active[v]);
+      sum[v] = _mm256_blendv_pd(sum[v], sum_next, active[v]);
+      lane_scale[v] = _mm256_blendv_pd(lane_scale[v], scale_v, converged);
+      active[v] = _mm256_andnot_pd(converged, active[v]);
+      const __m256d qc_next = _mm256_mul_pd(two, _mm256_sqrt_pd(e[v]));
+      qc[v] = _mm256_blendv_pd(qc[v], qc_next, active[v]);
+      e[v] = _mm256_blendv_pd(e[v], _mm256_mul_pd(qc_next, em[v]), active[v]);
+    }
+    weight *= 0.5;
+  }
+  const __m256d pi = _mm256_set1_pd(M_PI), half_pi = _mm256_set1_pd(0.5 * M_PI), scale_v = _mm256_set1_pd(scale);
+  for (int v = 0; v < kVectors; ++v) {
+    lane_scale[v] = _mm256_blendv_pd(lane_scale[v], scale_v, active[v]);  // not converged in 60 steps
+    const __m256d K_minus_E =
+        _mm256_mul_pd(_mm256_div_pd(_mm256_mul_pd(pi, lane_scale[v]), _mm256_mul_pd(two, em[v])), sum[v]);
+    const __m256d cel = _mm256_div_pd(_mm256_mul_pd(half_pi, _mm256_add_pd(b[v], _mm256_mul_pd(a[v], em[v]))),
+                                      _mm256_mul_pd(em[v], _mm256_add_pd(em[v], p[v])));
+    _mm256_store_pd(out + 4 * v,
+                    _mm256_mul_pd(prefactor[v], _mm256_add_pd(K_minus_E, _mm256_mul_pd(cel_weight[v], cel))));
+  }
+  for (int i = 0; i < count; ++i) {
+    values[i] = out[i];
+    quadrature[i] = !((closed_mask >> i) & 1);
+  }
+}
+
+bool CpuHasAvx() {
+  static const bool has_avx = __builtin_cpu_supports("avx");
+  return has_avx;
+}
+#endif
+
+// F1 at count lanes with their own half-length c[i] >= 0, centre offset d[i] and distance u[i] (any count).
+void SemiEllipseLanes(const double* c, const double* d, const double* u, int count, double* values) {
+#ifdef CONFORMA_SEMI_ELLIPSE_AVX
+  // up to 16 lanes at a time in 4 vectors (their division and square-root chains overlap); one or two lanes are
+  // faster in scalar arithmetic (two interleaved chains against one vector's chain)
+  if (count >= 3 && CpuHasAvx()) {
+    constexpr int kChunk = 16;
+    for (int first = 0; first < count; first += kChunk) {
+      const int lanes = std::min(kChunk, count - first);
+      if (lanes <= 2) {
+        SemiEllipseLanesScalar(c + first, d + first, u + first, lanes, values + first);
+        continue;
+      }
+      double D[kChunk];
+      bool quadrature[kChunk];
+      for (int i = 0; i < lanes; ++i) D[i] = std::abs(d[first + i]);  // F1 is even in d
+      switch ((lanes + 3) / 4) {
+        case 1: SemiEllipseLanesAvx<1>(c + first, D, u + first, lanes, values + first, quadrature); break;
+        case 2: SemiEllipseLanesAvx<2>(c + first, D, u + first, lanes, values + first, quadrature); break;
+        case 3: SemiEllipseLanesAvx<3>(c + first, D, u + first, lanes, values + first, quadrature); break;
+        default: SemiEllipseLanesAvx<4>(c + first, D, u + first, lanes, values + first, quadrature); break;
+      }
+      for (int i = first; i < first + lanes; ++i) {  // c <= 0 or on the segment: as SemiEllipseLanesScalar
+        if (!quadrature[i - first]) continue;
+        values[i] = c[i] <= 0.0 ? 0.0 : SemiEllipseOverDistanceQuadrature(c[i], d[i], u[i]);
+      }
+    }
+    return;
+  }
+#endif
+  for (int first = 0; first < count; first += kMaxSemiEllipseBatch)
+    SemiEllipseLanesScalar(c + first, d + first, u + first, std::min(kMaxSemiEllipseBatch, count - first),
+                           values + first);
+}
+
+}  // namespace
+
+void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, const double* u, int count,
+                                  double* values) {
+  if (count < 0 || count > kMaxSemiEllipseBatch)
+    throw std::logic_error("SemiEllipseOverDistanceBatch: count out of range");
+  double c[kMaxSemiEllipseBatch], d[kMaxSemiEllipseBatch];
+  std::fill(c, c + count, half_length);
+  std::fill(d, d + count, centre_offset);
+  SemiEllipseLanes(c, d, u, count, values);
+}
+
 double SemiEllipseOverDistance(double half_length, double centre_offset, double u) {
   double value = 0.0;
   SemiEllipseOverDistanceBatch(half_length, centre_offset, &u, 1, &value);
@@ -218,68 +386,158 @@ double SemiEllipseCoupling(double half_length, double centre_offset, double u) {
   return M_PI * (root.imag() - u);
 }
 
+namespace {
+
+// The Gauss nodes of one strip's integral (StripNormalDisplacementIntegrals) and where its F1 values lie in the
+// lanes shared by all strips of the call.
+struct StripPlan {
+  bool empty;     // no load (c <= 0 or no width): integral 0
+  bool singular;  // the strip holds the observation point: two halves of 8 nodes (h[side] > 0)
+  int first_lane;
+  int points;     // regular: 2, 4 or 8 nodes on [s_low, s_high]
+  double h[2];
+};
+
+// size elements on the stack up to N, else on the heap (a row of the collocation fits on the stack)
+template <class T, int N>
+class ScratchArray {
+ public:
+  explicit ScratchArray(int size) {
+    if (size > N) heap_.resize(size);
+    data_ = size > N ? heap_.data() : local_;
+  }
+  T& operator[](int i) { return data_[i]; }
+  T* data() { return data_; }
+
+ private:
+  T local_[N];
+  std::vector<T> heap_;
+  T* data_;
+};
+
+// StripNormalDisplacementIntegrals with scratch space on the stack for kStackStrips strips.
+template <int kStackStrips>
+void IntegralsOfStrips(const StripLoad* strips, int count, double s_observation, double poisson_ratio, bool blanco,
+                       double coupling_K, double* integrals) {
+  // Every strip's regular-integrand nodes first, then F1 at all of them in one call (independent lanes: each value is
+  // the one a strip-by-strip evaluation gives), then each strip's sum in the order of the single-strip rule.
+  ScratchArray<StripPlan, kStackStrips> plans(count);
+  const int max_lanes = 16 * count;  // at most 16 nodes per strip
+  ScratchArray<double, 16 * kStackStrips> lane_c(max_lanes), lane_d(max_lanes), lane_u(max_lanes), lane_s(max_lanes);
+  int lanes = 0;
+  auto add_lanes = [&](const StripLoad& strip, const double* s, int n) {
+    for (int i = 0; i < n; ++i, ++lanes) {
+      lane_c[lanes] = strip.half_length;
+      lane_d[lanes] = strip.centre_offset;
+      lane_s[lanes] = s[i];
+      lane_u[lanes] = std::abs(s[i] - s_observation);
+    }
+  };
+  for (int k = 0; k < count; ++k) {
+    const StripLoad& strip = strips[k];
+    StripPlan& plan = plans[k];
+    plan = StripPlan{true, false, 0, 0, {0.0, 0.0}};
+    if (strip.half_length <= 0.0 || strip.s_high <= strip.s_low) continue;
+    plan.empty = false;
+    plan.first_lane = lanes;
+    const bool outside = s_observation <= strip.s_low || s_observation >= strip.s_high;
+    const bool touching = s_observation == strip.s_low || s_observation == strip.s_high;
+    if (outside && !touching) {
+      // A piece [a, b] of the strip not containing the observation point in its interior.
+      const double a = strip.s_low, b = strip.s_high;
+      const double distance = std::min(std::abs(a - s_observation), std::abs(b - s_observation));
+      const double ratio = distance / (b - a);
+      // Thresholds away from the half-integer ratios of a centred observation point (no switching by rounding).
+      plan.points = ratio < 1.0 ? 8 : (ratio < 3.0 ? 4 : 2);
+      const GaussRule rule(a, b, plan.points);
+      double s[8];
+      rule.Nodes(s);
+      add_lanes(strip, s, rule.count());
+      continue;
+    }
+    // The strip holds (or touches) the observation point: split there, 8 nodes on each half of positive length.
+    plan.singular = true;
+    for (int side = 0; side < 2; ++side) {
+      const double h = side == 0 ? s_observation - strip.s_low : strip.s_high - s_observation;
+      plan.h[side] = h;
+      if (h <= 0.0) continue;
+      const double sign = side == 0 ? -1.0 : 1.0;
+      const GaussRule rule(0.0, h, 8);
+      double u[8], s[8];
+      rule.Nodes(u);
+      for (int i = 0; i < 8; ++i) s[i] = s_observation + sign * u[i];
+      add_lanes(strip, s, 8);
+    }
+  }
+  ScratchArray<double, 16 * kStackStrips> f1(lanes);
+  SemiEllipseLanes(lane_c.data(), lane_d.data(), lane_u.data(), lanes, f1.data());
+
+  for (int k = 0; k < count; ++k) {
+    const StripLoad& strip = strips[k];
+    const StripPlan& plan = plans[k];
+    integrals[k] = 0.0;
+    if (plan.empty) continue;
+    const double c = strip.half_length;
+    const double d = strip.centre_offset;
+    const double alpha_slope = (strip.alpha_high - strip.alpha_low) / (strip.s_high - strip.s_low);
+    auto alpha_at = [&](double s) { return strip.alpha_low + alpha_slope * (s - strip.s_low); };
+    const bool coupled = blanco && coupling_K != 0.0;
+    // Regular integrand at the lanes [first, first + n) (their F1 values in f1).
+    auto integrand = [&](int first, int n, double* values) {
+      for (int i = 0; i < n; ++i) {
+        const double s = lane_s[first + i];
+        double value = (1.0 - poisson_ratio) * f1[first + i];
+        if (blanco) {
+          const double alpha = alpha_at(s);
+          value *= std::cos(alpha);
+          if (coupled)
+            value += coupling_K * std::sin(alpha) * (s > s_observation ? 1.0 : -1.0) *
+                     SemiEllipseCoupling(c, d, lane_u[first + i]);
+        }
+        values[i] = value;
+      }
+    };
+    if (!plan.singular) {
+      const GaussRule rule(strip.s_low, strip.s_high, plan.points);
+      double values[8];
+      integrand(plan.first_lane, rule.count(), values);
+      integrals[k] = rule.Sum(values);
+      continue;
+    }
+    // Near u = 0 the 1/r part behaves like -2 phi(0) w_c(0) ln u (phi(0) = sqrt(c^2 - d^2)); subtract it and add its
+    // exact integral h (ln h - 1).
+    const double phi0 = std::abs(d) < c ? std::sqrt(c * c - d * d) : 0.0;
+    const double weight0 = blanco ? std::cos(alpha_at(s_observation)) : 1.0;
+    const double log_coefficient = 2.0 * (1.0 - poisson_ratio) * phi0 * weight0;
+    double total = 0.0;
+    int lane = plan.first_lane;
+    for (int side = 0; side < 2; ++side) {
+      const double h = plan.h[side];
+      if (h <= 0.0) continue;
+      const GaussRule rule(0.0, h, 8);
+      double u[8], values[8];
+      rule.Nodes(u);
+      integrand(lane, 8, values);
+      lane += 8;
+      for (int i = 0; i < 8; ++i) values[i] += log_coefficient * std::log(u[i]);
+      total += rule.Sum(values) - log_coefficient * h * (std::log(h) - 1.0);
+    }
+    integrals[k] = total;
+  }
+}
+
+}  // namespace
+
+void StripNormalDisplacementIntegrals(const StripLoad* strips, int count, double s_observation, double poisson_ratio,
+                                      bool blanco, double coupling_K, double* integrals) {
+  IntegralsOfStrips<32>(strips, count, s_observation, poisson_ratio, blanco, coupling_K, integrals);
+}
+
 double StripNormalDisplacementIntegral(const StripLoad& strip, double s_observation, double poisson_ratio,
                                        bool blanco, double coupling_K) {
-  const double c = strip.half_length;
-  const double d = strip.centre_offset;
-  if (c <= 0.0 || strip.s_high <= strip.s_low) return 0.0;
-  const double alpha_slope = (strip.alpha_high - strip.alpha_low) / (strip.s_high - strip.s_low);
-  auto alpha_at = [&](double s) { return strip.alpha_low + alpha_slope * (s - strip.s_low); };
-  const bool coupled = blanco && coupling_K != 0.0;
-  // Regular integrand at the points s[0..count) != s_observation (F1 for all of them in one batch).
-  auto integrand = [&](const double* s, int count, double* values) {
-    double u[kMaxSemiEllipseBatch];
-    for (int i = 0; i < count; ++i) u[i] = std::abs(s[i] - s_observation);
-    SemiEllipseOverDistanceBatch(c, d, u, count, values);
-    for (int i = 0; i < count; ++i) {
-      double value = (1.0 - poisson_ratio) * values[i];
-      if (blanco) {
-        const double alpha = alpha_at(s[i]);
-        value *= std::cos(alpha);
-        if (coupled)
-          value += coupling_K * std::sin(alpha) * (s[i] > s_observation ? 1.0 : -1.0) * SemiEllipseCoupling(c, d, u[i]);
-      }
-      values[i] = value;
-    }
-  };
-  // A piece [a, b] of the strip not containing the observation point in its interior.
-  auto regular_piece = [&](double a, double b) {
-    const double distance = std::min(std::abs(a - s_observation), std::abs(b - s_observation));
-    const double ratio = distance / (b - a);
-    // Thresholds away from the half-integer ratios of a centred observation point (no switching by rounding).
-    const int points = ratio < 1.0 ? 8 : (ratio < 3.0 ? 4 : 2);
-    const GaussRule rule(a, b, points);
-    double s[8], values[8];
-    rule.Nodes(s);
-    integrand(s, rule.count(), values);
-    return rule.Sum(values);
-  };
-  if (s_observation <= strip.s_low || s_observation >= strip.s_high) {
-    if (s_observation == strip.s_low || s_observation == strip.s_high) {
-      // touches the observation point: handled like a singular half below
-    } else {
-      return regular_piece(strip.s_low, strip.s_high);
-    }
-  }
-  // The strip holds the observation point: split there. Near u = 0 the 1/r part behaves like
-  // -2 phi(0) w_c(0) ln u (phi(0) = sqrt(c^2 - d^2)); subtract it and add its exact integral h (ln h - 1).
-  const double phi0 = std::abs(d) < c ? std::sqrt(c * c - d * d) : 0.0;
-  const double weight0 = blanco ? std::cos(alpha_at(s_observation)) : 1.0;
-  const double log_coefficient = 2.0 * (1.0 - poisson_ratio) * phi0 * weight0;
-  double total = 0.0;
-  for (int side = 0; side < 2; ++side) {
-    const double h = side == 0 ? s_observation - strip.s_low : strip.s_high - s_observation;
-    if (h <= 0.0) continue;
-    const double sign = side == 0 ? -1.0 : 1.0;
-    const GaussRule rule(0.0, h, 8);
-    double u[8], s[8], values[8];
-    rule.Nodes(u);
-    for (int i = 0; i < 8; ++i) s[i] = s_observation + sign * u[i];
-    integrand(s, 8, values);
-    for (int i = 0; i < 8; ++i) values[i] += log_coefficient * std::log(u[i]);
-    total += rule.Sum(values) - log_coefficient * h * (std::log(h) - 1.0);
-  }
-  return total;
+  double integral = 0.0;
+  IntegralsOfStrips<1>(&strip, 1, s_observation, poisson_ratio, blanco, coupling_K, &integral);
+  return integral;
 }
 
 }  // namespace kp_detail
