@@ -72,7 +72,8 @@ FastsimFlexibilities BlendedFlexibilities(const FastsimFlexibilities& three, dou
 
 namespace {
 
-void ResizeResult(int n, FastsimResult* r) {
+// The result sized for n elements, its totals zeroed (every solve starts from it)
+void ResetResult(int n, FastsimResult* r) {
   r->x_m.resize(n);
   r->y_m.resize(n);
   r->area_m2.resize(n);
@@ -81,6 +82,8 @@ void ResizeResult(int n, FastsimResult* r) {
   r->sx.resize(n);
   r->sy.resize(n);
   r->in_slip.resize(n);
+  r->fx_N = r->fy_N = r->mz_Nm = 0.0;
+  r->adhesion_area_m2 = r->slip_area_m2 = r->frictional_power_W = 0.0;
 }
 
 void ValidatePatch(const FastsimPatch& patch) {
@@ -199,9 +202,7 @@ void SolveFastsimStrips(const FastsimPatch& patch, const FastsimFlexibilities& f
 
   FastsimResult& r = *result;
   const int n = patch.elements();
-  ResizeResult(n, &r);
-  r.fx_N = r.fy_N = r.mz_Nm = 0.0;
-  r.adhesion_area_m2 = r.slip_area_m2 = r.frictional_power_W = 0.0;
+  ResetResult(n, &r);
   if (n == 0) {
     r.status = FastsimStatus::NoContact;
     return;
@@ -245,9 +246,7 @@ void SolveFastsimStripsEach(const FastsimPatch& patch, const FastsimFlexibilitie
 
   FastsimResult& r = *result;
   const int n = patch.elements();
-  ResizeResult(n, &r);
-  r.fx_N = r.fy_N = r.mz_Nm = 0.0;
-  r.adhesion_area_m2 = r.slip_area_m2 = r.frictional_power_W = 0.0;
+  ResetResult(n, &r);
   strip_totals->assign(ns, FastsimStripTotals{});
   r.status = FastsimStatus::NoContact;
   if (n == 0) return;
