@@ -164,47 +164,40 @@ std::vector<ContactRange> FindAllRanges(const PatchInterpolant& patch, const F& 
                                         double s_start, double f_start) {
   const ContactRange main = FindRange(patch, f, f_at_node, s_start, f_start);
   const auto& nodes = patch.nodes();
-  std::vector<ContactRange> lobes;
-  // left of the main range, walking outwards (towards lower s)
-  {
+  // the lobes beyond the main range walking the nodes outwards (step -1: towards lower s), in walking order
+  auto walk = [&](int step) {
+    const bool up = step > 0;
+    const double start = up ? main.high : main.low, domain_end = up ? patch.domain_high() : patch.domain_low();
+    std::vector<ContactRange> found;
+    double inner = 0.0;  // the current lobe's edge towards the main range
+    auto close = [&](double outer, bool cut) {
+      ContactRange lobe;
+      lobe.low = up ? inner : outer;
+      lobe.high = up ? outer : inner;
+      lobe.cut = cut;
+      found.push_back(lobe);
+    };
     bool in = false;
-    double s_prev = main.low, f_prev = 0.0;
-    ContactRange lobe;
-    for (size_t k = nodes.size(); k-- > 0;) {
-      if (nodes[k] >= main.low) continue;
+    double s_prev = start, f_prev = 0.0;
+    for (size_t i = 0; i < nodes.size(); ++i) {
+      const size_t k = up ? i : nodes.size() - 1 - i;
+      if (up ? nodes[k] <= start : nodes[k] >= start) continue;
       const double value = f_at_node(k);
-      if (!in && value > 0.0) lobe.high = EdgeRoot(f, nodes[k], value, s_prev, f_prev), in = true;
-      if (in && value <= 0.0) lobe.low = EdgeRoot(f, s_prev, f_prev, nodes[k], value), lobes.push_back(lobe), in = false;
+      if (!in && value > 0.0) inner = EdgeRoot(f, nodes[k], value, s_prev, f_prev), in = true;
+      if (in && value <= 0.0) close(EdgeRoot(f, s_prev, f_prev, nodes[k], value), false), in = false;
       s_prev = nodes[k], f_prev = value;
     }
     if (in) {
-      const double end = f(patch.domain_low());
-      if (end <= 0.0) lobe.low = EdgeRoot(f, s_prev, f_prev, patch.domain_low(), end);
-      else lobe.low = patch.domain_low(), lobe.cut = true;
-      lobes.push_back(lobe);
+      const double end = f(domain_end);
+      if (end <= 0.0) close(EdgeRoot(f, s_prev, f_prev, domain_end, end), false);
+      else close(domain_end, true);
     }
-  }
+    return found;
+  };
+  std::vector<ContactRange> lobes = walk(-1);
   std::reverse(lobes.begin(), lobes.end());
   lobes.push_back(main);
-  // right of the main range, walking outwards (towards higher s)
-  {
-    bool in = false;
-    double s_prev = main.high, f_prev = 0.0;
-    ContactRange lobe;
-    for (size_t k = 0; k < nodes.size(); ++k) {
-      if (nodes[k] <= main.high) continue;
-      const double value = f_at_node(k);
-      if (!in && value > 0.0) lobe.low = EdgeRoot(f, nodes[k], value, s_prev, f_prev), in = true;
-      if (in && value <= 0.0) lobe.high = EdgeRoot(f, s_prev, f_prev, nodes[k], value), lobes.push_back(lobe), in = false;
-      s_prev = nodes[k], f_prev = value;
-    }
-    if (in) {
-      const double end = f(patch.domain_high());
-      if (end <= 0.0) lobe.high = EdgeRoot(f, s_prev, f_prev, patch.domain_high(), end);
-      else lobe.high = patch.domain_high(), lobe.cut = true;
-      lobes.push_back(lobe);
-    }
-  }
+  for (const ContactRange& lobe : walk(+1)) lobes.push_back(lobe);
   return lobes;
 }
 
@@ -233,6 +226,49 @@ std::vector<std::pair<double, double>> StripEdges(const std::vector<ContactRange
   }
   if (edges.empty()) lay(low, high);
   return edges;
+}
+
+// A well of the gap other than the deepest (§3.3 "wells"): its bottom node, the crests towards deeper nodes on
+// either side, its prominence (the lower crest above its bottom) and its weight as a separate contact.
+struct Valley {
+  size_t bottom = 0;
+  double crest[2] = {-std::numeric_limits<double>::infinity(),  // s of the crest towards a deeper node (low, high
+                     std::numeric_limits<double>::infinity()};  // side); none: -inf / +inf
+  double prominence = std::numeric_limits<double>::infinity();
+  double weight = 0.0;
+};
+
+// Every interior local minimum of the gap at the nodes below the approach delta that has a deeper node on some side,
+// with a positive weight: log-linear from 0 to 1 as its prominence grows from kWellProminenceLow to
+// kWellProminenceHigh times its own approach delta - g_k (a ripple is no separate contact).
+std::vector<Valley> SeparateWells(const std::vector<double>& nodes, const std::vector<double>& node_gaps, double delta) {
+  const size_t node_count = nodes.size();
+  std::vector<Valley> valleys;
+  for (size_t k = 1; k + 1 < node_count; ++k) {
+    if (!(node_gaps[k] < node_gaps[k - 1] && node_gaps[k] <= node_gaps[k + 1]) || !(node_gaps[k] < delta)) continue;
+    Valley v;
+    v.bottom = k;
+    for (int side = 0; side < 2; ++side) {
+      const long step = side == 0 ? -1 : 1;
+      size_t crest = k;
+      for (long i = static_cast<long>(k) + step; i >= 0 && i < static_cast<long>(node_count); i += step) {
+        if (node_gaps[i] < node_gaps[k]) {
+          v.crest[side] = nodes[crest];
+          v.prominence = std::min(v.prominence, node_gaps[crest] - node_gaps[k]);
+          break;
+        }
+        if (node_gaps[i] > node_gaps[crest]) crest = static_cast<size_t>(i);
+      }
+    }
+    if (!std::isfinite(v.prominence)) continue;  // the deepest node: the main well
+    const double delta_k = delta - node_gaps[k];
+    v.weight = v.prominence > kWellProminenceLow * delta_k
+                   ? std::min(1.0, std::log(v.prominence / (kWellProminenceLow * delta_k)) /
+                                       std::log(kWellProminenceHigh / kWellProminenceLow))
+                   : 0.0;
+    if (v.weight > 0.0) valleys.push_back(v);
+  }
+  return valleys;
 }
 
 // Position on the rail surface relative to the reference point (s = 0), (t0, n0) components:
@@ -269,9 +305,16 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
   const int n = static_cast<int>(strips.size());
   Eigen::MatrixXd influence(n, n);
   Eigen::VectorXd required(n);
+  std::vector<StripLoad> loads;  // one collocation row: the strips with length, seen from strip i
+  std::vector<int> load_index;
+  std::vector<double> integrals(n);
+  loads.reserve(n);
+  load_index.reserve(n);
   for (int i = 0; i < n; ++i) {
     const KpStrip& obs = strips[i];
     required(i) = delta * std::cos(obs.alpha_rad) - patch.gap(obs.s_m);
+    loads.clear();
+    load_index.clear();
     for (int j = 0; j < n; ++j) {
       const KpStrip& load_strip = strips[j];
       if (!(load_strip.half_length_m > 0.0)) {
@@ -287,8 +330,15 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
         load.alpha_low = patch.alpha(load.s_low) - obs.alpha_rad;
         load.alpha_high = patch.alpha(load.s_high) - obs.alpha_rad;
       }
-      influence(i, j) = StripNormalDisplacementIntegral(load, obs.s_m, elastic.poisson_ratio, blanco, coupling_K) /
-                        (M_PI * elastic.shear_modulus_Pa * load_strip.half_length_m);
+      loads.push_back(load);
+      load_index.push_back(j);
+    }
+    // the whole row in one batch (bit-identical to StripNormalDisplacementIntegral strip by strip)
+    StripNormalDisplacementIntegrals(loads.data(), static_cast<int>(loads.size()), obs.s_m, elastic.poisson_ratio,
+                                     blanco, coupling_K, integrals.data());
+    for (size_t k = 0; k < loads.size(); ++k) {
+      const int j = load_index[k];
+      influence(i, j) = integrals[k] / (M_PI * elastic.shear_modulus_Pa * strips[j].half_length_m);
     }
   }
   // Active set: strips whose amplitude comes out non-positive (or without length or required displacement) carry
@@ -429,37 +479,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     const auto& node_gaps = patch.node_gaps();
     const size_t node_count = nodes.size();
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    struct Valley {
-      size_t bottom = 0;
-      double crest[2] = {kInfinity, kInfinity};  // s of the crest towards a deeper node (low, high side), or none
-      double prominence = kInfinity;
-      double weight = 0.0;
-    };
-    std::vector<Valley> valleys;
-    for (size_t k = 1; k + 1 < node_count; ++k) {
-      if (!(node_gaps[k] < node_gaps[k - 1] && node_gaps[k] <= node_gaps[k + 1]) || !(node_gaps[k] < delta)) continue;
-      Valley v;
-      v.bottom = k;
-      for (int side = 0; side < 2; ++side) {
-        const long step = side == 0 ? -1 : 1;
-        size_t crest = k;
-        for (long i = static_cast<long>(k) + step; i >= 0 && i < static_cast<long>(node_count); i += step) {
-          if (node_gaps[i] < node_gaps[k]) {
-            v.crest[side] = nodes[crest];
-            v.prominence = std::min(v.prominence, node_gaps[crest] - node_gaps[k]);
-            break;
-          }
-          if (node_gaps[i] > node_gaps[crest]) crest = static_cast<size_t>(i);
-        }
-      }
-      if (!std::isfinite(v.prominence)) continue;  // the deepest node: the main well
-      const double delta_k = delta - node_gaps[k];
-      v.weight = v.prominence > kWellProminenceLow * delta_k
-                     ? std::min(1.0, std::log(v.prominence / (kWellProminenceLow * delta_k)) /
-                                         std::log(kWellProminenceHigh / kWellProminenceLow))
-                     : 0.0;
-      if (v.weight > 0.0) valleys.push_back(v);
-    }
+    const std::vector<Valley> valleys = SeparateWells(nodes, node_gaps, delta);
     for (const Valley& v : valleys) separation_weight = std::max(separation_weight, v.weight);
     if (separation_weight > 0.0) {
       // the main well: the connected eps = 0.5 region around the contact point, up to the crests towards the valleys
@@ -522,8 +542,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
         for (int side = 0; side < 2; ++side) {
           const long step = side == 0 ? -1 : 1;
           double inside = nodes[v.bottom], f_in = 0.5 * delta_k;
-          well_edge[side] = side == 0 ? std::max(patch.domain_low(), v.crest[0] == kInfinity ? -kInfinity : v.crest[0])
-                                      : std::min(patch.domain_high(), v.crest[1]);
+          well_edge[side] = side == 0 ? std::max(patch.domain_low(), v.crest[0]) : std::min(patch.domain_high(), v.crest[1]);
           for (long i = static_cast<long>(v.bottom) + step; i >= 0 && i < static_cast<long>(node_count); i += step) {
             if (side == 0 ? nodes[i] <= well_edge[0] : nodes[i] >= well_edge[1]) break;  // the crest: clipped
             const double value = level - node_gaps[i];
@@ -542,7 +561,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
           continue;
         e.bottom_gap = g_k;
         e.weight = v.weight;
-        e.valley_low = v.crest[0] == kInfinity ? -kInfinity : v.crest[0];
+        e.valley_low = v.crest[0];
         e.valley_high = v.crest[1];
         wells.push_back(e);
       }
@@ -585,10 +604,9 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
         if (!(crest > lobes[l].low && crest < lobes[l].high)) continue;
         // least interpenetration on [crest - 2h, crest + 2h] within the lobe (h: the node spacing there), golden
         // section on either side of the crest (the level has a kink at the crest)
-        const size_t i = static_cast<size_t>(std::lower_bound(nodes.begin(), nodes.end(), crest) - nodes.begin());
-        const double h = nodes.size() > 1 ? nodes[std::min(i, nodes.size() - 1)] -
-                                                nodes[std::min(i, nodes.size() - 1) > 0 ? std::min(i, nodes.size() - 1) - 1 : 0]
-                                          : 0.0;
+        const size_t i = std::min(static_cast<size_t>(std::lower_bound(nodes.begin(), nodes.end(), crest) - nodes.begin()),
+                                  nodes.size() - 1);
+        const double h = i > 0 ? nodes[i] - nodes[i - 1] : 0.0;
         double best = crest, best_value = interpenetration(crest);
         for (int side = 0; side < 2; ++side) {
           double a = side == 0 ? std::max(lobes[l].low, crest - 2.0 * h) : crest;
@@ -625,17 +643,25 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   const bool blanco = options.influence == KpInfluence::BlancoLorenzo;
   const double coupling_K = blanco ? CouplingParameter(options.coupling, elastic) : 0.0;
   const double alpha_contact = patch.alpha(s_contact);
-  result.strips.resize(n);
+  // strips on the given edges, each with the virtual half-length at its centre line
+  auto strips_on = [&](const std::vector<std::pair<double, double>>& on) {
+    std::vector<KpStrip> laid(on.size());
+    for (size_t k = 0; k < on.size(); ++k) {
+      KpStrip& strip = laid[k];
+      strip.s_m = 0.5 * (on[k].first + on[k].second);
+      strip.ds_m = on[k].second - on[k].first;
+      strip.x_centre_m = patch.x_offset(strip.s_m);
+      strip.alpha_rad = patch.alpha(strip.s_m);
+      strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
+    }
+    return laid;
+  };
+  result.strips = strips_on(edges);
   double c_max = c_contact;
   double influence_sum = 0.0;
   for (int j = 0; j < n; ++j) {
-    KpStrip& strip = result.strips[j];
+    const KpStrip& strip = result.strips[j];
     const double low = edges[j].first, high = edges[j].second;
-    strip.s_m = 0.5 * (low + high);
-    strip.ds_m = high - low;
-    strip.x_centre_m = patch.x_offset(strip.s_m);
-    strip.alpha_rad = patch.alpha(strip.s_m);
-    strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
     c_max = std::max(c_max, strip.half_length_m);
     kp_detail::StripLoad load;
     load.s_low = low;
@@ -665,18 +691,6 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     // themselves when nodes >= n); their ratio peak / c, constant on a Hertzian patch, interpolated linearly onto the
     // strips within each lobe (constant beyond its outer coarse centres). Coarse strips per lobe: laid over the span
     // of all lobes, a coarse centre falling into an entering lobe brought a finite half-length at once (issue 15).
-    auto strips_on = [&](const std::vector<std::pair<double, double>>& on) {
-      std::vector<KpStrip> laid(on.size());
-      for (size_t k = 0; k < on.size(); ++k) {
-        KpStrip& strip = laid[k];
-        strip.s_m = 0.5 * (on[k].first + on[k].second);
-        strip.ds_m = on[k].second - on[k].first;
-        strip.x_centre_m = patch.x_offset(strip.s_m);
-        strip.alpha_rad = patch.alpha(strip.s_m);
-        strip.half_length_m = std::sqrt(std::max(interpenetration(strip.s_m), 0.0) / patch.curvature(strip.s_m));
-      }
-      return laid;
-    };
     const int nodes = std::min(options.collocation_strips, per_lobe);
     // the lobes of the contact range clipped to [range.low, range.high]; a lobe outside keeps zero width
     std::vector<ContactRange> coarse_lobes;

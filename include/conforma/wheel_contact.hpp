@@ -116,6 +116,12 @@ struct WheelContactReport {
   std::vector<std::string> warnings;
 };
 
+// Whether load control balances the wheel's total vertical force (pressure and creep forces solved together:
+// LoadBalance::Total, a positive load and the tangential problem solved), and that balanced force of a report, N
+// (vertical_force_N, else pressure_vertical_force_N): what the carried load of a result is measured by.
+bool BalancesTotalVerticalForce(const WheelContactOptions& options);
+double BalancedVerticalForce(const WheelContactReport& report, const WheelContactOptions& options);
+
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
 // mode. Throws InputError for bad options or velocities; no contact is a status.
 WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,

@@ -32,8 +32,8 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
   if (report.status == WheelContactStatus::NotConverged) {
     if (options.vertical_load_N >= 0.0 && !report.patches.empty()) {
       // the balanced force (WheelContactOptions::load_balance): the total vertical force by default
-      const bool total = options.load_balance == LoadBalance::Total;
-      const double carried = total ? report.vertical_force_N : report.pressure_vertical_force_N;
+      const bool total = BalancesTotalVerticalForce(options);
+      const double carried = BalancedVerticalForce(report, options);
       out.push_back(Format("load_not_converged: load control did not converge: the patches carry %.1f N (%s) of "
                            "the wheel load %.1f N (%.2f %%) after %d evaluations; the forces are those of the last "
                            "iterate",

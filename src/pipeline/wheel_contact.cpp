@@ -20,6 +20,14 @@
 
 namespace conforma {
 
+bool BalancesTotalVerticalForce(const WheelContactOptions& options) {
+  return options.load_balance == LoadBalance::Total && options.vertical_load_N > 0.0 && options.solve_tangential;
+}
+
+double BalancedVerticalForce(const WheelContactReport& report, const WheelContactOptions& options) {
+  return BalancesTotalVerticalForce(options) ? report.vertical_force_N : report.pressure_vertical_force_N;
+}
+
 const char* to_string(WheelContactStatus status) {
   switch (status) {
     case WheelContactStatus::Ok: return "ok";
@@ -142,11 +150,6 @@ struct NormalStage {
   // solved together with the normal problem (then the stage depends on the velocity and the tangential options)
   std::shared_ptr<const WheelContactReport> coupled;
 };
-
-// Load control balances the total vertical force (normal and tangential solved together at each push-down).
-bool TotalForceLoadControl(const WheelContactOptions& options) {
-  return options.load_balance == LoadBalance::Total && options.vertical_load_N > 0.0 && options.solve_tangential;
-}
 
 }  // namespace wheel_contact_detail
 
@@ -323,7 +326,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
                                   options.load_tolerance);
     };
     int direct_evaluations = 0;
-    if (TotalForceLoadControl(options)) {
+    if (BalancesTotalVerticalForce(options)) {
       // Direct total-force balance from the candidates' Hertz push-down (dz = 0), without the pressure balance
       // first: accepted when it converges (Ok); otherwise (F_z <= 0 there, no rising bracket, a jump over the
       // load) the two phases below decide, from the pressure-balanced push.
@@ -351,7 +354,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
     scale = std::max(scale, 1e-6);
     // (with the total-force balance to follow, phase 1 only starts phase 2: a 1e-3 tolerance is enough)
     const double pressure_tolerance =
-        TotalForceLoadControl(options) ? std::max(options.load_tolerance, 1e-3) : options.load_tolerance;
+        BalancesTotalVerticalForce(options) ? std::max(options.load_tolerance, 1e-3) : options.load_tolerance;
     const LoadControlResult load = SolveLoadControl([&](double dz) { return solve_all(dz, &normal); },
                                                     options.vertical_load_N, scale, pressure_tolerance);
     if (load.status == LoadControlStatus::NoBracket) {
@@ -363,7 +366,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
     report.load_iterations = direct_evaluations + load.iterations;
     if (load.status == LoadControlStatus::NotConverged) report.status = WheelContactStatus::NotConverged;
     report.pose.vertical_m = candidates_pose.vertical_m - load.push_m;
-    if (TotalForceLoadControl(options) && load.status == LoadControlStatus::Ok) {
+    if (BalancesTotalVerticalForce(options) && load.status == LoadControlStatus::Ok) {
       // Phase 2: the total-force balance started at phase 1's push (bracketed, SolveLoadControlFrom, Illinois false
       // position). F_z is not monotone by construction: a creep force along t0 pulling the wheel down
       // (mu tan(delta) > 1 at a flange with the wheel sliding down it) can outweigh the pressure; then F_z <= 0 at
@@ -561,7 +564,7 @@ WheelContactReport SolveWheelContactCached(const WheelsetTrackGeometry& geometry
   // keyed as the whole report, and a changed velocity or tangential option solves it again.
   const std::vector<double> report_key = ReportCacheKey(NormalCacheKey(geometry, side, pose, options), velocity, options);
   const std::vector<double> normal_key =
-      TotalForceLoadControl(options) ? report_key : NormalCacheKey(geometry, side, pose, options);
+      BalancesTotalVerticalForce(options) ? report_key : NormalCacheKey(geometry, side, pose, options);
   // a NaN cannot be a map key (no ordering): such calls go uncached (and throw where the pipeline throws)
   for (double v : report_key)
     if (!std::isfinite(v)) return SolveWheelContact(geometry, side, pose, velocity, options);

@@ -183,12 +183,13 @@ class BogieCost : public ceres::SizedCostFunction<kUnknowns, kUnknowns> {
 };
 
 struct AttemptResult {
-  bool converged = false;   // residual reached at an admissible (not derailed) state
-  bool admissible = false;  // every wheelset within [y_min, y_max] and none climbing its flange
+  bool converged = false;      // residual reached at an admissible state
   bool beyond_margin = false;  // a wheelset outside [y_min, y_max]
   bool climbing = false;       // a flange-contact wheelset whose lateral contact force falls towards the flange
   double max_residual = std::numeric_limits<double>::infinity();
   int iterations = 0;
+  // every wheelset within [y_min, y_max] and none climbing its flange
+  bool admissible() const { return !beyond_margin && !climbing; }
 };
 
 // Stops the minimizer once every scaled residual is certainly 100 times below the tolerance (|r|_max <= |r|_2).
@@ -286,14 +287,13 @@ AttemptResult SolveBogie(BogieContext& ctx, double* p) {
     const double slope_minus = (f[j].lateral_N - minus.lateral_N) / (h * ctx.Q0);  // Q0 per mm
     out.climbing |= std::min(slope_plus, slope_minus) > ctx.options->climbing_slope;
   }
-  out.admissible = !out.beyond_margin && !out.climbing;
-  out.converged = out.admissible && out.max_residual <= ctx.options->residual_tolerance;
+  out.converged = out.admissible() && out.max_residual <= ctx.options->residual_tolerance;
   return out;
 }
 
 // An admissible attempt beats a derailed one; otherwise the smaller residual wins.
 bool Better(const AttemptResult& x, const AttemptResult& y) {
-  if (x.admissible != y.admissible) return x.admissible;
+  if (x.admissible() != y.admissible()) return x.admissible();
   return x.max_residual < y.max_residual;
 }
 

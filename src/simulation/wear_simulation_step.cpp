@@ -73,8 +73,7 @@ void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& tra
     // vertical force by default), is within load_acceptance of the target; otherwise the wheel contributes no wear
     // and is counted as failed. (The pressure part alone accepted a flange contact whose creep forces pull the
     // wheel down, total -7.5 kN under a 60 kN load, issue 15.)
-    const double carried = o.load_balance == LoadBalance::Total ? report.vertical_force_N
-                                                                : report.pressure_vertical_force_N;
+    const double carried = BalancedVerticalForce(report, o);
     const bool near_load = report.status == WheelContactStatus::NotConverged &&
                            std::abs(carried - load) <= options.load_acceptance * load;
     if (report.status != WheelContactStatus::Ok && !near_load) {
