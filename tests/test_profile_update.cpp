@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -272,6 +274,49 @@ TEST(ProfileUpdate, OverhangCutRemovesOnlyTheLipAndReportsItsArea) {
   const std::vector<Eigen::Vector2d> copy = monotone;
   EXPECT_EQ(CutOverhangs(&monotone), 0.0);
   for (size_t k = 0; k < copy.size(); ++k) EXPECT_EQ(monotone[k], copy[k]);
+}
+
+// A wheel-like step with a vertical face: tread z = 10 mm, rounded (2 mm) into a face at y = 0 down to z = 0, then
+// rounded out to the flat at z = 0; `face_y(z)` shifts the face's points laterally (m).
+Profile vertical_face_profile(const std::function<double(double)>& face_y) {
+  std::vector<Eigen::Vector2d> pts;
+  const double r = 2e-3, h = 0.05e-3;
+  for (int k = 0; k < 360; ++k) pts.emplace_back(-20e-3 + k * h, 10e-3);  // up to y = -2.05 mm
+  for (int i = 0; i <= 60; ++i) {  // convex quarter: centre (-r, 8 mm)
+    const double t = 0.5 * kPi * i / 60;
+    pts.emplace_back(-r + r * std::sin(t), 8e-3 + r * std::cos(t));
+  }
+  for (int k = 1; k < 120; ++k) pts.emplace_back(face_y(8e-3 - k * h), 8e-3 - k * h);  // z = 7.95 ... 2.05 mm
+  for (int i = 0; i <= 60; ++i) {  // concave quarter: centre (r, 2 mm)
+    const double t = 0.5 * kPi * i / 60;
+    pts.emplace_back(r - r * std::cos(t), 2e-3 - r * std::sin(t));
+  }
+  for (int k = 1; k <= 360; ++k) pts.emplace_back(r + k * h, 0.0);
+  ProfileFitOptions fit;
+  fit.function_of_y = false;
+  return Profile::FromPoints(pts, ProfileKind::Wheel, fit, "vertical face");
+}
+
+// Folds are reversals of y beyond fold_tolerance_m (1 um): sub-um wiggles of a vertical face (what the refit after an
+// overhang cut leaves: the Aosta run stopped on 0.45 um peak to peak; here 0.5 um) are not folds, a face leaning back by 5 um is -- although
+// each of its 0.05 mm segments leans by only 8e-4 of its length (the former per-segment rule, 1e-3, missed it).
+TEST(ProfileUpdate, FoldsAreReversalsOfYBeyondTheTolerance) {
+  const Profile base = vertical_face_profile([](double) { return 0.0; });
+  const ProfileValidity self = CheckProfileValidity(base, base);
+  EXPECT_TRUE(self.valid) << self.reason;
+  EXPECT_EQ(self.y_folds_after, 0);
+  const Profile wiggled = vertical_face_profile([](double z) { return 0.25e-6 * std::sin(2 * kPi * z / 0.6e-3); });
+  const ProfileValidity w = CheckProfileValidity(wiggled, base);
+  EXPECT_EQ(w.y_folds_after, 0) << w.reason;
+  EXPECT_TRUE(w.valid) << w.reason;
+  const Profile leaning = vertical_face_profile([](double z) { return -5e-6 * (8e-3 - z) / 6e-3; });
+  const ProfileValidity l = CheckProfileValidity(leaning, base);
+  EXPECT_FALSE(l.valid);
+  EXPECT_GE(l.y_folds_after, 1);
+  EXPECT_NE(l.reason.find("single-valued"), std::string::npos) << l.reason;
+  ProfileValidityOptions bad;
+  bad.fold_tolerance_m = 0.0;
+  EXPECT_THROW(CheckProfileValidity(base, base, bad), InputError);
 }
 
 }  // namespace

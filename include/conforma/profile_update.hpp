@@ -64,6 +64,11 @@ struct ProfileValidityOptions {
   // below it; where the previous profile itself was sharper (e.g. a tight flange radius), the new
   // curvature may not exceed 1.2 x the previous maximum within +-2 mm.
   double max_curvature_1_m = 1.0e3;  // 1/m, > 0
+  // Fold criterion: the profile must stay single-valued in y; a reversal of y along the curve counts as a fold once
+  // y has moved back by more than this from its running extreme (hysteresis): wiggles of a vertical flange face
+  // below it are rounding, not an overhang. 1 um: below profile-measurement resolution, above the ~0.5 um the
+  // spline refit after an overhang cut leaves on a vertical face.
+  double fold_tolerance_m = 1.0e-6;  // m, > 0
 };
 // The checks stop at the first failure (non-finite points, self-intersection, new folds, kink); the fields of the
 // later checks then keep their defaults.
@@ -71,7 +76,7 @@ struct ProfileValidity {
   bool valid = true;                  // all checks passed
   std::string reason;                 // empty when valid
   double max_abs_curvature_1_m = 0.0; // of the new profile, 1/m
-  int y_folds_before = 0, y_folds_after = 0;  // sign changes of dy/ds along the curve (previous / new profile)
+  int y_folds_before = 0, y_folds_after = 0;  // reversals of y along the curve beyond fold_tolerance_m (previous / new)
 };
 ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& previous,
                                      const ProfileValidityOptions& options = {});

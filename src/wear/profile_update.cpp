@@ -74,16 +74,27 @@ double CutOverhangs(std::vector<Eigen::Vector2d>* points) {
 
 namespace {
 
-int count_y_folds(const std::vector<Eigen::Vector2d>& p) {
-  // sign changes of dy along the polyline, ignoring segments with |dy| below 1e-3 of their length
-  int folds = 0, last = 0;
-  for (size_t i = 0; i + 1 < p.size(); ++i) {
-    const Eigen::Vector2d d = p[i + 1] - p[i];
-    const double len = d.norm();
-    if (len == 0.0 || std::abs(d.x()) < 1e-3 * len) continue;
-    const int sign = d.x() > 0 ? 1 : -1;
-    if (last != 0 && sign != last) ++folds;
-    last = sign;
+// Reversals of the lateral coordinate y along the polyline (a profile single-valued in y has none), with
+// hysteresis: a reversal counts only once y has moved back by more than `tolerance` from its running extreme in the
+// current direction. Sub-tolerance wiggles of a vertical face (the spline refit after an overhang cut leaves
+// ~0.5 um) are not folds; a face leaning back by more than the tolerance is, however gently it leans.
+int count_y_folds(const std::vector<Eigen::Vector2d>& p, double tolerance) {
+  if (p.empty()) return 0;
+  int folds = 0, direction = 0;  // +1: y increasing, -1: decreasing, 0: not yet moved beyond the tolerance
+  double low = p[0].x(), high = p[0].x();  // running extremes since the last reversal
+  for (size_t i = 1; i < p.size(); ++i) {
+    const double y = p[i].x();
+    low = std::min(low, y);
+    high = std::max(high, y);
+    if (direction >= 0 && y < high - tolerance) {  // moved back from the maximum
+      if (direction > 0) ++folds;
+      direction = -1;
+      low = high = y;
+    } else if (direction <= 0 && y > low + tolerance) {  // moved back from the minimum
+      if (direction < 0) ++folds;
+      direction = 1;
+      low = high = y;
+    }
   }
   return folds;
 }
@@ -92,6 +103,7 @@ int count_y_folds(const std::vector<Eigen::Vector2d>& p) {
 
 ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& previous, const ProfileValidityOptions& o) {
   require_positive(o.max_curvature_1_m, "max_curvature_1_m");
+  require_positive(o.fold_tolerance_m, "fold_tolerance_m");
   ProfileValidity v;
   const auto pts = updated.samples();
   for (const auto& p : pts)
@@ -108,8 +120,8 @@ ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& prev
     v.reason = m.str();
     return v;
   }
-  v.y_folds_before = count_y_folds(previous.samples());
-  v.y_folds_after = count_y_folds(pts);
+  v.y_folds_before = count_y_folds(previous.samples(), o.fold_tolerance_m);
+  v.y_folds_after = count_y_folds(pts, o.fold_tolerance_m);
   if (v.y_folds_after > v.y_folds_before) {
     v.valid = false;
     v.reason = "the profile is no longer single-valued in y: " + std::to_string(v.y_folds_after) +
