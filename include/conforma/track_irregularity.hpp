@@ -25,7 +25,7 @@
 namespace conforma {
 
 struct TrackIrregularityOptions {
-  IrregularitySpectrum spectrum = IrregularitySpectrum::OreB176Low;
+  IrregularitySpectrum spectrum = IrregularitySpectrum::OreB176Low;  // the PSD synthesised
   double length_m = 1000.0;          // L: synthesised length (the signal is L-periodic), > 0
   double spacing_m = 0.25;           // sample spacing ds, > 0, <= wavelength_min_m / 4
   double wavelength_min_m = 3.0;     // band of the synthesised wavelengths (EN 14363 D1-D3: 3-150 m), > 0

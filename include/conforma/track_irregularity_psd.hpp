@@ -20,14 +20,24 @@
 namespace conforma {
 
 enum class IrregularitySpectrum {
-  OreB176Low, OreB176High,
-  FraClass1, FraClass2, FraClass3, FraClass4, FraClass5, FraClass6,
+  OreB176Low,   // ORE B176, low level of disturbance (good European main line)
+  OreB176High,  // ORE B176, high level of disturbance
+  FraClass1,    // FRA track class 1 (worst, 10 mph freight)
+  FraClass2,    // FRA class 2
+  FraClass3,    // FRA class 3
+  FraClass4,    // FRA class 4
+  FraClass5,    // FRA class 5
+  FraClass6,    // FRA class 6 (best, 110 mph)
 };
 const char* to_string(IrregularitySpectrum spectrum);  // "ore_b176_low", ..., "fra_class_6"
 // Throws InputError naming the accepted names for an unknown one.
 IrregularitySpectrum ParseIrregularitySpectrum(const std::string& name);
 
-enum class IrregularityComponent { Alignment, VerticalLevel, CrossLevel };
+enum class IrregularityComponent {
+  Alignment,      // lateral deviation of the track centre line, m
+  VerticalLevel,  // vertical deviation of the track centre line, m
+  CrossLevel,     // cross-level angle (height difference of the rails over their distance), rad
+};
 
 // S(Omega) in m^2/(rad/m) (cross-level: rad^2/(rad/m)); Omega > 0 in rad/m. FRA classes have no cross-level
 // spectrum: InputError.
