@@ -64,6 +64,10 @@ struct System {
   Eigen::VectorXd cache_x, cache_f;
   double cache_t = 0.0;
   std::vector<WheelsetDynamicsForces> cache_forces;
+  Eigen::VectorXd jacobian_x;
+  double jacobian_t = 0.0;
+  Matrix jacobian;
+  Vector jacobian_dfdt;
 
   static Eigen::VectorXd ToEigen(const Vector& v) {
     Eigen::VectorXd e(v.size());
@@ -91,6 +95,11 @@ struct System {
   // Forward differences; a wheelset's contact is re-solved only for its own states, the rest reuses the cache.
   void Jacobian(const Vector& xv, Matrix& J, double t, Vector& dfdt) {
     const Eigen::VectorXd x = ToEigen(xv);
+    // a step rejected by the error control is retried from the same (x, t): the same Jacobian
+    if (jacobian_x.size() == x.size() && jacobian_t == t && jacobian_x == x) {
+      J = jacobian, dfdt = jacobian_dfdt;
+      return;
+    }
     Evaluate(x, t);
     const Eigen::VectorXd f0 = cache_f;
     const std::vector<WheelsetDynamicsForces> F0 = cache_forces;
@@ -123,15 +132,25 @@ struct System {
     }
     for (int i = 0; i < n; ++i) dfdt[i] = 0.0;
     if (time_dependent) {
+      // a wheelset's contact depends on t only through the track at its station: re-solved only where the track
+      // input differs between t and t + ht (transitions, irregularities), else the cached forces are exact
       const double ht = 1e-5;  // s
-      std::string failure;
-      int m = 0;
-      std::vector<WheelsetDynamicsForces> Ft;
-      const bool ok = model->Derivative(x, t + ht, &fk, &Ft, &failure, &m);
-      contacts += m;
-      if (!ok) throw ContactFailure("Jacobian d/dt: " + failure);
+      std::vector<WheelsetDynamicsForces> Ft = F0;
+      const TrackInput& tr = model->track();
+      for (int j = 0; j < model->wheelset_count(); ++j) {
+        const double s0 = model->reference_station_m(t) + model->body_position_m(model->wheelset_index(j));
+        const double s1 = model->reference_station_m(t + ht) + model->body_position_m(model->wheelset_index(j));
+        if (tr.curvature(s0) == tr.curvature(s1) && tr.cant(s0) == tr.cant(s1) && tr.alignment(s0) == tr.alignment(s1) &&
+            tr.alignment_derivative(s0) == tr.alignment_derivative(s1) && tr.cross_level(s0) == tr.cross_level(s1))
+          continue;
+        Ft[j] = model->WheelsetForces(x, t + ht, j);
+        contacts += Ft[j].contact_evaluations;
+        if (!Ft[j].ok) throw ContactFailure("Jacobian d/dt: " + Ft[j].failure);
+      }
+      model->Assemble(x, t + ht, Ft, &fk);
       for (int i = 0; i < n; ++i) dfdt[i] = (fk[i] - f0[i]) / ht;
     }
+    jacobian_x = x, jacobian_t = t, jacobian = J, jacobian_dfdt = dfdt;
   }
 };
 
