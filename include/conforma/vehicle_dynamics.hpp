@@ -23,6 +23,7 @@
 
 namespace conforma {
 
+// Rosenbrock4: linearly implicit, finite-difference Jacobian (default); Dopri5: explicit Dormand-Prince 5(4).
 enum class DynamicsStepper { Rosenbrock4, Dopri5 };
 const char* to_string(DynamicsStepper stepper);  // "rosenbrock4", "dopri5"
 
@@ -31,7 +32,7 @@ struct DynamicsOptions {
   DynamicsModelOptions model;            // speed, contact, gravity, ...
   double duration_s = 5.0;               // simulated time, s, > 0
   double output_interval_s = 0.01;       // time between history samples, s, > 0
-  DynamicsStepper stepper = DynamicsStepper::Rosenbrock4;
+  DynamicsStepper stepper = DynamicsStepper::Rosenbrock4;  // see DynamicsStepper and the header comment
   // Error tolerances of the scaled state (mm, mrad, mm/s, mrad/s, per mille): absolute and relative.
   double absolute_tolerance = 1e-3;      // > 0
   double relative_tolerance = 1e-4;      // > 0
@@ -41,6 +42,9 @@ struct DynamicsOptions {
   long max_steps = 2000000;              // >= 1
   // Jacobian difference steps of the scaled states (rosenbrock4), > 0.
   double jacobian_step = 1e-4;
+  // rosenbrock4: a Jacobian serves this many step attempts at new states (1: a fresh one every step, the
+  // Rosenbrock method as designed; more: fewer contact solves, the error control absorbs the older Jacobian)
+  int jacobian_reuse_steps = 1;
   // Initial state in SI (m, rad, m/s, rad/s; axle speeds as w = Omega r0 / V - 1): empty, or one value per
   // generalised coordinate for initial_positions / initial_velocities (VehicleDynamicsModel index layout) and
   // one per wheelset for initial_axle_speed_deviation. Empty: 0.

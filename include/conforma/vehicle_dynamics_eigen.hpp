@@ -21,7 +21,7 @@ struct DynamicsMode {
 };
 
 struct LinearStabilityResult {
-  double speed_m_s = 0.0;
+  double speed_m_s = 0.0;          // V of the analysis, m/s
   Eigen::MatrixXd state_matrix;     // A in the model's scaled state (vehicle_dynamics_model.hpp); same eigenvalues as in SI
   std::vector<DynamicsMode> modes;  // all eigenvalues, one of each conjugate pair (Im >= 0), by increasing frequency
   double max_real_part = 0.0;       // largest Re(s), 1/s
@@ -43,7 +43,7 @@ struct CriticalSpeedOptions {
 
 struct CriticalSpeedResult {
   bool found = false;                // an unstable mode appeared below max_speed_m_s (and min_speed_m_s was stable)
-  bool unstable_at_min_speed = false;
+  bool unstable_at_min_speed = false;  // already unstable at min_speed_m_s (no critical speed searched)
   double critical_speed_m_s = 0.0;   // the upper end of the final bisection bracket
   double frequency_Hz = 0.0;         // of the least stable mode at the critical speed
   int evaluations = 0;               // eigenvalue analyses

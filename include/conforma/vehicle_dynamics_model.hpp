@@ -49,6 +49,8 @@
 
 namespace conforma {
 
+// Nonlinear: a WheelContactFunction with the rigid equilibrium (wheelset_forces.hpp); Linear: Wickens' linear
+// wheelset (vehicle_dynamics_linear_contact.hpp).
 enum class DynamicsContactKind { Nonlinear, Linear };
 const char* to_string(DynamicsContactKind kind);  // "nonlinear", "linear"
 
@@ -56,7 +58,7 @@ const char* to_string(DynamicsContactKind kind);  // "nonlinear", "linear"
 struct DynamicsModelOptions {
   double speed_m_s = 20.0;                 // V, m/s, > 0 (constant)
   double start_position_m = 0.0;           // s0: station of the leading bogie centre at t = 0, m, finite
-  DynamicsContactKind contact_kind = DynamicsContactKind::Nonlinear;
+  DynamicsContactKind contact_kind = DynamicsContactKind::Nonlinear;  // see DynamicsContactKind
   // Nonlinear contact: model, material, FASTSIM settings (vertical_load_N is set per wheel) and the friction.
   WheelContactOptions contact;
   double friction_coefficient = 0.3;       // replaces contact.friction_coefficient, >= 0

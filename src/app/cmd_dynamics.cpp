@@ -54,7 +54,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("dynamics", "time-domain lateral vehicle dynamics over a tangent or a curve");
   struct Args {
     std::string scenario, model, out, stepper = "rosenbrock4";
-    int bogies = 0;
+    int bogies = 0, jacobian_reuse = 1;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
            curve = 100.0, cant_mm = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
     bool linear = false, eig = false;
@@ -76,6 +76,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--friction", a->friction, "friction coefficient");
   sub->add_option("--offset-mm", a->offset_mm, "initial lateral offset of every wheelset, mm (the disturbance)");
   sub->add_option("--stepper", a->stepper, "rosenbrock4 (implicit, default) or dopri5 (explicit)");
+  sub->add_option("--jacobian-reuse", a->jacobian_reuse, "rosenbrock4: steps a Jacobian serves (1: every step)");
   sub->add_option("--atol", a->atol, "absolute tolerance of the scaled state (mm, mrad, mm/s, ...)");
   sub->add_option("--rtol", a->rtol, "relative tolerance");
   sub->add_flag("--linear", a->linear, "linear contact from the profile pair instead of the contact model");
@@ -137,6 +138,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     o.output_interval_s = a->interval;
     o.absolute_tolerance = a->atol;
     o.relative_tolerance = a->rtol;
+    o.jacobian_reuse_steps = a->jacobian_reuse;
     if (a->stepper == "rosenbrock4") o.stepper = DynamicsStepper::Rosenbrock4;
     else if (a->stepper == "dopri5") o.stepper = DynamicsStepper::Dopri5;
     else throw InputError("--stepper: unknown stepper '" + a->stepper + "' (rosenbrock4, dopri5)");

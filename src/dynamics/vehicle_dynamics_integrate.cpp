@@ -40,6 +40,7 @@ void DynamicsOptions::validate() const {
   require_positive(max_step_s, "max_step_s");
   require_positive(min_step_s, "min_step_s");
   require_positive(jacobian_step, "jacobian_step");
+  if (jacobian_reuse_steps < 1) throw InputError("option 'jacobian_reuse_steps' must be >= 1");
   if (max_steps < 1) throw InputError("option 'max_steps' must be >= 1");
 }
 
@@ -68,6 +69,7 @@ struct System {
   double jacobian_t = 0.0;
   Matrix jacobian;
   Vector jacobian_dfdt;
+  int jacobian_reuse = 1, jacobian_age = 0;
 
   static Eigen::VectorXd ToEigen(const Vector& v) {
     Eigen::VectorXd e(v.size());
@@ -100,6 +102,12 @@ struct System {
       J = jacobian, dfdt = jacobian_dfdt;
       return;
     }
+    // optionally an older Jacobian (a W-method use of the Rosenbrock scheme: the error control sees the cost)
+    if (jacobian_x.size() == x.size() && ++jacobian_age < jacobian_reuse) {
+      J = jacobian, dfdt = jacobian_dfdt;
+      return;
+    }
+    jacobian_age = 0;
     Evaluate(x, t);
     const Eigen::VectorXd f0 = cache_f;
     const std::vector<WheelsetDynamicsForces> F0 = cache_forces;
@@ -177,6 +185,7 @@ DynamicsResult SimulateVehicleDynamics(const VehicleDynamicsModel& model, const 
   System sys;
   sys.model = &model;
   sys.jacobian_step = options.jacobian_step;
+  sys.jacobian_reuse = options.jacobian_reuse_steps;
   const TrackInput& tr = model.track();
   sys.time_dependent = static_cast<bool>(tr.curvature_per_m) || static_cast<bool>(tr.cant_m) ||
                        static_cast<bool>(tr.alignment_m) || static_cast<bool>(tr.cross_level_m);
