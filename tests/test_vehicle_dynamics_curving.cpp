@@ -96,5 +96,43 @@ TEST(VehicleDynamicsCurving, SettlesToTheQuasiStaticEquilibrium) {
   }
 }
 
+// A contact function that fails beyond 2 mm towards the outer rail (a stand-in for a look-up table's range or a
+// load control that does not converge): the run must stop with ContactFailed, name the wheelset and keep the
+// history up to there, not step over the failure.
+TEST(VehicleDynamicsCurving, ContactFailureStopsTheRunWithItsReason) {
+  const WheelsetTrackGeometry& g = test::MetroTrackGeometry();
+  const WheelContactFunction failing = [](const WheelsetTrackGeometry& gg, Side side, const WheelsetPose& pose,
+                                          const WheelsetVelocity& velocity, const WheelContactOptions& o) {
+    if (pose.lateral_m < -2e-3) {
+      WheelContactReport r;
+      r.status = WheelContactStatus::NotConverged;
+      return r;
+    }
+    return SolveWheelContact(gg, side, pose, velocity, o);
+  };
+  DynamicsOptions o;
+  o.model.speed_m_s = 15.0;
+  o.duration_s = 2.0;
+  o.output_interval_s = 0.05;
+  TrackInput track;
+  track.curvature_per_m = [](double) { return 1.0 / 300.0; };
+  VehicleParameters v = TwoBogieMetro();
+  v.bogie_count = 1;
+  const VehicleDynamicsModel model(v, &g, track, o.model, failing);
+  const DynamicsResult r = SimulateVehicleDynamics(model, o);
+  EXPECT_EQ(r.status, DynamicsStatus::ContactFailed);
+  EXPECT_NE(r.message.find("wheelset"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("not_converged"), std::string::npos) << r.message;
+  EXPECT_GT(r.contact_failure_retries, 0);
+  EXPECT_LT(r.simulated_time_s, o.duration_s);
+  ASSERT_GE(r.history.size(), 2u);
+  // the last state reached is still inside the contact function's range (within the step that failed)
+  double y_min = 0.0;
+  for (int j = 0; j < model.wheelset_count(); ++j) y_min = std::min(y_min, r.history.back().state[model.wheelset_index(j)]);
+  EXPECT_GT(y_min, -2.0);
+  EXPECT_LT(y_min, -1.5);
+  std::printf("  contact failure stopped the run at t = %.4f s: %s\n", r.simulated_time_s, r.message.c_str());
+}
+
 }  // namespace
 }  // namespace conforma
