@@ -68,7 +68,7 @@ TEST(VehicleDynamicsLinear, FreeWheelsetKinematicWavelength) {
   ASSERT_GE(crossings.size(), 5u);
   const double wavelength = 2.0 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
   const double error = wavelength / expected - 1.0;
-  std::printf("free wheelset: wavelength %.4f m, Klingel %.4f m, error %+.3f %%, %ld steps, %ld rejected, %ld f, %ld J\n",
+  std::printf("free wheelset: wavelength %.5f m, Klingel %.5f m, error %+.4f %%, %ld steps, %ld rejected, %ld f, %ld J\n",
               wavelength, expected, 100.0 * error, r.steps, r.rejected_steps, r.derivative_evaluations,
               r.jacobian_evaluations);
   EXPECT_LT(std::fabs(error), 0.02);
@@ -77,6 +77,14 @@ TEST(VehicleDynamicsLinear, FreeWheelsetKinematicWavelength) {
   for (const DynamicsSample& s : r.history) amplitude = std::max(amplitude, std::fabs(s.state[model.wheelset_index(0)]));
   EXPECT_GT(amplitude, 1.5);
   EXPECT_LT(amplitude, 4.0);
+  // the state matrix of the same model has the kinematic mode at V / L_K (two free wheelsets: a pair of them)
+  const LinearStabilityResult eig = AnalyseLinearStability(v, o.model);
+  double closest = 0.0;
+  for (const DynamicsMode& m : eig.modes)
+    if (std::fabs(m.frequency_Hz - o.model.speed_m_s / expected) < std::fabs(closest - o.model.speed_m_s / expected))
+      closest = m.frequency_Hz;
+  std::printf("free wheelset: eigenvalue frequency %.6f Hz, V / L_K %.6f Hz\n", closest, o.model.speed_m_s / expected);
+  EXPECT_NEAR(closest / (o.model.speed_m_s / expected), 1.0, 0.02);
 }
 
 // Peak |y| of the leading wheelset over [t0, t1] of the history, mm.
