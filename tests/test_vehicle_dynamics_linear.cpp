@@ -87,6 +87,48 @@ TEST(VehicleDynamicsLinear, FreeWheelsetKinematicWavelength) {
   EXPECT_NEAR(closest / (o.model.speed_m_s / expected), 1.0, 0.02);
 }
 
+// A free wheelset at low speed on a sinusoidal alignment irregularity y_irr = A sin(kappa s) follows the forced
+// kinematic oscillation y'' + k^2 y = k^2 y_irr (k = 2 pi / L_K; from eta = 0: dy/ds = psi, and xi = 0:
+// dpsi/ds = -lambda (y - y_irr) / (r0 b0)): started on the particular solution, y = A k^2 / (k^2 - kappa^2)
+// sin(kappa s), 9/8 A for L_irr = 3 L_K. Checks the irregularity's way into the contact (pose and velocity
+// relative to the actual rails).
+TEST(VehicleDynamicsLinear, FreeWheelsetFollowsTheForcedKinematicResponseToAnAlignment) {
+  VehicleParameters v = Bogie();
+  v.primary_longitudinal_stiffness_N_m = 1e-6;
+  v.primary_lateral_stiffness_N_m = 1e-6;
+  const double lambda = 0.2, r0 = v.nominal_wheel_radius_m, b0 = v.contact_half_distance_m;
+  const double k = 1.0 / std::sqrt(r0 * b0 / lambda), kappa = k / 3.0, A = 2e-3;
+  DynamicsOptions o;
+  o.model.contact_kind = DynamicsContactKind::Linear;
+  o.model.linear = Linear(lambda);
+  o.model.speed_m_s = 2.0;
+  const double s0 = 0.5 * v.wheelbase_m;  // the leading wheelset's station at t = 0
+  TrackInput track;
+  track.alignment_m = [=](double s) { return A * std::sin(kappa * (s - s0)); };
+  track.alignment_slope = [=](double s) { return A * kappa * std::cos(kappa * (s - s0)); };
+  const double gain = k * k / (k * k - kappa * kappa);
+  o.duration_s = 2.0 * 2.0 * M_PI / kappa / o.model.speed_m_s;  // two irregularity wavelengths
+  o.output_interval_s = 0.01;
+  o.record_wheels = false;
+  const VehicleDynamicsModel model(v, nullptr, track, o.model);
+  o.initial_positions.assign(model.position_count(), 0.0);
+  o.initial_velocities.assign(model.position_count(), 0.0);
+  o.initial_positions[model.wheelset_index(0) + 1] = gain * A * kappa;                       // psi = dy/ds
+  o.initial_velocities[model.wheelset_index(0)] = o.model.speed_m_s * gain * A * kappa;     // dy/dt = V psi
+  const DynamicsResult r = SimulateVehicleDynamics(model, o);
+  ASSERT_EQ(r.status, DynamicsStatus::Completed) << r.message;
+  double max_error = 0.0, max_y = 0.0;
+  for (const DynamicsSample& smp : r.history) {
+    const double s = smp.station_m + s0;
+    const double expected_mm = 1e3 * gain * A * std::sin(kappa * (s - s0));
+    max_error = std::max(max_error, std::fabs(smp.state[model.wheelset_index(0)] - expected_mm));
+    max_y = std::max(max_y, std::fabs(smp.state[model.wheelset_index(0)]));
+  }
+  std::printf("alignment: peak y %.4f mm, forced response %.4f mm (A %.1f mm), max deviation %.4f mm\n", max_y,
+              1e3 * gain * A, 1e3 * A, max_error);
+  EXPECT_LT(max_error, 0.02 * 1e3 * gain * A);
+}
+
 // Peak |y| of the leading wheelset over [t0, t1] of the history, mm.
 double Peak(const DynamicsResult& r, int index, double t0, double t1) {
   double p = 0.0;

@@ -11,6 +11,7 @@
 // Each body of the vehicle is described relative to the design centre line at its own s (local track frame, as
 // in the quasi-static curving model); the contact sees the actual (irregular) rails.
 #include <functional>
+#include <vector>
 
 namespace conforma {
 
@@ -20,6 +21,9 @@ struct TrackInput {
   std::function<double(double)> alignment_m;      // m
   std::function<double(double)> alignment_slope;  // rad (dimensionless)
   std::function<double(double)> cross_level_m;    // m
+  // Stations where the curvature or its slope jumps (m, ascending; may be empty): the quadrature of
+  // RelativeTrackPosition splits its panels there, so a piecewise-linear curvature is integrated exactly.
+  std::vector<double> curvature_breaks_m;
 
   double curvature(double s) const { return curvature_per_m ? curvature_per_m(s) : 0.0; }
   double cant(double s) const { return cant_m ? cant_m(s) : 0.0; }
@@ -48,7 +52,7 @@ TrackInput MakeCurveTrack(const CurveTrackSpec& spec);
 // local track frame at s_from: the heading change dTheta = int c ds and the lateral offset
 // D = int_{s_from}^{s_to} (Theta(u) - Theta(s_from)) du = int_{s_from}^{s_to} (s_to - u) c(u) du (Cauchy's
 // repeated-integral formula); constant c: dTheta = c d, D = c d^2 / 2. Gauss-Legendre, 4 points per panel of at
-// most 1 m (exact for piecewise-cubic curvature within a panel).
+// most 1 m, panels split at TrackInput::curvature_breaks_m (exact for a curvature that is a cubic between them).
 struct TrackRelativePosition {
   double heading_change_rad = 0.0;  // dTheta
   double lateral_offset_m = 0.0;    // D

@@ -53,6 +53,9 @@ TrackInput MakeCurveTrack(const CurveTrackSpec& spec) {
   const double c = 1.0 / k.radius_m;
   const double cant = k.radius_m > 0.0 ? k.cant_m : -k.cant_m;  // + raises the right rail = outer of a left curve
   t.curvature_per_m = [k, c](double s) { return c * CurveShape(k, s); };
+  const double s1 = k.tangent_length_m, s2 = s1 + k.transition_length_m, s3 = s2 + k.curve_length_m,
+               s4 = s3 + k.transition_length_m;
+  t.curvature_breaks_m = {s1, s2, s3, s4};
   if (cant != 0.0) t.cant_m = [k, cant](double s) { return cant * CurveShape(k, s); };
   return t;
 }
@@ -63,16 +66,27 @@ TrackRelativePosition RelativeTrackPosition(const TrackInput& track, double s_fr
   // 4-point Gauss-Legendre on [-1, 1]
   static const double kNode[4] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526};
   static const double kWeight[4] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538};
-  const double d = s_to - s_from;
-  const int panels = std::max(1, static_cast<int>(std::ceil(std::fabs(d) / 1.0)));
-  const double h = d / panels;
-  for (int p = 0; p < panels; ++p) {
-    const double mid = s_from + (p + 0.5) * h;
-    for (int i = 0; i < 4; ++i) {
-      const double u = mid + 0.5 * h * kNode[i];
-      const double cu = track.curvature_per_m(u);
-      r.heading_change_rad += 0.5 * h * kWeight[i] * cu;
-      r.lateral_offset_m += 0.5 * h * kWeight[i] * (s_to - u) * cu;
+  // sub-intervals between the break points inside (s_from, s_to), in the direction of integration
+  std::vector<double> ends{s_from};
+  const double lo = std::min(s_from, s_to), hi = std::max(s_from, s_to);
+  std::vector<double> inside;
+  for (double b : track.curvature_breaks_m)
+    if (b > lo && b < hi) inside.push_back(b);
+  if (s_to < s_from) std::reverse(inside.begin(), inside.end());
+  ends.insert(ends.end(), inside.begin(), inside.end());
+  ends.push_back(s_to);
+  for (size_t e = 0; e + 1 < ends.size(); ++e) {
+    const double d = ends[e + 1] - ends[e];
+    const int panels = std::max(1, static_cast<int>(std::ceil(std::fabs(d) / 1.0)));
+    const double h = d / panels;
+    for (int p = 0; p < panels; ++p) {
+      const double mid = ends[e] + (p + 0.5) * h;
+      for (int i = 0; i < 4; ++i) {
+        const double u = mid + 0.5 * h * kNode[i];
+        const double cu = track.curvature_per_m(u);
+        r.heading_change_rad += 0.5 * h * kWeight[i] * cu;
+        r.lateral_offset_m += 0.5 * h * kWeight[i] * (s_to - u) * cu;
+      }
     }
   }
   return r;
