@@ -48,6 +48,21 @@ struct CurveTrackSpec {
 };
 TrackInput MakeCurveTrack(const CurveTrackSpec& spec);
 
+// Irregularities sampled at equal spacing (e.g. a PSD synthesis), from station s_begin_m: value and slope by
+// Catmull-Rom cubic Hermite interpolation (continuous slope); 0 outside the samples. InputError for a spacing
+// <= 0, fewer than 2 samples or a non-finite value.
+struct SampledTrackFunction {
+  double s_begin_m = 0.0;       // station of the first sample, m
+  double spacing_m = 0.25;      // > 0
+  std::vector<double> values;   // m
+  double value(double s) const;
+  double slope(double s) const;  // d value / ds
+  void validate() const;
+};
+// Sets track.alignment_m and alignment_slope from the samples (cross_level: track.cross_level_m, when given).
+void SetSampledIrregularities(TrackInput& track, const SampledTrackFunction& alignment,
+                              const SampledTrackFunction* cross_level = nullptr);
+
 // Relative position of the design centre line between two stations s_from and s_to (small angles), in the
 // local track frame at s_from: the heading change dTheta = int c ds and the lateral offset
 // D = int_{s_from}^{s_to} (Theta(u) - Theta(s_from)) du = int_{s_from}^{s_to} (s_to - u) c(u) du (Cauchy's

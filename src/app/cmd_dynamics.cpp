@@ -3,11 +3,14 @@
 // clothoid transitions; writes the time history and prints a summary. --eig: the eigenvalues of the linear model
 // (linear contact from the profiles: equivalent conicity, contact-angle parameter, Kalker coefficients of the
 // centred Hertz contact) and its critical speed.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <sstream>
+#include <vector>
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
@@ -48,12 +51,66 @@ LinearWheelsetContact ProfileLinearContact(const WheelsetTrackGeometry& g, const
   return k;
 }
 
+// Irregularity file: CSV with a header naming s_m and alignment_mm (and optionally cross_level_mm), rows at equal
+// spacing of s (the Catmull-Rom interpolation of SampledTrackFunction).
+void LoadIrregularities(const std::string& path, TrackInput& track) {
+  std::ifstream f(path);
+  if (!f) throw InputError("--irregularity: cannot read '" + path + "'");
+  std::string line;
+  std::getline(f, line);
+  std::vector<std::string> names;
+  {
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) names.push_back(cell.substr(0, cell.find_last_not_of(" \r") + 1));
+  }
+  auto column = [&](const std::string& name) {
+    for (size_t i = 0; i < names.size(); ++i)
+      if (names[i] == name) return static_cast<int>(i);
+    return -1;
+  };
+  const int is = column("s_m"), ia = column("alignment_mm"), ic = column("cross_level_mm");
+  if (is < 0 || ia < 0) throw InputError("--irregularity '" + path + "': the header needs the columns s_m and alignment_mm");
+  std::vector<double> s, a, c;
+  int row = 1;
+  while (std::getline(f, line)) {
+    ++row;
+    if (line.empty()) continue;
+    std::vector<double> v;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) {
+      try {
+        v.push_back(std::stod(cell));
+      } catch (const std::exception&) {
+        throw InputError("--irregularity '" + path + "' line " + std::to_string(row) + ": not a number: '" + cell + "'");
+      }
+    }
+    if (static_cast<int>(v.size()) <= std::max({is, ia, ic}))
+      throw InputError("--irregularity '" + path + "' line " + std::to_string(row) + ": too few columns");
+    s.push_back(v[is]);
+    a.push_back(1e-3 * v[ia]);
+    if (ic >= 0) c.push_back(1e-3 * v[ic]);
+  }
+  if (s.size() < 2) throw InputError("--irregularity '" + path + "': at least 2 rows are needed");
+  const double h = (s.back() - s.front()) / static_cast<double>(s.size() - 1);
+  for (size_t i = 1; i < s.size(); ++i)
+    if (std::fabs(s[i] - s[i - 1] - h) > 1e-6 * std::max(1.0, std::fabs(h)))
+      throw InputError("--irregularity '" + path + "' line " + std::to_string(i + 2) + ": s_m is not equally spaced");
+  SampledTrackFunction alignment, cross;
+  alignment.s_begin_m = cross.s_begin_m = s.front();
+  alignment.spacing_m = cross.spacing_m = h;
+  alignment.values = a;
+  cross.values = c;
+  SetSampledIrregularities(track, alignment, ic >= 0 ? &cross : nullptr);
+}
+
 }  // namespace
 
 void RegisterDynamicsCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("dynamics", "time-domain lateral vehicle dynamics over a tangent or a curve");
   struct Args {
-    std::string scenario, model, out, stepper = "rosenbrock4";
+    std::string scenario, model, out, stepper = "rosenbrock4", irregularity;
     int bogies = 0, jacobian_reuse = 1;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
            curve = 100.0, cant_mm = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
@@ -74,6 +131,8 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--curve-length", a->curve, "length of the circular arc, m");
   sub->add_option("--cant-mm", a->cant_mm, "cant of the arc, mm");
   sub->add_option("--friction", a->friction, "friction coefficient");
+  sub->add_option("--irregularity", a->irregularity,
+                  "CSV of track irregularities at equal spacing: columns s_m, alignment_mm [, cross_level_mm]");
   sub->add_option("--offset-mm", a->offset_mm, "initial lateral offset of every wheelset, mm (the disturbance)");
   sub->add_option("--stepper", a->stepper, "rosenbrock4 (implicit, default) or dopri5 (explicit)");
   sub->add_option("--jacobian-reuse", a->jacobian_reuse, "rosenbrock4: steps a Jacobian serves (1: every step)");
@@ -132,7 +191,8 @@ void RegisterDynamicsCommand(CLI::App& app) {
     spec.transition_length_m = a->transition;
     spec.curve_length_m = a->curve;
     spec.cant_m = 1e-3 * a->cant_mm;
-    const TrackInput track = MakeCurveTrack(spec);
+    TrackInput track = MakeCurveTrack(spec);
+    if (!a->irregularity.empty()) LoadIrregularities(a->irregularity, track);
     const VehicleDynamicsModel m(vehicle, &g, track, o.model, &SolveWheelContact);
     o.duration_s = a->duration;
     o.output_interval_s = a->interval;

@@ -152,8 +152,8 @@ WheelsetDynamicsForces VehicleDynamicsModel::WheelsetForces(const Eigen::VectorX
     for (int i = 0; i < 2; ++i) {
       const double sigma = i == 0 ? 1.0 : -1.0;
       const double xi = i == 0 ? xi_L : xi_R;
-      out.wheel_lateral_N[i] = 0.5 * out.lateral_N;
-      out.y_over_q[i] = sigma * out.wheel_lateral_N[i] / out.load_N[i];  // Y towards the track centre
+      out.wheel_lateral_N[i] = 0.5 * out.lateral_N;  // the linear model does not split Y between the wheels: half each
+      out.y_over_q[i] = -sigma * out.wheel_lateral_N[i] / out.load_N[i];  // + towards the track centre (-sigma y)
       out.wear_number_N[i] = k.f11_N * xi * xi + k.f22_N * eta * eta;
     }
     out.ok = true;
