@@ -21,12 +21,8 @@
 //   I_wy dOmega/dt = T_applied - sum F_x r_p (wheelsets)
 //   Wheelset yaw also carries the gyroscopic moment -I_wy Omega dphi/dt of the spinning axle (Wickens 2003 §3.1,
 //   the I_y V / r0 term), phi the roll of the rigid equilibrium.
-// SUSPENSION (spring and damper in parallel between parent P (frame or carbody) and child C at d = x_C - x_P):
-//   Delta y   = y_C + D(s_P, s_C) - (y_P + psi_P d)        D: track offset at s_C in the frame at s_P
-//   Delta psi = psi_C + dTheta(s_P, s_C) - psi_P             (vehicle_dynamics_track.hpp: RelativeTrackPosition)
-//   rates:  Delta y' = y_C' + V (dTheta - c(s_P) d) - y_P' - psi_P' d,  Delta psi' = psi_C' + V (c(s_C) - c(s_P)) - psi_P'
-//   F_y = -(k_y Delta y + c_y Delta y') on C, -F_y on P;  M_z = -(k_psi Delta psi + c_psi Delta psi') on C,
-//   -(M_z + d F_y) on P. Constant curvature: D = c d^2 / 2, dTheta = c d: the curving model's relations.
+// SUSPENSION (vehicle_dynamics_suspension.hpp: spring and damper in parallel, lateral and yaw, between a parent
+//   and a child body on the curved track; constant curvature gives the curving model's relations).
 //   Primary per wheelset: k_y = 2 k_y,axlebox, k_psi = 2 k_x b_x^2 (dampers likewise). Secondary per bogie,
 //   shared equally between the carbodies resting on it (a Jacobs bogie carries half of each carbody end).
 // CONTACT at the wheelset's relative pose (y - y_irr, psi - y_irr') and velocity (forward V, lateral
@@ -43,6 +39,7 @@
 #include "conforma/geometry.hpp"
 #include "conforma/vehicle.hpp"
 #include "conforma/vehicle_dynamics_linear_contact.hpp"
+#include "conforma/vehicle_dynamics_suspension.hpp"
 #include "conforma/vehicle_dynamics_track.hpp"
 #include "conforma/wheel_contact_options.hpp"
 #include "conforma/wheelset_forces.hpp"
@@ -123,7 +120,7 @@ class VehicleDynamicsModel {
   struct Link {  // a suspension stage between a parent and a child body
     int parent = -1, child = 0;  // body indices (q / 2); parent -1: the track (carbody following it)
     double d = 0.0;              // x_child - x_parent, m
-    double ky = 0.0, kpsi = 0.0, cy = 0.0, cpsi = 0.0;
+    SuspensionStage stage;
   };
   VehicleParameters vehicle_;
   const WheelsetTrackGeometry* geometry_ = nullptr;

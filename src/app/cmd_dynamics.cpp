@@ -20,6 +20,7 @@
 #include "conforma/scenario.hpp"
 #include "conforma/vehicle_dynamics.hpp"
 #include "conforma/vehicle_dynamics_eigen.hpp"
+#include "conforma/vehicle_dynamics_output.hpp"
 #include "conforma/wear_simulation.hpp"
 #include "conforma/wheel_contact.hpp"
 
@@ -210,35 +211,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     if (!a->out.empty()) {
       std::ofstream f(a->out);
       if (!f) throw InputError("--out: cannot write '" + a->out + "'");
-      f << "t_s,s_m";
-      for (int j = 0; j < m.wheelset_count(); ++j) f << ",ws" << j << "_y_mm,ws" << j << "_psi_mrad";
-      for (int i = 0; i < m.bogie_count(); ++i) f << ",bogie" << i << "_y_mm,bogie" << i << "_psi_mrad";
-      for (int k = 0; k < m.carbody_count(); ++k) f << ",carbody" << k << "_y_mm,carbody" << k << "_psi_mrad";
-      for (int j = 0; j < m.wheelset_count(); ++j)
-        for (const char* w : {"L", "R"})
-          f << ",ws" << j << w << "_Y_N,ws" << j << w << "_Q_N,ws" << j << w << "_YQ,ws" << j << w << "_Tgamma_N";
-      f << "\n";
-      char buf[64];
-      for (const DynamicsSample& s : r.history) {
-        std::snprintf(buf, sizeof buf, "%.5f,%.4f", s.time_s, s.station_m);
-        f << buf;
-        for (int q = 0; q < m.position_count(); ++q) {
-          std::snprintf(buf, sizeof buf, ",%.6f", s.state[q]);
-          f << buf;
-        }
-        for (int j = 0; j < m.wheelset_count(); ++j)
-          for (int w = 0; w < 2; ++w) {
-            if (s.wheels.empty()) {
-              f << ",,,,";
-              continue;
-            }
-            const WheelDynamicsSample& x = s.wheels[j][w];
-            std::snprintf(buf, sizeof buf, ",%.2f,%.2f,%.5f,%.4f", x.lateral_force_N, x.vertical_load_N, x.y_over_q,
-                          x.wear_number_N);
-            f << buf;
-          }
-        f << "\n";
-      }
+      WriteDynamicsHistoryCsv(f, m, r);
     }
     std::printf("dynamics: %s, %s contact (%s), stepper %s, V %.1f km/h, %d bogies\n", to_string(r.status),
                 to_string(o.model.contact_kind), to_string(model), to_string(o.stepper), a->speed_kmh, vehicle.bogie_count);

@@ -70,10 +70,10 @@ VehicleDynamicsModel::VehicleDynamicsModel(const VehicleParameters& vehicle, con
       p.parent = b;
       p.child = j;
       p.d = x_[j] - x_[b];
-      p.ky = 2.0 * vehicle_.primary_lateral_stiffness_N_m;
-      p.cy = 2.0 * vehicle_.primary_lateral_damping_Ns_m;
-      p.kpsi = 2.0 * vehicle_.primary_longitudinal_stiffness_N_m * bx * bx;
-      p.cpsi = 2.0 * vehicle_.primary_longitudinal_damping_Ns_m * bx * bx;
+      p.stage.lateral_stiffness_N_m = 2.0 * vehicle_.primary_lateral_stiffness_N_m;
+      p.stage.lateral_damping_Ns_m = 2.0 * vehicle_.primary_lateral_damping_Ns_m;
+      p.stage.yaw_stiffness_Nm_rad = 2.0 * vehicle_.primary_longitudinal_stiffness_N_m * bx * bx;
+      p.stage.yaw_damping_Nms_rad = 2.0 * vehicle_.primary_longitudinal_damping_Ns_m * bx * bx;
       links_.push_back(p);
     }
   }
@@ -89,10 +89,10 @@ VehicleDynamicsModel::VehicleDynamicsModel(const VehicleParameters& vehicle, con
       s.parent = c;
       s.child = W_ + i;
       s.d = c < 0 ? 0.0 : x_[W_ + i] - (-(c - W_ - B_ + 0.5) * L);
-      s.ky = share * vehicle_.secondary_lateral_stiffness_N_m;
-      s.cy = share * vehicle_.secondary_lateral_damping_Ns_m;
-      s.kpsi = share * vehicle_.secondary_yaw_stiffness_Nm_rad;
-      s.cpsi = share * vehicle_.secondary_yaw_damping_Nms_rad;
+      s.stage.lateral_stiffness_N_m = share * vehicle_.secondary_lateral_stiffness_N_m;
+      s.stage.lateral_damping_Ns_m = share * vehicle_.secondary_lateral_damping_Ns_m;
+      s.stage.yaw_stiffness_Nm_rad = share * vehicle_.secondary_yaw_stiffness_Nm_rad;
+      s.stage.yaw_damping_Nms_rad = share * vehicle_.secondary_yaw_damping_Nms_rad;
       links_.push_back(s);
       if (c >= 0) mass_[c] += share * vehicle_.carbody_mass_per_bogie_kg;
     }
@@ -205,25 +205,24 @@ void VehicleDynamicsModel::Assemble(const Eigen::VectorXd& x, double t, const st
   const double s_ref = reference_station_m(t);
   const int nb = W_ + B_ + C_;
   Eigen::VectorXd force = Eigen::VectorXd::Zero(nb), moment = Eigen::VectorXd::Zero(nb);
-  auto y = [&](int b) { return b < 0 ? 0.0 : 1e-3 * x[2 * b]; };
-  auto psi = [&](int b) { return b < 0 ? 0.0 : 1e-3 * x[2 * b + 1]; };
-  auto yd = [&](int b) { return b < 0 ? 0.0 : 1e-3 * x[nq_ + 2 * b]; };
-  auto psid = [&](int b) { return b < 0 ? 0.0 : 1e-3 * x[nq_ + 2 * b + 1]; };
+  auto body = [&](int b) {
+    SuspensionBodyState s;  // the track (b < 0): zero
+    if (b >= 0) {
+      s.y_m = 1e-3 * x[2 * b];
+      s.psi_rad = 1e-3 * x[2 * b + 1];
+      s.y_rate_m_s = 1e-3 * x[nq_ + 2 * b];
+      s.psi_rate_rad_s = 1e-3 * x[nq_ + 2 * b + 1];
+    }
+    return s;
+  };
   for (const Link& l : links_) {
     const double xp = l.parent < 0 ? x_[l.child] : x_[l.parent];
-    const double sp = s_ref + xp, sc = sp + l.d;
-    const TrackRelativePosition rel = RelativeTrackPosition(track_, sp, sc);
-    const double cp = track_.curvature(sp), cc = track_.curvature(sc);
-    const double dy = y(l.child) + rel.lateral_offset_m - (y(l.parent) + psi(l.parent) * l.d);
-    const double dpsi = psi(l.child) + rel.heading_change_rad - psi(l.parent);
-    const double dyd = yd(l.child) + V * (rel.heading_change_rad - cp * l.d) - yd(l.parent) - psid(l.parent) * l.d;
-    const double dpsid = psid(l.child) + V * (cc - cp) - psid(l.parent);
-    const double Fy = -(l.ky * dy + l.cy * dyd), Mz = -(l.kpsi * dpsi + l.cpsi * dpsid);
-    force[l.child] += Fy;
-    moment[l.child] += Mz;
+    const SuspensionForces s = EvaluateSuspension(track_, V, s_ref + xp, l.d, l.stage, body(l.parent), body(l.child));
+    force[l.child] += s.child_lateral_N;
+    moment[l.child] += s.child_yaw_Nm;
     if (l.parent >= 0) {
-      force[l.parent] -= Fy;
-      moment[l.parent] -= Mz + l.d * Fy;
+      force[l.parent] += s.parent_lateral_N;
+      moment[l.parent] += s.parent_yaw_Nm;
     }
   }
   for (int j = 0; j < W_; ++j) {
