@@ -41,8 +41,8 @@ TEST(VehicleDynamicsCli, IrregularityFileDrivesALinearRun) {
   const std::string irr = ::testing::TempDir() + "dynamics_irregularity.csv";
   {
     std::ofstream f(irr);
-    f << "s_m,alignment_mm,cross_level_mm\n";
-    for (int i = 0; i <= 200; ++i) f << 0.25 * i << "," << 2.0 * std::sin(0.1 * i) << ",0\n";
+    f << "s_m,alignment_m,cross_level_rad\n";
+    for (int i = -100; i <= 200; ++i) f << 0.25 * i << "," << 2e-3 * std::sin(0.1 * i) << ",0\n";
   }
   const std::string csv = ::testing::TempDir() + "dynamics_irregularity_out.csv";
   const test::CliRun r = test::RunCli("dynamics --scenario " + kScenario + " --bogies 1 --linear --speed-kmh 36" +
@@ -63,15 +63,15 @@ TEST(VehicleDynamicsCli, IrregularityFileDrivesALinearRun) {
   }
   EXPECT_GT(max_y, 0.5);
   EXPECT_LT(max_y, 5.0);
-  // a file without equal spacing is an input error (exit 2)
+  // a file that does not cover the run is an input error (exit 2)
   {
     std::ofstream g(irr);
-    g << "s_m,alignment_mm\n0,0\n1,0\n3,0\n";
+    g << "s_m,alignment_m\n0,0\n1,0\n3,0\n";
   }
   const test::CliRun bad = test::RunCli("dynamics --scenario " + kScenario + " --bogies 1 --linear --duration 0.1" +
                                         " --irregularity " + irr);
   EXPECT_EQ(bad.exit_code, 2) << bad.out << bad.err;
-  EXPECT_NE(bad.err.find("equally spaced"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("the run needs"), std::string::npos) << bad.err;
 }
 
 TEST(VehicleDynamicsCli, EigenvaluesAndCriticalSpeed) {

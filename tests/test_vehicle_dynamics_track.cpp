@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "conforma/error.hpp"
 #include "conforma/vehicle_dynamics_track.hpp"
@@ -76,31 +77,28 @@ TEST(VehicleDynamicsTrack, RelativePositionMatchesTheClosedFormIntegrals) {
   EXPECT_EQ(z.lateral_offset_m, 0.0);
 }
 
-TEST(VehicleDynamicsTrack, SampledIrregularityInterpolatesValueAndSlope) {
-  // samples of a sine of wavelength 10 m at 0.25 m: Catmull-Rom is within ~(h k)^2 / ... of the sine and its
-  // slope, exact at the samples, continuous in slope, and 0 outside
-  SampledTrackFunction f;
-  f.s_begin_m = 5.0;
-  f.spacing_m = 0.25;
+TEST(VehicleDynamicsTrack, IrregularityOfTheTrackModuleBecomesTheTrackInput) {
+  // a sine alignment with its slope and a cross-level angle, sampled at 0.25 m
+  std::vector<double> s, y, dy, z, cl;
   const double A = 3e-3, k = 2.0 * M_PI / 10.0;
-  for (int i = 0; i <= 400; ++i) f.values.push_back(A * std::sin(k * i * f.spacing_m));
-  TrackInput t;
-  SetSampledIrregularities(t, f);
-  EXPECT_EQ(t.alignment(5.0 + 0.25 * 17), f.values[17]);
-  double max_value = 0.0, max_slope = 0.0;
-  for (double s = 6.0; s < 100.0; s += 0.0137) {
-    max_value = std::max(max_value, std::fabs(t.alignment(s) - A * std::sin(k * (s - 5.0))));
-    max_slope = std::max(max_slope, std::fabs(t.alignment_derivative(s) - A * k * std::cos(k * (s - 5.0))));
+  for (int i = 0; i <= 400; ++i) {
+    s.push_back(5.0 + 0.25 * i);
+    y.push_back(A * std::sin(k * 0.25 * i));
+    dy.push_back(A * k * std::cos(k * 0.25 * i));
+    z.push_back(0.0);
+    cl.push_back(1e-3 * std::cos(k * 0.25 * i));
   }
-  EXPECT_LT(max_value, 1e-3 * A);
-  EXPECT_LT(max_slope, 1e-2 * A * k);
-  const double knot = 5.0 + 0.25 * 40;
-  EXPECT_NEAR(t.alignment_derivative(knot - 1e-9), t.alignment_derivative(knot + 1e-9), 1e-9);
-  EXPECT_EQ(t.alignment(4.0), 0.0);
-  EXPECT_EQ(t.alignment(200.0), 0.0);
-  SampledTrackFunction bad;
-  bad.values = {1.0};
-  EXPECT_THROW(SetSampledIrregularities(t, bad), InputError);
+  const TrackIrregularity irr("sine", s, y, dy, z, cl);
+  TrackInput t = MakeCurveTrack(CurveTrackSpec{});
+  SetTrackIrregularity(t, irr, 1.5);
+  for (const double x : {5.0, 17.3, 60.125, 104.9}) {
+    EXPECT_EQ(t.alignment(x), irr.At(x).alignment_m);
+    EXPECT_EQ(t.alignment_derivative(x), irr.At(x).alignment_slope);
+    EXPECT_EQ(t.cross_level(x), -1.5 * irr.At(x).cross_level_rad);  // + raises the right rail
+  }
+  EXPECT_NEAR(t.alignment(17.3), A * std::sin(k * 12.3), 1e-3 * A);  // Hermite between the samples
+  EXPECT_EQ(t.curvature(0.0), 0.0);                                    // the curve is kept (tangent here)
+  EXPECT_THROW(t.alignment(200.0), InputError);                       // beyond the samples: never extrapolated
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 // five states only, so a Jacobian costs 5 wheelset contact evaluations per wheelset plus one for d f / d t,
 // about six right-hand sides. Its step is set by accuracy, not by the creep time constant. The explicit
 // controlled dopri5 is the alternative (Stepper::Dopri5): its step is bounded by stability, ~3 m V / (2 f22).
-// Measured step counts of both: docs/physics-reference.md §15.5.
+// Measured step counts of both: docs/physics-reference.md §16.5.
 //
 // FAILURES are never silent: a contact failure during a step attempt rejects the step and halves it (the trial
 // state may lie off the trajectory); when the step falls below min_step_s, or the step count exceeds max_steps,

@@ -1,5 +1,5 @@
 #pragma once
-// Linear stability of the time-domain vehicle model on tangent track (docs/physics-reference.md §15.4): the state
+// Linear stability of the time-domain vehicle model on tangent track (docs/physics-reference.md §16.4): the state
 // matrix A of the model with linear contact (vehicle_dynamics_linear_contact.hpp) at the centred state,
 // dx/dt = A x, its eigenvalues s = sigma +/- i omega, the modes' frequencies omega / (2 pi) and damping ratios
 // -sigma / |s|, and the critical speed: the lowest speed at which a mode's real part becomes positive (hunting),

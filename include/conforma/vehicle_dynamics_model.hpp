@@ -1,5 +1,5 @@
 #pragma once
-// Equations of motion of the time-domain lateral vehicle model (docs/physics-reference.md §15): the bogie vehicle of
+// Equations of motion of the time-domain lateral vehicle model (docs/physics-reference.md §16): the bogie vehicle of
 // vehicle.hpp (two-axle bogies, carbodies as chords between consecutive bogies) running at constant speed V over a
 // TrackInput (vehicle_dynamics_track.hpp).
 //

@@ -1,5 +1,5 @@
 #pragma once
-// A suspension stage of the time-domain vehicle model (docs/physics-reference.md §15.2): spring and damper in
+// A suspension stage of the time-domain vehicle model (docs/physics-reference.md §16.2): spring and damper in
 // parallel, lateral and yaw, between a parent body P (bogie frame or carbody) and a child C (wheelset or bogie
 // frame) d = x_C - x_P ahead of it, each body described relative to the design centre line at its own station:
 //   Delta y   = y_C + D - (y_P + psi_P d),           Delta psi = psi_C + dTheta - psi_P

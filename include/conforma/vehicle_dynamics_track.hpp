@@ -11,7 +11,10 @@
 // Each body of the vehicle is described relative to the design centre line at its own s (local track frame, as
 // in the quasi-static curving model); the contact sees the actual (irregular) rails.
 #include <functional>
+#include <memory>
 #include <vector>
+
+#include "conforma/track_irregularity.hpp"
 
 namespace conforma {
 
@@ -48,20 +51,12 @@ struct CurveTrackSpec {
 };
 TrackInput MakeCurveTrack(const CurveTrackSpec& spec);
 
-// Irregularities sampled at equal spacing (e.g. a PSD synthesis), from station s_begin_m: value and slope by
-// Catmull-Rom cubic Hermite interpolation (continuous slope); 0 outside the samples. InputError for a spacing
-// <= 0, fewer than 2 samples or a non-finite value.
-struct SampledTrackFunction {
-  double s_begin_m = 0.0;       // station of the first sample, m
-  double spacing_m = 0.25;      // > 0
-  std::vector<double> values;   // m
-  double value(double s) const;
-  double slope(double s) const;  // d value / ds
-  void validate() const;
-};
-// Sets track.alignment_m and alignment_slope from the samples (cross_level: track.cross_level_m, when given).
-void SetSampledIrregularities(TrackInput& track, const SampledTrackFunction& alignment,
-                              const SampledTrackFunction* cross_level = nullptr);
+// Irregularities of a TrackIrregularity (track_irregularity.hpp: PSD synthesis or measured file) as the track
+// input's alignment_m, alignment_slope and cross_level_m. Its cross-level angle (+ raises the LEFT rail) becomes the
+// height -cross_level_rad * cant_base_m (+ raises the right rail, as the cant). The vertical level is not used (no
+// vertical degrees of freedom). The functions keep a copy of the samples; outside the samples' range they throw
+// InputError naming s and the range (TrackIrregularity::At): the irregularity must cover the run.
+void SetTrackIrregularity(TrackInput& track, const TrackIrregularity& irregularity, double cant_base_m);
 
 // Relative position of the design centre line between two stations s_from and s_to (small angles), in the
 // local track frame at s_from: the heading change dTheta = int c ds and the lateral offset

@@ -9,7 +9,6 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <vector>
 
 #include "cli_checks.hpp"
@@ -52,60 +51,6 @@ LinearWheelsetContact ProfileLinearContact(const WheelsetTrackGeometry& g, const
   return k;
 }
 
-// Irregularity file: CSV with a header naming s_m and alignment_mm (and optionally cross_level_mm), rows at equal
-// spacing of s (the Catmull-Rom interpolation of SampledTrackFunction).
-void LoadIrregularities(const std::string& path, TrackInput& track) {
-  std::ifstream f(path);
-  if (!f) throw InputError("--irregularity: cannot read '" + path + "'");
-  std::string line;
-  std::getline(f, line);
-  std::vector<std::string> names;
-  {
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) names.push_back(cell.substr(0, cell.find_last_not_of(" \r") + 1));
-  }
-  auto column = [&](const std::string& name) {
-    for (size_t i = 0; i < names.size(); ++i)
-      if (names[i] == name) return static_cast<int>(i);
-    return -1;
-  };
-  const int is = column("s_m"), ia = column("alignment_mm"), ic = column("cross_level_mm");
-  if (is < 0 || ia < 0) throw InputError("--irregularity '" + path + "': the header needs the columns s_m and alignment_mm");
-  std::vector<double> s, a, c;
-  int row = 1;
-  while (std::getline(f, line)) {
-    ++row;
-    if (line.empty()) continue;
-    std::vector<double> v;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) {
-      try {
-        v.push_back(std::stod(cell));
-      } catch (const std::exception&) {
-        throw InputError("--irregularity '" + path + "' line " + std::to_string(row) + ": not a number: '" + cell + "'");
-      }
-    }
-    if (static_cast<int>(v.size()) <= std::max({is, ia, ic}))
-      throw InputError("--irregularity '" + path + "' line " + std::to_string(row) + ": too few columns");
-    s.push_back(v[is]);
-    a.push_back(1e-3 * v[ia]);
-    if (ic >= 0) c.push_back(1e-3 * v[ic]);
-  }
-  if (s.size() < 2) throw InputError("--irregularity '" + path + "': at least 2 rows are needed");
-  const double h = (s.back() - s.front()) / static_cast<double>(s.size() - 1);
-  for (size_t i = 1; i < s.size(); ++i)
-    if (std::fabs(s[i] - s[i - 1] - h) > 1e-6 * std::max(1.0, std::fabs(h)))
-      throw InputError("--irregularity '" + path + "' line " + std::to_string(i + 2) + ": s_m is not equally spaced");
-  SampledTrackFunction alignment, cross;
-  alignment.s_begin_m = cross.s_begin_m = s.front();
-  alignment.spacing_m = cross.spacing_m = h;
-  alignment.values = a;
-  cross.values = c;
-  SetSampledIrregularities(track, alignment, ic >= 0 ? &cross : nullptr);
-}
-
 }  // namespace
 
 void RegisterDynamicsCommand(CLI::App& app) {
@@ -114,7 +59,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     std::string scenario, model, out, stepper = "rosenbrock4", irregularity;
     int bogies = 0, jacobian_reuse = 1;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
-           curve = 100.0, cant_mm = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
+           curve = 100.0, cant_mm = 0.0, start = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
     bool linear = false, eig = false;
     double v_max_kmh = 400.0;
   };
@@ -133,7 +78,10 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--cant-mm", a->cant_mm, "cant of the arc, mm");
   sub->add_option("--friction", a->friction, "friction coefficient");
   sub->add_option("--irregularity", a->irregularity,
-                  "CSV of track irregularities at equal spacing: columns s_m, alignment_mm [, cross_level_mm]");
+                  "track irregularity CSV (track_irregularity.hpp: s_m, alignment_m[, alignment_slope, vertical_level_m, "
+                  "cross_level_rad]; `conforma track irregularity` writes one); it must cover the run");
+  sub->add_option("--start-m", a->start, "station s of the leading bogie centre at t = 0, m (the curve begins at s = 0 "
+                                         "with its tangent; an irregularity file must cover the whole vehicle)");
   sub->add_option("--offset-mm", a->offset_mm, "initial lateral offset of every wheelset, mm (the disturbance)");
   sub->add_option("--stepper", a->stepper, "rosenbrock4 (implicit, default) or dopri5 (explicit)");
   sub->add_option("--jacobian-reuse", a->jacobian_reuse, "rosenbrock4: steps a Jacobian serves (1: every step)");
@@ -156,6 +104,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     const QuasiStaticOptions qo = ScenarioQuasiStaticOptions(sc, model);
     DynamicsOptions o;
     o.model.speed_m_s = a->speed_kmh / 3.6;
+    o.model.start_position_m = a->start;
     o.model.contact = qo.contact;
     o.model.friction_coefficient = a->friction;
     o.model.gravity_m_s2 = qo.gravity_m_s2;
@@ -193,7 +142,18 @@ void RegisterDynamicsCommand(CLI::App& app) {
     spec.curve_length_m = a->curve;
     spec.cant_m = 1e-3 * a->cant_mm;
     TrackInput track = MakeCurveTrack(spec);
-    if (!a->irregularity.empty()) LoadIrregularities(a->irregularity, track);
+    if (!a->irregularity.empty()) {
+      const TrackIrregularity irr = ReadTrackIrregularityCsv(a->irregularity);
+      // every wheelset's station over the run, with the integrator's look-ahead (1 m either side)
+      const double front = 0.5 * vehicle.wheelbase_m + 1.0;
+      const double rear = -(vehicle.bogie_count - 1) * vehicle.bogie_centre_distance_m - 0.5 * vehicle.wheelbase_m - 1.0;
+      const double s_end = a->start + o.model.speed_m_s * a->duration + front;
+      if (irr.s_begin() > a->start + rear || irr.s_end() < s_end)
+        throw InputError("--irregularity '" + a->irregularity + "': covers s = " + std::to_string(irr.s_begin()) +
+                         " .. " + std::to_string(irr.s_end()) + " m, the run needs " + std::to_string(a->start + rear) + " .. " +
+                         std::to_string(s_end) + " m");
+      SetTrackIrregularity(track, irr, o.model.cant_base_m);
+    }
     const VehicleDynamicsModel m(vehicle, &g, track, o.model, &SolveWheelContact);
     o.duration_s = a->duration;
     o.output_interval_s = a->interval;

@@ -60,47 +60,12 @@ TrackInput MakeCurveTrack(const CurveTrackSpec& spec) {
   return t;
 }
 
-void SampledTrackFunction::validate() const {
-  require_finite(s_begin_m, "irregularity s_begin_m");
-  require_positive(spacing_m, "irregularity spacing_m");
-  if (values.size() < 2) throw InputError("irregularity samples: at least 2 values are needed");
-  for (double v : values) require_finite(v, "irregularity sample");
-}
-
-namespace {
-
-// Catmull-Rom on uniform samples: value (derivative = false) or d/ds at s; 0 outside [first, last sample].
-double CatmullRom(const SampledTrackFunction& f, double s, bool derivative) {
-  const double u = (s - f.s_begin_m) / f.spacing_m;
-  const int n = static_cast<int>(f.values.size());
-  if (!(u >= 0.0) || u > n - 1) return 0.0;
-  const int i = std::min(static_cast<int>(std::floor(u)), n - 2);
-  const double t = u - i;
-  auto at = [&](int k) { return f.values[std::clamp(k, 0, n - 1)]; };
-  const double p0 = at(i), p1 = at(i + 1);
-  const double m0 = 0.5 * (at(i + 1) - at(i - 1)), m1 = 0.5 * (at(i + 2) - at(i));  // per sample
-  const double t2 = t * t, t3 = t2 * t;
-  if (!derivative)
-    return (2 * t3 - 3 * t2 + 1) * p0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * p1 + (t3 - t2) * m1;
-  return ((6 * t2 - 6 * t) * p0 + (3 * t2 - 4 * t + 1) * m0 + (-6 * t2 + 6 * t) * p1 + (3 * t2 - 2 * t) * m1) /
-         f.spacing_m;
-}
-
-}  // namespace
-
-double SampledTrackFunction::value(double s) const { return CatmullRom(*this, s, false); }
-double SampledTrackFunction::slope(double s) const { return CatmullRom(*this, s, true); }
-
-void SetSampledIrregularities(TrackInput& track, const SampledTrackFunction& alignment,
-                              const SampledTrackFunction* cross_level) {
-  alignment.validate();
-  track.alignment_m = [alignment](double s) { return alignment.value(s); };
-  track.alignment_slope = [alignment](double s) { return alignment.slope(s); };
-  if (cross_level) {
-    cross_level->validate();
-    const SampledTrackFunction c = *cross_level;
-    track.cross_level_m = [c](double s) { return c.value(s); };
-  }
+void SetTrackIrregularity(TrackInput& track, const TrackIrregularity& irregularity, double cant_base_m) {
+  require_positive(cant_base_m, "cant_base_m");
+  const auto irr = std::make_shared<const TrackIrregularity>(irregularity);
+  track.alignment_m = [irr](double s) { return irr->At(s).alignment_m; };
+  track.alignment_slope = [irr](double s) { return irr->At(s).alignment_slope; };
+  track.cross_level_m = [irr, cant_base_m](double s) { return -irr->At(s).cross_level_rad * cant_base_m; };
 }
 
 TrackRelativePosition RelativeTrackPosition(const TrackInput& track, double s_from, double s_to) {
