@@ -36,7 +36,7 @@ struct VehicleParameters {
   double contact_half_distance_m = 0.75;        // b0: half the lateral distance of the nominal contact points
   // ---- Time-domain model only (vehicle_dynamics_model.hpp); the quasi-static curving model ignores these. ----
   // Typical values of a passenger bogie vehicle (orders of magnitude as in Iwnicki's Manchester benchmark
-  // vehicle and Wickens 2003 ch. 5; not a particular vehicle's data).
+  // vehicle and Wickens 2003, recalled; not a particular vehicle's data).
   double wheelset_yaw_inertia_kgm2 = 700.0;       // I_wz about the vertical axis, > 0
   double wheelset_spin_inertia_kgm2 = 110.0;      // I_wy about the axle, > 0 (axle-speed degree of freedom)
   double bogie_frame_yaw_inertia_kgm2 = 2000.0;   // I_bz, > 0

@@ -1,6 +1,6 @@
 #pragma once
 // Linear wheel-rail contact of the time-domain model (Wickens' linear wheelset: A. H. Wickens, "Fundamentals of
-// Rail Vehicle Dynamics", Swets & Zeitlinger 2003, ch. 2-3; Garg & Dukkipati 1984 ch. 5; docs/physics-reference.md
+// Rail Vehicle Dynamics", Swets & Zeitlinger 2003; Garg & Dukkipati 1984; chapters and equation numbers not checked, docs/physics-reference.md
 // §16.3): Kalker's linear creep forces with constant coefficients, the equivalent conicity for the rolling-radius
 // difference, and the lateral gravitational stiffness from the contact-angle parameter. Per wheelset, in the
 // local track frame, with y_r, psi_r, dy_r/dt relative to the actual rails and Omega = V / r0 (1 + w):

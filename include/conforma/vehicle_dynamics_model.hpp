@@ -14,13 +14,14 @@
 //   quasi-static force -m_c a_nc (as in the curving model). Roll, bounce and pitch are not modelled: the
 //   wheelset's vertical position and roll follow the rigid two-rail equilibrium (as in the curving model) and the
 //   wheel loads are quasi-static, Q = Q0 -/+ m a_nc h / (2 b0) (vehicle.hpp).
-// EQUATIONS (rotating local track frames; Garg & Dukkipati 1984 ch. 8 (curving dynamics), Iwnicki (ed.) 2006
-//   "Handbook of Railway Vehicle Dynamics" ch. 7 (Evans & Iwnicki), Wickens 2003 §§3.1-3.3):
+// EQUATIONS (rotating local track frames; the standard small-angle forms of Garg & Dukkipati 1984 (curving
+//   dynamics), Iwnicki (ed.) 2006 "Handbook of Railway Vehicle Dynamics" and Wickens 2003, whose equation numbers
+//   are not checked here: docs/physics-reference.md §11 item 13):
 //   m (d2y/dt2 + a_nc(s)) = sum F_y          a_nc = V^2 c(s) - g (cant(s) + cross_level(s)) / cant_base
 //   I_z (d2psi/dt2 + V^2 dc/ds) = sum M_z    (d2Theta/dt2 = V^2 dc/ds: the local frame's angular acceleration)
 //   I_wy dOmega/dt = T_applied - sum F_x r_p (wheelsets)
-//   Wheelset yaw also carries the gyroscopic moment -I_wy Omega dphi/dt of the spinning axle (Wickens 2003 §3.1,
-//   the I_y V / r0 term), phi the roll of the rigid equilibrium.
+//   Wheelset yaw also carries the gyroscopic moment -I_wy Omega dphi/dt of the spinning axle (Wickens 2003:
+//   the I_y V / r0 term of the wheelset's yaw equation), phi the roll of the rigid equilibrium.
 // SUSPENSION (vehicle_dynamics_suspension.hpp: spring and damper in parallel, lateral and yaw, between a parent
 //   and a child body on the curved track; constant curvature gives the curving model's relations).
 //   Primary per wheelset: k_y = 2 k_y,axlebox, k_psi = 2 k_x b_x^2 (dampers likewise). Secondary per bogie,
