@@ -68,6 +68,7 @@
 #include "conforma/kinematics.hpp"
 #include "conforma/vehicle.hpp"
 #include "conforma/wheel_contact.hpp"
+#include "conforma/wheelset_forces.hpp"
 
 namespace conforma {
 
@@ -172,9 +173,9 @@ struct QuasiStaticResult {
   int tangent_rolling_failures = 0;
 };
 
-// The contact evaluation used in the loop (SolveWheelContact or a substitute with the same contract).
-using WheelContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
-                                                              const WheelsetVelocity&, const WheelContactOptions&)>;
+// WheelContactFunction (the contact evaluation used in the loop: SolveWheelContact or a substitute with the same
+// contract) is declared in wheelset_forces.hpp, with the force summation both this model and the time-domain model
+// use.
 
 // Throws InputError for bad vehicle, class or options; convergence and contact failures are statuses.
 QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, const WheelsetTrackGeometry& geometry,

@@ -34,6 +34,21 @@ struct VehicleParameters {
   // lateral load transfer Delta Q = m a_nc h / (2 b0) between the wheels of a wheelset; 0 disables it.
   double load_transfer_height_m = 0.0;
   double contact_half_distance_m = 0.75;        // b0: half the lateral distance of the nominal contact points
+  // ---- Time-domain model only (vehicle_dynamics_model.hpp); the quasi-static curving model ignores these. ----
+  // Typical values of a passenger bogie vehicle (orders of magnitude as in Iwnicki's Manchester benchmark
+  // vehicle and Wickens 2003, recalled; not a particular vehicle's data).
+  double wheelset_yaw_inertia_kgm2 = 700.0;       // I_wz about the vertical axis, > 0
+  double wheelset_spin_inertia_kgm2 = 110.0;      // I_wy about the axle, > 0 (axle-speed degree of freedom)
+  double bogie_frame_yaw_inertia_kgm2 = 2000.0;   // I_bz, > 0
+  double carbody_yaw_gyration_radius_m = 6.0;     // carbody I_cz = m_carbody r^2 (a 22 m body: L / sqrt(12)), > 0
+  // Primary dampers, PER AXLEBOX, in parallel with k_x and k_y (rubber-spring damping; 0: none).
+  double primary_longitudinal_damping_Ns_m = 0.0; // c_x, N s/m, >= 0 (yaw damping 2 c_x b_x^2 per wheelset)
+  double primary_lateral_damping_Ns_m = 0.0;      // c_y, N s/m, >= 0
+  // Secondary dampers, PER BOGIE, bogie frame to carbody.
+  double secondary_lateral_damping_Ns_m = 3.0e4;  // N s/m, >= 0 (lateral dampers)
+  // Yaw dampers of the secondary stage, N m s/rad, >= 0: 0 none; a high-speed bogie has two of ~2e5 N s/m at
+  // +/- 1.3 m, 2 c b^2 ~ 7e5 N m s/rad
+  double secondary_yaw_damping_Nms_rad = 0.0;
 
   void validate() const;  // throws InputError naming the field
   int wheelset_count() const { return 2 * bogie_count; }

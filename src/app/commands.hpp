@@ -17,6 +17,7 @@ void RegisterStressCommand(CLI::App& app);     // conforma stress: numerical sta
 void RegisterCurvingCommand(CLI::App& app);    // conforma curving: curving kinematics and wheel forces per class
 void RegisterValidateCommand(CLI::App& app);   // conforma validate: wear simulation against measured wheels
 void RegisterTrackCommand(CLI::App& app);      // conforma track: track irregularities from a PSD
+void RegisterDynamicsCommand(CLI::App& app);   // conforma dynamics: time-domain lateral vehicle dynamics, eigenvalues
 
 // Run-time files of the commands (conforma/data_paths.hpp), resolved when a command runs, not when it is declared
 // (src/app/run_time_paths.cpp):

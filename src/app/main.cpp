@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterCurvingCommand(app);
   conforma::cli::RegisterValidateCommand(app);
   conforma::cli::RegisterTrackCommand(app);
+  conforma::cli::RegisterDynamicsCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

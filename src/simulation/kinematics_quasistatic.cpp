@@ -64,49 +64,20 @@ struct BogieContext {
   int failed_contact_evaluations = 0;  // of those, wheel contacts without a solution (status not Ok)
 };
 
-struct WheelsetForces {
-  bool ok = false;
-  WheelsetPose pose;
-  WheelsetVelocity velocity;
-  std::array<WheelContactReport, 2> report;
-  double lateral_N = 0.0, yaw_moment_Nm = 0.0, axle_torque_Nm = 0.0;
-};
+using WheelsetForces = WheelsetContactForces;
 
-// Contact forces on one wheelset at (y, psi, w) in its local track frame. Sum of the patch forces of both wheels
-// in the track frame: Y = sigma F_eta (side frame -> track), moment about the wheelset centre
-// M_z = x_p F_y - (y_p - y) F_x + sigma m_z n_z (a moment about z is mirrored in the right side frame).
+// Contact forces on one wheelset at (y, psi, w) in its local track frame (wheelset_forces.hpp): forward V, lateral
+// velocity 0, yaw rate V c, axle angular velocity V / r0 (1 + 1e-3 w).
 WheelsetForces EvaluateWheelset(BogieContext& ctx, double y_m, double psi_rad, double w) {
-  WheelsetForces f;
-  EquilibriumOptions eo;  // the same touching rule as the contact's load control (elastic flange or not)
-  eo.max_touching_contact_angle_rad = ctx.contact_options.max_touching_contact_angle_rad;
-  const EquilibriumResult eq = ctx.geometry->SolveRigidEquilibrium(y_m, psi_rad, WheelsetPose{}, eo);
-  if (eq.status != EquilibriumStatus::Converged) return f;
-  f.pose = eq.pose;
-  f.velocity.forward_speed_m_s = ctx.V;
-  f.velocity.lateral_velocity_m_s = 0.0;
-  f.velocity.yaw_rate_rad_s = ctx.V * ctx.c;
-  f.velocity.axle_angular_velocity_rad_s = ctx.V / ctx.r0 * (1.0 + 1e-3 * w);
-  for (Side side : {Side::Left, Side::Right}) {
-    const int i = side_index(side);
-    const double sigma = side_sign(side);
-    WheelContactOptions o = ctx.contact_options;
-    o.vertical_load_N = ctx.Q[i];
-    f.report[i] = (*ctx.contact)(*ctx.geometry, side, f.pose, f.velocity, o);
-    ++ctx.contact_evaluations;
-    if (f.report[i].status != WheelContactStatus::Ok) {
-      ++ctx.failed_contact_evaluations;
-      return f;
-    }
-    for (const PatchReport& p : f.report[i].patches) {
-      const double Fy = sigma * p.lateral_force_N;
-      const double Fx = p.fx_N;
-      const double yp = sigma * (ctx.geometry->rail_origin_eta_m(side) + p.y_contact_rail_m);
-      f.lateral_N += Fy;
-      f.yaw_moment_Nm += p.lead_m * Fy - (yp - y_m) * Fx + sigma * p.mz_Nm * std::cos(p.contact_angle_rad);
-      f.axle_torque_Nm += Fx * p.rolling_radius_m;
-    }
-  }
-  f.ok = true;
+  WheelsetVelocity velocity;
+  velocity.forward_speed_m_s = ctx.V;
+  velocity.lateral_velocity_m_s = 0.0;
+  velocity.yaw_rate_rad_s = ctx.V * ctx.c;
+  velocity.axle_angular_velocity_rad_s = ctx.V / ctx.r0 * (1.0 + 1e-3 * w);
+  WheelsetForces f =
+      EvaluateWheelsetContactForces(*ctx.geometry, *ctx.contact, ctx.contact_options, ctx.Q, y_m, psi_rad, velocity);
+  ctx.contact_evaluations += f.contact_evaluations;
+  ctx.failed_contact_evaluations += f.failed_contact_evaluations;
   return f;
 }
 

@@ -21,6 +21,14 @@ void VehicleParameters::validate() const {
   require_non_negative(secondary_lateral_stiffness_N_m, "secondary_lateral_stiffness_N_m");
   require_non_negative(load_transfer_height_m, "load_transfer_height_m");
   require_positive(contact_half_distance_m, "contact_half_distance_m");
+  require_positive(wheelset_yaw_inertia_kgm2, "wheelset_yaw_inertia_kgm2");
+  require_positive(wheelset_spin_inertia_kgm2, "wheelset_spin_inertia_kgm2");
+  require_positive(bogie_frame_yaw_inertia_kgm2, "bogie_frame_yaw_inertia_kgm2");
+  require_positive(carbody_yaw_gyration_radius_m, "carbody_yaw_gyration_radius_m");
+  require_non_negative(primary_longitudinal_damping_Ns_m, "primary_longitudinal_damping_Ns_m");
+  require_non_negative(primary_lateral_damping_Ns_m, "primary_lateral_damping_Ns_m");
+  require_non_negative(secondary_lateral_damping_Ns_m, "secondary_lateral_damping_Ns_m");
+  require_non_negative(secondary_yaw_damping_Nms_rad, "secondary_yaw_damping_Nms_rad");
 }
 
 VehicleParameters MinuettoVehicle() {
