@@ -1,0 +1,137 @@
+#pragma once
+// Contact look-up table (LUT) of one wheel-rail pair (after paper 004, Santamaria et al. 2009: tabulated elastic
+// multi-patch contact for dynamics; docs/architecture.md "Contact look-up table", interpolation rule in
+// docs/physics-reference.md §13).
+//
+// TABLE: per wheel side, a grid over the wheelset lateral shift y, yaw psi and the wheel's vertical load Q. At each
+// node the wheelset's vertical position and roll are those of the rigid two-rail equilibrium at (y, psi), exactly
+// as the quasi-static curving evaluates a wheelset (kinematics_quasistatic.hpp), and SolveWheelContact solves the
+// wheel in load control with the PRESSURE balance (the normal solution is then independent of the velocity). Each
+// node keeps every patch of that normal solution, ordered along the rail (gauge side first), and the affine map
+// from the wheelset velocities to the patch's rigid creepages (the pipeline's own creepages at the node, see
+// LutPatch::creepage_map).
+//
+// EVALUATION (EvaluateContactLut, MakeLutContactFunction): inside a grid cell whose eight corner nodes have one
+// patch topology (same patch count, same model per patch, each patch within match_distance_m along the rail of
+// its partner) every patch field is interpolated tri-linearly, the load-dependent fields normalised by their
+// Hertzian power of Q (forces / Q, lengths / Q^(1/3), areas, approach / Q^(2/3), pressure / Q^(1/3)). Where the
+// topology changes inside the cell, the topology of the nearest corner node is taken and only the corners with
+// that topology are interpolated (weights renormalised): a tread patch and a flange patch are never averaged and a
+// contact jump is placed within one grid step. Creep forces are solved at evaluation time: rigid creepages of the
+// interpolated map at the actual velocity, then FASTSIM on the stored ellipse (a, b: Hertz, or the SDEC of the KP
+// models) with the options' friction, material and FASTSIM settings (SolveFastsimHertz, the hertz model's
+// tangential solver). With the TOTAL load balance (the default) the effective load Q_eff of the pressure balance
+// is found such that Q_eff + (vertical creep forces at Q_eff) = Q (fixed point): the same push-down the direct
+// solver's total balance finds, since the normal solution depends only on the push.
+// The pose's vertical position and roll are NOT used (the table's are those of the rigid equilibrium at (y, psi));
+// a query outside the table is an InputError naming the axis and value (never extrapolated).
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "conforma/geometry.hpp"
+#include "conforma/wheel_contact.hpp"
+
+namespace conforma {
+
+// The grid axes (each strictly increasing, at least 2 values, finite). Units: m, rad, N.
+struct ContactLutGrid {
+  std::vector<double> lateral_m;  // wheelset lateral shift y, m (+ towards the left rail)
+  std::vector<double> yaw_rad;    // wheelset yaw psi, rad
+  std::vector<double> load_N;     // vertical wheel load Q, N, > 0
+  void validate() const;          // InputError naming the axis
+  size_t nodes() const { return lateral_m.size() * yaw_rad.size() * load_N.size(); }
+  // node index of (i_y, i_psi, i_Q): load fastest
+  size_t index(size_t iy, size_t ipsi, size_t iq) const { return (iy * yaw_rad.size() + ipsi) * load_N.size() + iq; }
+};
+
+// One patch of a node's normal solution (PatchReport fields; lengths m, forces N, pressures Pa, angles rad).
+struct LutPatch {
+  int model = 0;                        // ContactModel that solved the patch (as int)
+  double y_contact_rail_m = 0.0, z_contact_rail_m = 0.0;  // reference point in the mounted rail profile
+  double rail_s_m = 0.0;                // arc length of the reference point on the mounted rail (patch matching)
+  double y_contact_wheel_m = 0.0;       // wheel-profile y at the reference point
+  double lead_m = 0.0;                  // longitudinal position of the reference point
+  double contact_angle_rad = 0.0;       // + towards the gauge side
+  double rolling_radius_m = 0.0;
+  double fn_N = 0.0;                    // normal force along n0
+  double pressure_vertical_N = 0.0, pressure_lateral_N = 0.0;  // pressure resultant, side frame z / eta
+  double pmax_Pa = 0.0, area_m2 = 0.0, approach_m = 0.0;
+  double width_m = 0.0, length_m = 0.0;
+  double a_m = 0.0, b_m = 0.0;          // Hertz semi-axes or the SDEC (KP models): FASTSIM's ellipse
+  double alpha_c_deg = 0.0, auto_alpha_c_deg = 0.0;
+  // Rigid creepages (xi, eta, phi [1/m]) = creepage_map * (1, v_lat / V, yaw_rate / V, axle_rate / V): the
+  // creepages of creepage.hpp are affine in these (v = V x + omega x r, omega linear in the rates); row-major 3 x 4,
+  // taken from the pipeline's own creepages at four velocities.
+  std::array<double, 12> creepage_map{};
+};
+
+// Node status: the WheelContactStatus of the direct solve (as int), or kLutNoEquilibrium.
+constexpr int kLutNoEquilibrium = 3;
+
+struct LutNode {
+  int status = 0;                 // WheelContactStatus (0 ok, 1 no_contact, 2 not_converged) or kLutNoEquilibrium
+  double vertical_m = 0.0;        // pose of the solution (pushed down by load control), m
+  double roll_rad = 0.0;          // roll of the rigid equilibrium, rad
+  std::vector<LutPatch> patches;  // along the rail, gauge side first
+};
+
+// What the table was made from (attributes of the file).
+struct ContactLutHeader {
+  std::string wheel_profile, rail_profile;  // names or file names
+  std::string track;                        // free text: inclination, gauge, radius
+  std::string conforma_version, conforma_commit;
+  ContactModel model = ContactModel::Hertz;
+  Material material;
+  double max_touching_contact_angle_rad = 1e300;  // elastic flange (WheelContactOptions)
+  int kp_strips = 31;
+  double candidate_strip_width_m = 0.1e-3, patch_combine_distance_m = 4e-3;
+  bool conformal_variable_penetration = true;
+  double match_distance_m = 3e-3;  // patches farther apart along the rail are different patches (topology)
+  // Geometry fingerprint, checked at evaluation against the geometry passed: rail origin eta per side, nominal radius
+  std::array<double, 2> rail_origin_eta_m{}, nominal_radius_m{};
+  double generation_s = 0.0;  // wall time of BuildContactLut, s
+  int threads = 0;            // OpenMP threads used
+};
+
+struct ContactLut {
+  ContactLutHeader header;
+  ContactLutGrid grid;
+  std::array<std::vector<LutNode>, 2> nodes;  // [Left, Right], grid.index order
+};
+
+struct ContactLutBuildOptions {
+  ContactLutGrid grid;
+  // model, material, elastic flange, KP strips, candidate options of every node (the load, load balance,
+  // creepages and tangential switches are set by the build)
+  WheelContactOptions contact;
+  std::string wheel_profile, rail_profile, track;  // for the header
+  double match_distance_m = 3e-3;                  // ContactLutHeader::match_distance_m, > 0
+  int threads = 0;                                 // OpenMP threads, 0: the OpenMP default
+  void validate() const;
+};
+
+// Every node solved independently (OpenMP over nodes, written into its slot): the same table for any thread
+// count. InputError for bad options.
+ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactLutBuildOptions& options);
+
+// The location of a query in the table (which cell, whether its corners share one topology).
+struct LutCellInfo {
+  bool single_topology = false;  // the 8 corners all Ok with one topology
+  size_t iy = 0, ipsi = 0, iq = 0;  // lower corner of the cell
+};
+
+// One wheel from the table (contract of SolveWheelContact; see the header comment). InputError: query outside the
+// table (axis and value named), options or geometry that do not match the table, non-positive load, bad velocity.
+WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrackGeometry& geometry, Side side,
+                                      const WheelsetPose& pose, const WheelsetVelocity& velocity,
+                                      const WheelContactOptions& options, LutCellInfo* info = nullptr);
+
+// The same signature as WheelContactFunction (kinematics_quasistatic.hpp): usable by the curving and the dynamics.
+using LutContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
+                                                            const WheelsetVelocity&, const WheelContactOptions&)>;
+LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut);
+
+}  // namespace conforma

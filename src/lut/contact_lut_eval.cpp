@@ -1,0 +1,330 @@
+// Evaluation of a contact look-up table (contact_lut.hpp): topology-preserving interpolation of the normal
+// solution (docs/physics-reference.md §13), creepages from the tabulated affine map, FASTSIM on the stored ellipse.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "conforma/contact_lut.hpp"
+#include "conforma/contact_plausibility.hpp"
+#include "conforma/error.hpp"
+#include "conforma/fastsim.hpp"
+#include "conforma/friction_law.hpp"
+
+namespace conforma {
+
+namespace {
+
+// Cell of one axis: lower index and the fraction t in [0, 1]. InputError outside the axis (no extrapolation).
+void Locate(const std::vector<double>& axis, double v, const char* name, const char* unit, double unit_scale,
+            size_t* i, double* t) {
+  const double lo = axis.front(), hi = axis.back();
+  if (!std::isfinite(v) || v < lo || v > hi) {
+    char text[256];
+    std::snprintf(text, sizeof text, "contact LUT: %s = %.9g %s is outside the table [%.9g, %.9g] %s (not extrapolated)",
+                  name, v * unit_scale, unit, lo * unit_scale, hi * unit_scale, unit);
+    throw InputError(text);
+  }
+  size_t k = static_cast<size_t>(std::upper_bound(axis.begin(), axis.end(), v) - axis.begin());
+  k = std::min(std::max<size_t>(k, 1), axis.size() - 1) - 1;
+  *i = k;
+  *t = (v - axis[k]) / (axis[k + 1] - axis[k]);
+}
+
+bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
+  if (a.status != b.status || a.patches.size() != b.patches.size()) return false;
+  for (size_t j = 0; j < a.patches.size(); ++j) {
+    if (a.patches[j].model != b.patches[j].model) return false;
+    if (!(std::fabs(a.patches[j].rail_s_m - b.patches[j].rail_s_m) < match_distance_m)) return false;
+  }
+  return true;
+}
+
+// Fields of a patch normalised by their Hertzian power of the node's load (forces ~ Q, lengths and pressure
+// ~ Q^(1/3), area and approach ~ Q^(2/3)): nearly independent of Q, so the interpolation in Q is close to exact.
+constexpr int kFields = 27;
+void Pack(const LutPatch& p, double Q, double* f) {
+  const double q1 = 1.0 / Q, q13 = 1.0 / std::cbrt(Q), q23 = q13 * q13;
+  const double v[kFields - 12] = {p.y_contact_rail_m, p.z_contact_rail_m, p.rail_s_m, p.y_contact_wheel_m, p.lead_m,
+                                  p.contact_angle_rad, p.rolling_radius_m, p.fn_N * q1, p.pressure_vertical_N * q1,
+                                  p.pressure_lateral_N * q1, p.pmax_Pa * q13, p.area_m2 * q23, p.approach_m * q23,
+                                  p.a_m * q13, p.b_m * q13};
+  std::copy(v, v + kFields - 12, f);
+  std::copy(p.creepage_map.begin(), p.creepage_map.end(), f + kFields - 12);
+}
+void Unpack(const double* f, double Q, LutPatch* p) {
+  const double q13 = std::cbrt(Q), q23 = q13 * q13;
+  p->y_contact_rail_m = f[0];
+  p->z_contact_rail_m = f[1];
+  p->rail_s_m = f[2];
+  p->y_contact_wheel_m = f[3];
+  p->lead_m = f[4];
+  p->contact_angle_rad = f[5];
+  p->rolling_radius_m = f[6];
+  p->fn_N = f[7] * Q;
+  p->pressure_vertical_N = f[8] * Q;
+  p->pressure_lateral_N = f[9] * Q;
+  p->pmax_Pa = f[10] * q13;
+  p->area_m2 = f[11] * q23;
+  p->approach_m = f[12] * q23;
+  p->a_m = f[13] * q13;
+  p->b_m = f[14] * q13;
+  std::copy(f + kFields - 12, f + kFields, p->creepage_map.begin());
+}
+
+// The interpolated normal solution at (y, psi, Q).
+struct NormalAtPose {
+  int status = 0;
+  double vertical_m = 0.0, roll_rad = 0.0;
+  std::vector<LutPatch> patches;
+  LutCellInfo cell;
+};
+
+NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q) {
+  const ContactLutGrid& g = lut.grid;
+  size_t iy, ip, iq;
+  double ty, tp, tq;
+  Locate(g.lateral_m, y, "lateral shift y", "mm", 1e3, &iy, &ty);
+  Locate(g.yaw_rad, psi, "yaw psi", "mrad", 1e3, &ip, &tp);
+  Locate(g.load_N, Q, "wheel load Q", "kN", 1e-3, &iq, &tq);
+  const std::vector<LutNode>& nodes = lut.nodes[side_index(side)];
+  const LutNode* corner[8];
+  double w[8], Qc[8];
+  for (int c = 0; c < 8; ++c) {
+    const int dy = c >> 2 & 1, dp = c >> 1 & 1, dq = c & 1;
+    corner[c] = &nodes[g.index(iy + dy, ip + dp, iq + dq)];
+    Qc[c] = g.load_N[iq + dq];
+    w[c] = (dy ? ty : 1.0 - ty) * (dp ? tp : 1.0 - tp) * (dq ? tq : 1.0 - tq);
+  }
+  NormalAtPose out;
+  out.cell.iy = iy, out.cell.ipsi = ip, out.cell.iq = iq;
+  bool single = true;
+  for (int c = 1; c < 8; ++c) single = single && SameTopology(*corner[0], *corner[c], lut.header.match_distance_m);
+  out.cell.single_topology = single && corner[0]->status == static_cast<int>(WheelContactStatus::Ok);
+  // the topology of the nearest corner (largest weight; the first on a tie) and the corners sharing it
+  int nearest = 0;
+  for (int c = 1; c < 8; ++c)
+    if (w[c] > w[nearest]) nearest = c;
+  const LutNode& ref = *corner[nearest];
+  double wsum = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    if (!SameTopology(ref, *corner[c], lut.header.match_distance_m)) w[c] = 0.0;
+    wsum += w[c];
+  }
+  out.status = ref.status;
+  const size_t np = ref.patches.size();
+  std::vector<double> acc(np * kFields, 0.0), f(kFields);
+  for (int c = 0; c < 8; ++c) {
+    if (w[c] == 0.0) continue;
+    const double wc = w[c] / wsum;
+    out.vertical_m += wc * corner[c]->vertical_m;
+    out.roll_rad += wc * corner[c]->roll_rad;
+    for (size_t j = 0; j < np; ++j) {
+      Pack(corner[c]->patches[j], Qc[c], f.data());
+      for (int k = 0; k < kFields; ++k) acc[j * kFields + k] += wc * f[k];
+    }
+  }
+  out.patches.resize(np);
+  for (size_t j = 0; j < np; ++j) {
+    out.patches[j] = ref.patches[j];  // the integer and non-interpolated fields (model, alpha_c, extents)
+    Unpack(&acc[j * kFields], Q, &out.patches[j]);
+  }
+  return out;
+}
+
+// Creep forces of one patch: FASTSIM on the stored ellipse, as the hertz model's tangential solve
+// (patch_model_hertz.cpp) does it.
+void SolveCreep(const LutPatch& q, const Creepages& cr, double V, const WheelContactOptions& options, PatchReport* p) {
+  if (!options.solve_tangential || !(q.a_m > 0.0) || !(q.b_m > 0.0)) {
+    p->tangential_status = "not_solved";
+    return;
+  }
+  if (cr.longitudinal == 0.0 && cr.lateral == 0.0 && cr.spin_per_m == 0.0) {
+    p->tangential_status = "no_creepage";
+    return;
+  }
+  FastsimHertzInput in;
+  in.a_m = q.a_m;
+  in.b_m = q.b_m;
+  in.normal_force_N = q.fn_N;
+  in.creepages = FastsimCreepages{cr.longitudinal, cr.lateral, cr.spin_per_m};
+  in.friction_coefficient = options.effective_friction_law().static_value();
+  in.material = options.material;
+  in.nx = in.ny = options.fastsim_elements;
+  in.rolling_speed_m_per_s = V;
+  FastsimResult t;
+  if (options.friction_law.is_constant()) {
+    t = SolveFastsimHertz(in, options.fastsim);
+  } else {
+    FastsimPatch patch;
+    BuildFastsimHertzPatch(in, options.fastsim, &patch);
+    if (patch.strips.empty()) {
+      t = SolveFastsimHertz(in, options.fastsim);
+    } else {
+      SolveFastsimStripsWithLaw(patch, FastsimHertzFlexibilities(in, options.fastsim), in.creepages,
+                                options.friction_law, V, options.fastsim, &t);
+    }
+  }
+  p->tangential_status = to_string(t.status);
+  p->fx_N = t.fx_N;
+  p->fy_N = t.fy_N;
+  p->mz_Nm = t.mz_Nm;
+  p->adhesion_area_m2 = t.adhesion_area_m2;
+  p->slip_area_m2 = t.slip_area_m2;
+  p->frictional_power_W = t.frictional_power_W;
+}
+
+bool IsKpModel(ContactModel m) {
+  return m == ContactModel::Kp || m == ContactModel::Kpec || m == ContactModel::Conformal;
+}
+
+// The report at the pressure-balanced load Q_eff (what the direct solve gives with LoadBalance::Pressure).
+WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose& pose, const WheelsetVelocity& velocity,
+                            const WheelContactOptions& options, double Q_eff, LutCellInfo* info) {
+  const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_eff);
+  if (info) *info = n.cell;
+  WheelContactReport report;
+  report.side = side;
+  report.model = options.model;
+  report.pose = pose;
+  report.pose.vertical_m = n.vertical_m;
+  report.pose.roll_rad = n.roll_rad;
+  if (n.status == kLutNoEquilibrium || n.status == static_cast<int>(WheelContactStatus::NoContact)) {
+    report.status = WheelContactStatus::NoContact;
+    return report;
+  }
+  const double V = velocity.forward_speed_m_s;
+  const bool kinematics = !options.creepages_given;
+  if (kinematics && options.solve_tangential && !n.patches.empty()) {
+    require_positive(V, "WheelsetVelocity.forward_speed_m_s");
+    require_finite(velocity.lateral_velocity_m_s, "WheelsetVelocity.lateral_velocity_m_s");
+    require_finite(velocity.yaw_rate_rad_s, "WheelsetVelocity.yaw_rate_rad_s");
+    require_finite(velocity.axle_angular_velocity_rad_s, "WheelsetVelocity.axle_angular_velocity_rad_s");
+  }
+  for (const LutPatch& q : n.patches) {
+    PatchReport p;
+    p.model = static_cast<ContactModel>(q.model);
+    p.auto_alpha_c_deg = q.auto_alpha_c_deg;
+    p.normal_status = "ok";  // the node solutions are accepted ones
+    p.fn_N = q.fn_N;
+    p.pmax_Pa = q.pmax_Pa;
+    p.p0_Pa = p.model == ContactModel::Hertz ? q.pmax_Pa : 0.0;
+    p.area_m2 = q.area_m2;
+    p.a_m = q.a_m;
+    p.b_m = q.b_m;
+    p.width_m = q.width_m;
+    p.length_m = q.length_m;
+    p.approach_m = q.approach_m;
+    p.contact_angle_rad = q.contact_angle_rad;
+    p.y_contact_rail_m = q.y_contact_rail_m;
+    p.z_contact_rail_m = q.z_contact_rail_m;
+    p.y_contact_wheel_m = q.y_contact_wheel_m;
+    p.rolling_radius_m = q.rolling_radius_m;
+    p.lead_m = q.lead_m;
+    p.reference_s_on_rail_m = q.rail_s_m;
+    p.alpha_c_deg = q.alpha_c_deg;
+    p.is_conformal = IsKpModel(p.model) && q.alpha_c_deg > options.conformity_threshold_deg;
+    Creepages cr = options.creepages;
+    if (kinematics && V > 0.0) {
+      const double u[4] = {1.0, velocity.lateral_velocity_m_s / V, velocity.yaw_rate_rad_s / V,
+                           velocity.axle_angular_velocity_rad_s / V};
+      double c[3] = {0.0, 0.0, 0.0};
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 4; ++k) c[i] += q.creepage_map[4 * i + k] * u[k];
+      cr = Creepages{c[0], c[1], c[2]};
+    }
+    p.xi = cr.longitudinal;
+    p.eta = cr.lateral;
+    p.phi_per_m = cr.spin_per_m;
+    SolveCreep(q, cr, V, options, &p);
+    p.vertical_force_N = q.pressure_vertical_N + p.fy_N * std::sin(q.contact_angle_rad);
+    p.lateral_force_N = q.pressure_lateral_N + p.fy_N * std::cos(q.contact_angle_rad);
+    report.vertical_force_N += p.vertical_force_N;
+    report.pressure_vertical_force_N += q.pressure_vertical_N;
+    report.lateral_force_N += p.lateral_force_N;
+    report.patches.push_back(p);
+  }
+  report.status = n.status == static_cast<int>(WheelContactStatus::Ok)
+                      ? (report.patches.empty() ? WheelContactStatus::NoContact : WheelContactStatus::Ok)
+                      : WheelContactStatus::NotConverged;
+  return report;
+}
+
+void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometry, const WheelContactOptions& o) {
+  const ContactLutHeader& h = lut.header;
+  auto mismatch = [](const std::string& what, const std::string& table, const std::string& given) {
+    throw InputError("contact LUT: " + what + " of the table (" + table + ") differs from the one given (" + given + ")");
+  };
+  if (o.model != h.model) mismatch("contact model", to_string(h.model), to_string(o.model));
+  if (o.material.shear_modulus_Pa != h.material.shear_modulus_Pa || o.material.poisson_ratio != h.material.poisson_ratio)
+    mismatch("material", std::to_string(h.material.shear_modulus_Pa) + " Pa, nu " + std::to_string(h.material.poisson_ratio),
+             std::to_string(o.material.shear_modulus_Pa) + " Pa, nu " + std::to_string(o.material.poisson_ratio));
+  if (o.max_touching_contact_angle_rad != h.max_touching_contact_angle_rad)
+    mismatch("elastic-flange angle (max_touching_contact_angle_rad)", std::to_string(h.max_touching_contact_angle_rad),
+             std::to_string(o.max_touching_contact_angle_rad));
+  for (Side s : {Side::Left, Side::Right}) {
+    const int i = side_index(s);
+    if (std::fabs(geometry.rail_origin_eta_m(s) - h.rail_origin_eta_m[i]) > 1e-9 ||
+        std::fabs(geometry.setup().nominal_radius_m[i] - h.nominal_radius_m[i]) > 1e-9)
+      throw InputError("contact LUT: the track geometry given is not the table's (rail position or nominal wheel "
+                       "radius differ; table made for wheel '" + h.wheel_profile + "' on rail '" + h.rail_profile + "')");
+  }
+}
+
+}  // namespace
+
+WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrackGeometry& geometry, Side side,
+                                      const WheelsetPose& pose, const WheelsetVelocity& velocity,
+                                      const WheelContactOptions& options, LutCellInfo* info) {
+  options.validate();
+  CheckCompatible(lut, geometry, options);
+  if (options.vertical_load_N < 0.0)
+    throw InputError("contact LUT: approach mode (vertical_load_N < 0) is not tabulated; give the wheel load");
+  if (options.vertical_load_N == 0.0) {  // unloaded wheel: no contact, as the pipeline
+    WheelContactReport r;
+    r.side = side;
+    r.model = options.model;
+    r.pose = pose;
+    return r;
+  }
+  const double Q = options.vertical_load_N;
+  const bool total = options.load_balance == LoadBalance::Total && options.solve_tangential;
+  WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, info);
+  if (total && r.status == WheelContactStatus::Ok) {
+    // Total-force balance: Q_eff + C(Q_eff) = Q, C = vertical creep forces (header comment); secant iteration
+    // from the fixed-point step
+    auto residual = [&](const WheelContactReport& rep) { return rep.vertical_force_N - Q; };
+    double x0 = Q, g0 = residual(r);
+    int evaluations = 1;
+    const double tolerance = options.load_tolerance * Q;
+    if (std::fabs(g0) > tolerance) {
+      double x1 = Q - g0;
+      bool converged = false;
+      for (; evaluations < 60; ) {
+        r = ReportAt(lut, side, pose, velocity, options, x1, info);
+        ++evaluations;
+        if (r.status != WheelContactStatus::Ok) break;
+        const double g1 = residual(r);
+        if (std::fabs(g1) <= tolerance) { converged = true; break; }
+        const double slope = (g1 - g0) / (x1 - x0);
+        const double x2 = slope > 0.0 && std::isfinite(slope) ? x1 - g1 / slope : x1 - g1;
+        x0 = x1, g0 = g1, x1 = x2;
+        if (!(x1 > 0.0)) break;
+      }
+      if (!converged && r.status == WheelContactStatus::Ok) r.status = WheelContactStatus::NotConverged;
+    }
+    r.load_iterations = evaluations;
+  }
+  r.warnings = ContactPlausibilityWarnings(r, geometry, options);
+  return r;
+}
+
+LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut) {
+  if (!lut) throw InputError("contact LUT: no table given");
+  return [lut](const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+               const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+    return EvaluateContactLut(*lut, geometry, side, pose, velocity, options);
+  };
+}
+
+}  // namespace conforma
