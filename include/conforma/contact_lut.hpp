@@ -61,11 +61,22 @@ struct LutPatch {
   double pmax_Pa = 0.0, area_m2 = 0.0, approach_m = 0.0;
   double width_m = 0.0, length_m = 0.0;
   double a_m = 0.0, b_m = 0.0;          // Hertz semi-axes or the SDEC (KP models): FASTSIM's ellipse
+  // Centre of the ellipse relative to the patch's spin origin (the reference point; along x and along the rail
+  // profile): the area centroid of the KP patch (0 for hertz, whose ellipse is centred at its point). FASTSIM
+  // runs on the ellipse with the creepages moved to this centre, so that an asymmetric patch's spin couples into
+  // the forces as on the KP patch.
+  double centre_x_m = 0.0, centre_s_m = 0.0;
   double alpha_c_deg = 0.0, auto_alpha_c_deg = 0.0;
   // Rigid creepages (xi, eta, phi [1/m]) = creepage_map * (1, v_lat / V, yaw_rate / V, axle_rate / V): the
   // creepages of creepage.hpp are affine in these (v = V x + omega x r, omega linear in the rates); row-major 3 x 4,
   // taken from the pipeline's own creepages at four velocities.
   std::array<double, 12> creepage_map{};
+  // KP models: the rigid slip field of the patch's FASTSIM (per strip with the conformal model) fitted over the
+  // patch about the ellipse centre, sigma = s - centre_s, x' = x - centre_x:
+  //   w_x = c0 + c1 sigma + c2 sigma^2,   w_s = c3 + c4 sigma + c5 sigma^2 + (c6 + c7 sigma) x'
+  // with (c0 .. c7) = slip_map * (1, v_lat / V, yaw_rate / V, axle_rate / V) (row-major 8 x 4; the rigid slip is
+  // affine in these). FASTSIM on the ellipse then runs strip by strip with this slip (0 for hertz).
+  std::array<double, 32> slip_map{};
 };
 
 // Node status: the WheelContactStatus of the direct solve (as int), or kLutNoEquilibrium.

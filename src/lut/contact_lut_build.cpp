@@ -5,6 +5,8 @@
 
 #include <omp.h>
 
+#include <Eigen/Dense>
+
 #include "conforma/contact_lut.hpp"
 #include "conforma/error.hpp"
 
@@ -41,6 +43,32 @@ WheelsetVelocity MapVelocity(int k) {
   return v;
 }
 
+// Least-squares fit of the rigid slip field of a KP patch's FASTSIM from its cells (friction 0: every element
+// slips with zero traction, so its slip is the rigid slip; fastsim_core.cpp: s_x = xi - phi y L1/L3 over the
+// element, s_y = eta + phi x_mid L2/L3 at the middle x_mid of the marching step). Basis: LutPatch::slip_map.
+std::array<double, 8> FitRigidSlip(const PatchReport& p, double xc, double sc, FastsimMarching marching) {
+  const size_t n = p.cells.size();
+  Eigen::MatrixXd Ax = Eigen::MatrixXd::Zero(n, 3), Ay = Eigen::MatrixXd::Zero(n, 5);
+  Eigen::VectorXd bx(n), by(n);
+  for (size_t e = 0; e < n; ++e) {
+    const ContactCell& c = p.cells[e];
+    const bool first = e == 0 || p.cells[e - 1].s_m != c.s_m;  // first element of its strip (leading edge)
+    const double x_mid = marching == FastsimMarching::ClassicFullStep ? c.x_m
+                         : first ? c.x_m + 0.25 * c.length_x_m : c.x_m + 0.5 * c.length_x_m;
+    const double w = std::sqrt(c.area_m2), sg = c.s_m - sc, x = x_mid - xc;
+    Ax.row(e) << w, w * sg, w * sg * sg;
+    Ay.row(e) << w, w * sg, w * sg * sg, w * x, w * sg * x;
+    bx(e) = w * c.slip_x;
+    by(e) = w * c.slip_s;
+  }
+  std::array<double, 8> out{};
+  if (n == 0) return out;
+  const Eigen::VectorXd cx = Ax.colPivHouseholderQr().solve(bx), cy = Ay.colPivHouseholderQr().solve(by);
+  for (int i = 0; i < 3; ++i) out[i] = std::isfinite(cx(i)) ? cx(i) : 0.0;
+  for (int i = 0; i < 5; ++i) out[3 + i] = std::isfinite(cy(i)) ? cy(i) : 0.0;
+  return out;
+}
+
 LutNode SolveNode(const WheelsetTrackGeometry& geometry, Side side, const EquilibriumResult& eq, double load_N,
                   const WheelContactOptions& base) {
   LutNode node;
@@ -53,7 +81,9 @@ LutNode SolveNode(const WheelsetTrackGeometry& geometry, Side side, const Equili
   o.load_balance = LoadBalance::Pressure;  // the normal solution independent of the velocity
   o.solve_tangential = true;               // the SDEC of the KP models comes with the tangential solve
   o.creepages_given = false;
-  o.keep_fields = false;
+  o.keep_fields = true;     // the cells give the KP patch's centroid and rigid slip
+  o.friction_coefficient = 0.0;  // zero traction: the cells' slip is the rigid slip (FitRigidSlip)
+  o.friction_law = FrictionLaw{};
   o.fastsim_elements = 2;  // only the creepages and the ellipse are kept: neither depends on the FASTSIM mesh
   WheelContactCache cache(8);  // the normal stage solved once, reused for the four velocities
   WheelContactReport r[kMapVelocities];
@@ -89,6 +119,16 @@ LutNode SolveNode(const WheelsetTrackGeometry& geometry, Side side, const Equili
     q.a_m = p.a_m;
     q.b_m = p.b_m;
     q.alpha_c_deg = p.alpha_c_deg;
+    if (p.model != ContactModel::Hertz) {
+      double area = 0.0, sx = 0.0, ss = 0.0;
+      for (const ContactCell& c : p.cells) area += c.area_m2, sx += c.area_m2 * c.x_m, ss += c.area_m2 * c.s_m;
+      if (area > 0.0) q.centre_x_m = sx / area, q.centre_s_m = ss / area;
+      std::array<double, 8> fit[kMapVelocities];
+      for (int k = 0; k < kMapVelocities; ++k)
+        fit[k] = FitRigidSlip(r[k].patches[j], q.centre_x_m, q.centre_s_m, o.fastsim.marching);
+      for (int i = 0; i < 8; ++i)
+        for (int k = 0; k < kMapVelocities; ++k) q.slip_map[4 * i + k] = k == 0 ? fit[0][i] : fit[k][i] - fit[0][i];
+    }
     q.auto_alpha_c_deg = p.auto_alpha_c_deg;
     for (int k = 0; k < kMapVelocities; ++k) {
       const PatchReport& pk = r[k].patches[j];

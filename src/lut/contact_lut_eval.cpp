@@ -42,15 +42,16 @@ bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
 
 // Fields of a patch normalised by their Hertzian power of the node's load (forces ~ Q, lengths and pressure
 // ~ Q^(1/3), area and approach ~ Q^(2/3)): nearly independent of Q, so the interpolation in Q is close to exact.
-constexpr int kFields = 27;
+constexpr int kScaled = 17, kFields = kScaled + 12 + 32;
 void Pack(const LutPatch& p, double Q, double* f) {
   const double q1 = 1.0 / Q, q13 = 1.0 / std::cbrt(Q), q23 = q13 * q13;
-  const double v[kFields - 12] = {p.y_contact_rail_m, p.z_contact_rail_m, p.rail_s_m, p.y_contact_wheel_m, p.lead_m,
+  const double v[kScaled] = {p.y_contact_rail_m, p.z_contact_rail_m, p.rail_s_m, p.y_contact_wheel_m, p.lead_m,
                                   p.contact_angle_rad, p.rolling_radius_m, p.fn_N * q1, p.pressure_vertical_N * q1,
                                   p.pressure_lateral_N * q1, p.pmax_Pa * q13, p.area_m2 * q23, p.approach_m * q23,
-                                  p.a_m * q13, p.b_m * q13};
-  std::copy(v, v + kFields - 12, f);
-  std::copy(p.creepage_map.begin(), p.creepage_map.end(), f + kFields - 12);
+                                  p.a_m * q13, p.b_m * q13, p.centre_x_m * q13, p.centre_s_m * q13};
+  std::copy(v, v + kScaled, f);
+  std::copy(p.creepage_map.begin(), p.creepage_map.end(), f + kScaled);
+  std::copy(p.slip_map.begin(), p.slip_map.end(), f + kScaled + 12);
 }
 void Unpack(const double* f, double Q, LutPatch* p) {
   const double q13 = std::cbrt(Q), q23 = q13 * q13;
@@ -69,7 +70,10 @@ void Unpack(const double* f, double Q, LutPatch* p) {
   p->approach_m = f[12] * q23;
   p->a_m = f[13] * q13;
   p->b_m = f[14] * q13;
-  std::copy(f + kFields - 12, f + kFields, p->creepage_map.begin());
+  p->centre_x_m = f[15] * q13;
+  p->centre_s_m = f[16] * q13;
+  std::copy(f + kScaled, f + kScaled + 12, p->creepage_map.begin());
+  std::copy(f + kScaled + 12, f + kFields, p->slip_map.begin());
 }
 
 // The interpolated normal solution at (y, psi, Q).
@@ -134,7 +138,9 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
 
 // Creep forces of one patch: FASTSIM on the stored ellipse, as the hertz model's tangential solve
 // (patch_model_hertz.cpp) does it.
-void SolveCreep(const LutPatch& q, const Creepages& cr, double V, const WheelContactOptions& options, PatchReport* p) {
+// u: (1, v_lat / V, yaw_rate / V, axle_rate / V) with the wheelset kinematics, nullptr with given creepages.
+void SolveCreep(const LutPatch& q, const Creepages& cr, const double* u, double V, const WheelContactOptions& options,
+                PatchReport* p) {
   if (!options.solve_tangential || !(q.a_m > 0.0) || !(q.b_m > 0.0)) {
     p->tangential_status = "not_solved";
     return;
@@ -152,8 +158,46 @@ void SolveCreep(const LutPatch& q, const Creepages& cr, double V, const WheelCon
   in.material = options.material;
   in.nx = in.ny = options.fastsim_elements;
   in.rolling_speed_m_per_s = V;
+  if (q.centre_x_m != 0.0 || q.centre_s_m != 0.0) {
+    // creepages at the ellipse centre (x_c, s_c) such that FASTSIM's rigid slip (xi - phi y L1/L3,
+    // eta + phi x L2/L3; docs/physics-reference.md §2.4) equals the one about the reference point
+    const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+    in.creepages.xi -= cr.spin_per_m * q.centre_s_m * L.L1 / L.L3;
+    in.creepages.eta += cr.spin_per_m * q.centre_x_m * L.L2 / L.L3;
+  }
   FastsimResult t;
-  if (options.friction_law.is_constant()) {
+  if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant()) {
+    // KP models: strip by strip with the tabulated rigid slip (LutPatch::slip_map), about the ellipse centre
+    double c[8] = {};
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < 4; ++k) c[i] += q.slip_map[4 * i + k] * u[k];
+    in.creepages = FastsimCreepages{cr.longitudinal, cr.lateral, cr.spin_per_m};
+    FastsimPatch patch;
+    BuildFastsimHertzPatch(in, options.fastsim, &patch);
+    const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+    std::vector<FastsimCreepages> strip(patch.strips.size());
+    for (size_t j = 0; j < strip.size(); ++j) {
+      // the core's rigid slip is (xi_j - phi_j y L1/L3, eta_j + phi_j x L2/L3) (fastsim_core.cpp)
+      const double y = patch.strips[j].y_m;
+      const double phi = (c[6] + c[7] * y) * L.L3 / L.L2;
+      strip[j].phi_per_m = phi;
+      strip[j].xi = c[0] + c[1] * y + c[2] * y * y + phi * y * L.L1 / L.L3;
+      strip[j].eta = c[3] + c[4] * y + c[5] * y * y;
+    }
+    std::vector<FastsimStripTotals> totals;
+    SolveFastsimStripsEach(patch, L, strip, in.friction_coefficient, V, options.fastsim, &t, &totals);
+    t.fx_N = t.fy_N = t.mz_Nm = t.adhesion_area_m2 = t.slip_area_m2 = t.frictional_power_W = 0.0;
+    for (const FastsimStripTotals& s : totals) {
+      t.fx_N += s.fx_N;
+      t.fy_N += s.fy_N;
+      t.mz_Nm += s.mz_Nm;
+      t.adhesion_area_m2 += s.adhesion_area_m2;
+      t.slip_area_m2 += s.slip_area_m2;
+      t.frictional_power_W += s.frictional_power_W;
+    }
+    t.status = patch.strips.empty() ? FastsimStatus::NoContact
+               : t.adhesion_area_m2 > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+  } else if (options.friction_law.is_constant()) {
     t = SolveFastsimHertz(in, options.fastsim);
   } else {
     FastsimPatch patch;
@@ -168,7 +212,7 @@ void SolveCreep(const LutPatch& q, const Creepages& cr, double V, const WheelCon
   p->tangential_status = to_string(t.status);
   p->fx_N = t.fx_N;
   p->fy_N = t.fy_N;
-  p->mz_Nm = t.mz_Nm;
+  p->mz_Nm = t.mz_Nm + q.centre_x_m * t.fy_N - q.centre_s_m * t.fx_N;  // about the reference point
   p->adhesion_area_m2 = t.adhesion_area_m2;
   p->slip_area_m2 = t.slip_area_m2;
   p->frictional_power_W = t.frictional_power_W;
@@ -225,9 +269,10 @@ WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose
     p.alpha_c_deg = q.alpha_c_deg;
     p.is_conformal = IsKpModel(p.model) && q.alpha_c_deg > options.conformity_threshold_deg;
     Creepages cr = options.creepages;
+    const double u[4] = {1.0, V > 0.0 ? velocity.lateral_velocity_m_s / V : 0.0,
+                         V > 0.0 ? velocity.yaw_rate_rad_s / V : 0.0,
+                         V > 0.0 ? velocity.axle_angular_velocity_rad_s / V : 0.0};
     if (kinematics && V > 0.0) {
-      const double u[4] = {1.0, velocity.lateral_velocity_m_s / V, velocity.yaw_rate_rad_s / V,
-                           velocity.axle_angular_velocity_rad_s / V};
       double c[3] = {0.0, 0.0, 0.0};
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 4; ++k) c[i] += q.creepage_map[4 * i + k] * u[k];
@@ -236,7 +281,7 @@ WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose
     p.xi = cr.longitudinal;
     p.eta = cr.lateral;
     p.phi_per_m = cr.spin_per_m;
-    SolveCreep(q, cr, V, options, &p);
+    SolveCreep(q, cr, kinematics && V > 0.0 ? u : nullptr, V, options, &p);
     p.vertical_force_N = q.pressure_vertical_N + p.fy_N * std::sin(q.contact_angle_rad);
     p.lateral_force_N = q.pressure_lateral_N + p.fy_N * std::cos(q.contact_angle_rad);
     report.vertical_force_N += p.vertical_force_N;

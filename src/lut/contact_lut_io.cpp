@@ -156,6 +156,8 @@ const std::vector<PatchField>& PatchFields() {
       {"length_m", "m", &LutPatch::length_m},
       {"a_m", "m", &LutPatch::a_m},
       {"b_m", "m", &LutPatch::b_m},
+      {"centre_x_m", "m", &LutPatch::centre_x_m},
+      {"centre_s_m", "m", &LutPatch::centre_s_m},
       {"alpha_c_deg", "deg", &LutPatch::alpha_c_deg},
       {"auto_alpha_c_deg", "deg", &LutPatch::auto_alpha_c_deg},
   };
@@ -198,6 +200,9 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
   AttrString(root, "node_order", "node k = (i_lateral * n_yaw + i_yaw) * n_load + i_load");
   AttrString(root, "status_names", "0 ok, 1 no_contact, 2 not_converged, 3 no_rigid_equilibrium");
   AttrString(root, "model_names", "0 hertz, 1 kp, 2 kpec, 3 conformal, 4 exact (ContactModel)");
+  AttrString(root, "slip_map",
+             "KP patches, rows c0..c7 of w_x = c0 + c1 sigma + c2 sigma^2, w_s = c3 + c4 sigma + c5 sigma^2 + "
+             "(c6 + c7 sigma) x' (sigma = s - centre_s_m, x' = x - centre_x_m [m]); columns as creepage_map");
   AttrString(root, "creepage_map",
              "rows xi, eta, phi [1/m]; columns multiply (1, v_lateral/V, yaw_rate/V, axle_rate/V) [-, -, 1/m, 1/m]");
   {
@@ -211,7 +216,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
     if (nodes.size() != lut.grid.nodes()) Fail(path, "the table's node count does not match its grid");
     Handle g{H5Gcreate2(root, kSideGroups[s], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
     std::vector<int> status, offset{0}, model;
-    std::vector<double> vertical, roll, map;
+    std::vector<double> vertical, roll, map, slip;
     for (const LutNode& n : nodes) {
       status.push_back(n.status);
       vertical.push_back(n.vertical_m);
@@ -220,6 +225,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
       for (const LutPatch& p : n.patches) {
         model.push_back(p.model);
         map.insert(map.end(), p.creepage_map.begin(), p.creepage_map.end());
+        slip.insert(slip.end(), p.slip_map.begin(), p.slip_map.end());
       }
     }
     WriteData(g.id, "node_status", status, "-");
@@ -234,6 +240,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
       WriteData(g.id, f.name, v, f.units);
     }
     WriteData(g.id, "creepage_map", map, "see root attribute creepage_map", 12);
+    WriteData(g.id, "slip_map", slip, "see root attribute slip_map", 32);
   }
   if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) Fail(path, "cannot be written");
 }
@@ -307,6 +314,7 @@ ContactLut LoadContactLut(const std::string& path) {
     std::vector<std::vector<double>> fields;
     for (const PatchField& f : PatchFields()) fields.push_back(ReadData<double>(g.id, f.name, path, patches));
     const std::vector<double> map = ReadData<double>(g.id, "creepage_map", path, 12 * patches);
+    const std::vector<double> slip = ReadData<double>(g.id, "slip_map", path, 32 * patches);
     std::vector<LutNode>& out = lut.nodes[s];
     out.resize(nodes);
     for (size_t k = 0; k < nodes; ++k) {
@@ -319,6 +327,7 @@ ContactLut LoadContactLut(const std::string& path) {
         p.model = model[r];
         for (size_t f = 0; f < fields.size(); ++f) p.*(PatchFields()[f].member) = fields[f][r];
         std::copy(map.begin() + 12 * r, map.begin() + 12 * (r + 1), p.creepage_map.begin());
+        std::copy(slip.begin() + 32 * r, slip.begin() + 32 * (r + 1), p.slip_map.begin());
         n.patches.push_back(p);
       }
     }
