@@ -117,7 +117,7 @@ void RegisterLutCommand(CLI::App& app) {
   {
     struct Build {
       LutArgs args;
-      std::string out = "contact_lut.h5", y_mm = "-12:12:0.25", yaw_mrad = "-8:8:2", load_kN = "20:80:20";
+      std::string out = "contact_lut.h5", y_mm = "-10:10:0.1", yaw_mrad = "-8:8:2", load_kN = "20:95:15";
       double match_mm = 3.0;
       int threads = 0;
     };

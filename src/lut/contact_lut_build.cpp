@@ -197,7 +197,8 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
   // nodes: both sides in one loop (each written into its slot)
   const long per_side = static_cast<long>(g.nodes());
   for (auto& v : lut.nodes) v.resize(per_side);
-  std::string first_error;
+  std::string first_error;  // of the lowest node index (the same message for any thread count)
+  long first_error_node = -1;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (long k = 0; k < 2 * per_side; ++k) {
     const Side side = k < per_side ? Side::Left : Side::Right;
@@ -207,7 +208,7 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
       lut.nodes[side_index(side)][n] = SolveNode(geometry, side, eq[iy * npsi + ipsi], g.load_N[iq], options.contact);
     } catch (const std::exception& e) {
 #pragma omp critical(contact_lut_error)
-      if (first_error.empty()) first_error = e.what();
+      if (first_error_node < 0 || k < first_error_node) first_error = e.what(), first_error_node = k;
     }
   }
   if (!first_error.empty()) throw InputError("contact LUT generation: " + first_error);

@@ -346,6 +346,14 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
       double x1 = Q - g0;
       bool converged = false;
       for (; evaluations < 60; ) {
+        if (!(x1 >= lut.grid.load_N.front() && x1 <= lut.grid.load_N.back())) {
+          char text[256];
+          std::snprintf(text, sizeof text, "contact LUT: the total-force balance needs the effective load Q_eff = "
+                        "%.6g kN (load %.6g kN minus the vertical creep forces), outside the table's wheel load axis "
+                        "[%.6g, %.6g] kN (not extrapolated)", x1 * 1e-3, Q * 1e-3, lut.grid.load_N.front() * 1e-3,
+                        lut.grid.load_N.back() * 1e-3);
+          throw InputError(text);
+        }
         r = ReportAt(lut, side, pose, velocity, options, x1, info);
         ++evaluations;
         if (r.status != WheelContactStatus::Ok) break;
