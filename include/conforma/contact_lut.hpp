@@ -47,6 +47,9 @@ struct ContactLutGrid {
   size_t index(size_t iy, size_t ipsi, size_t iq) const { return (iy * yaw_rad.size() + ipsi) * load_N.size() + iq; }
 };
 
+// Lateral stations of a KP patch in the table, and the values kept per station (LutPatch::stations).
+constexpr int kLutStations = 12, kLutStationFields = 16;
+
 // One patch of a node's normal solution (PatchReport fields; lengths m, forces N, pressures Pa, angles rad).
 struct LutPatch {
   int model = 0;                        // ContactModel that solved the patch (as int)
@@ -77,6 +80,15 @@ struct LutPatch {
   // with (c0 .. c7) = slip_map * (1, v_lat / V, yaw_rate / V, axle_rate / V) (row-major 8 x 4; the rigid slip is
   // affine in these). FASTSIM on the ellipse then runs strip by strip with this slip (0 for hertz).
   std::array<double, 32> slip_map{};
+  // KP models: the patch itself, resampled on kLutStations equal lateral stations over [station_s_min,
+  // station_s_max] (along the rail profile from the spin origin, m). Per station k, row k of kLutStationFields:
+  //   0 half-length c (m; 0: no contact there), 1 strip centre x (m), 2 peak pressure of the strip's semi-ellipse
+  //   along x (Pa), 3 rotation alpha of the local normal from the reference normal (rad),
+  //   4..15 the strip's rigid slip (w_x, w_s at x = 0, dw_s/dx [1/m]) = 3 x 4 map * (1, v_lat/V, yaw_rate/V,
+  //   axle_rate/V), row-major.
+  // FASTSIM then runs strip by strip on this patch (the curved-patch FASTSIM of the pipeline on a resampled patch).
+  double station_s_min_m = 0.0, station_s_max_m = 0.0;
+  std::array<double, kLutStations * kLutStationFields> stations{};
 };
 
 // Node status: the WheelContactStatus of the direct solve (as int), or kLutNoEquilibrium.

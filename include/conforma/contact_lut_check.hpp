@@ -30,6 +30,9 @@ struct ContactLutCheckOptions {
 struct Percentiles {
   int count = 0;
   double p50 = 0.0, p90 = 0.0, p95 = 0.0, p99 = 0.0, max = 0.0;
+  // the sample of the largest error: side (0 left, 1 right), y (m), psi (rad), Q (N)
+  int worst_side = 0;
+  double worst_y_m = 0.0, worst_yaw_rad = 0.0, worst_load_N = 0.0;
 };
 
 struct ContactLutCheckResult {

@@ -102,8 +102,11 @@ void PrintHeader(std::ostream& out, const ContactLut& lut) {
 
 void PrintPercentiles(std::ostream& out, const char* name, const Percentiles& p, double scale, const char* unit) {
   char line[256];
-  std::snprintf(line, sizeof line, "  %-22s n=%-6d p50 %-10.3g p90 %-10.3g p95 %-10.3g p99 %-10.3g max %-10.3g %s\n",
-                name, p.count, p.p50 * scale, p.p90 * scale, p.p95 * scale, p.p99 * scale, p.max * scale, unit);
+  std::snprintf(line, sizeof line,
+                "  %-18s n=%-5d p50 %-8.3g p90 %-8.3g p95 %-8.3g p99 %-8.3g max %-8.3g %-3s (max at %s y %.3f mm, "
+                "yaw %.2f mrad, Q %.1f kN)\n",
+                name, p.count, p.p50 * scale, p.p90 * scale, p.p95 * scale, p.p99 * scale, p.max * scale, unit,
+                p.worst_side == 0 ? "left" : "right", p.worst_y_m * 1e3, p.worst_yaw_rad * 1e3, p.worst_load_N * 1e-3);
   out << line;
 }
 
@@ -250,7 +253,9 @@ void RegisterLutCommand(CLI::App& app) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       auto pj = [](const Percentiles& p) {
         return nlohmann::json{{"count", p.count}, {"p50", p.p50}, {"p90", p.p90}, {"p95", p.p95}, {"p99", p.p99},
-                              {"max", p.max}};
+                              {"max", p.max}, {"worst_side", p.worst_side == 0 ? "left" : "right"},
+                              {"worst_y_m", p.worst_y_m}, {"worst_yaw_rad", p.worst_yaw_rad},
+                              {"worst_load_N", p.worst_load_N}};
       };
       if (c->json) {
         std::cout << nlohmann::json{{"samples", r.samples}, {"single_topology", r.single_topology},

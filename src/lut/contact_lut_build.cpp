@@ -1,4 +1,5 @@
 // Generation of a contact look-up table (contact_lut.hpp): every node solved independently with the pipeline.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -69,6 +70,92 @@ std::array<double, 8> FitRigidSlip(const PatchReport& p, double xc, double sc, F
   return out;
 }
 
+// One KP strip as the cells of its FASTSIM show it (friction 0, 2 elements per strip).
+struct CellStrip {
+  double s = 0.0, ds = 0.0, c = 0.0, xm = 0.0, p = 0.0, alpha = 0.0;
+  double w[3] = {0.0, 0.0, 0.0};  // w_x, w_s at x = 0, dw_s/dx
+};
+
+std::vector<CellStrip> StripsOf(const PatchReport& p, const WheelsetTrackGeometry& geometry, Side side,
+                                FastsimMarching marching) {
+  std::vector<CellStrip> out;
+  double z, slope;
+  geometry.RailHeight(side, geometry.RailEtaAtArcLength(side, p.reference_s_on_rail_m), &z, &slope);
+  const double delta_ref = std::atan(slope);
+  for (size_t e = 0; e < p.cells.size();) {
+    size_t f = e;
+    while (f < p.cells.size() && p.cells[f].s_m == p.cells[e].s_m) ++f;  // cells e .. f-1: one strip
+    const ContactCell& a = p.cells[e];
+    const ContactCell& b = p.cells[f - 1];
+    CellStrip st;
+    st.s = a.s_m;
+    st.ds = a.length_x_m > 0.0 ? a.area_m2 / a.length_x_m : 0.0;
+    const double lead = a.x_m + 0.5 * a.length_x_m, trail = b.x_m - 0.5 * b.length_x_m;
+    st.c = 0.5 * (lead - trail);
+    st.xm = 0.5 * (lead + trail);
+    // the KP pressure is a semi-ellipse along x on each strip: p(x) = p_peak sqrt(1 - ((x - xm) / c)^2)
+    const double t = st.c > 0.0 ? (a.x_m - st.xm) / st.c : 0.0;
+    st.p = t * t < 1.0 ? a.pressure_Pa / std::sqrt(1.0 - t * t) : 0.0;
+    geometry.RailHeight(side, geometry.RailEtaAtArcLength(side, a.rail_s_m), &z, &slope);
+    st.alpha = std::atan(slope) - delta_ref;
+    // rigid slip (FitRigidSlip): s_x constant along the strip, s_y at the marching steps' middles
+    auto x_mid = [&](size_t k) {
+      const ContactCell& c = p.cells[k];
+      return marching == FastsimMarching::ClassicFullStep ? c.x_m
+             : k == e ? c.x_m + 0.25 * c.length_x_m : c.x_m + 0.5 * c.length_x_m;
+    };
+    st.w[0] = a.slip_x;
+    if (f - e >= 2) {
+      const double x0 = x_mid(e), x1 = x_mid(f - 1);
+      st.w[2] = (b.slip_s - a.slip_s) / (x1 - x0);
+      st.w[1] = a.slip_s - st.w[2] * x0;
+    } else {
+      st.w[1] = a.slip_s;
+    }
+    out.push_back(st);
+    e = f;
+  }
+  return out;
+}
+
+// The strips of the four velocities resampled on the stations (LutPatch::stations); linear in s between strip
+// centres, no contact in a gap between strips (two lobes of one patch).
+void FillStations(const std::vector<CellStrip> (&strips)[4], LutPatch* q) {
+  const std::vector<CellStrip>& s0 = strips[0];
+  if (s0.empty()) return;
+  for (int k = 1; k < 4; ++k)
+    if (strips[k].size() != s0.size()) return;  // one normal solution: cannot happen; kept as a guard
+  q->station_s_min_m = s0.front().s - 0.5 * s0.front().ds;
+  q->station_s_max_m = s0.back().s + 0.5 * s0.back().ds;
+  const double w = (q->station_s_max_m - q->station_s_min_m) / kLutStations;
+  for (int st = 0; st < kLutStations; ++st) {
+    double* f = &q->stations[st * kLutStationFields];
+    const double s = q->station_s_min_m + (st + 0.5) * w;
+    // the strips around s: i with s_i <= s < s_{i+1} (clamped at the ends)
+    size_t i = 0;
+    while (i + 1 < s0.size() && s0[i + 1].s <= s) ++i;
+    size_t j = std::min(i + 1, s0.size() - 1);
+    double t = 0.0;
+    if (s < s0.front().s) j = i = 0;
+    else if (j != i) t = (s - s0[i].s) / (s0[j].s - s0[i].s);
+    if (j != i && s0[j].s - s0[i].s > 1.5 * std::max(s0[i].ds, s0[j].ds)) {
+      const double gap_i = s - (s0[i].s + 0.5 * s0[i].ds), gap_j = (s0[j].s - 0.5 * s0[j].ds) - s;
+      if (gap_i > 0.0 && gap_j > 0.0) continue;  // in the gap: c = 0, no contact
+      t = gap_i > 0.0 ? 1.0 : 0.0;               // within a strip width of one side: that strip
+    }
+    auto lerp = [&](double a, double b) { return a + t * (b - a); };
+    f[0] = lerp(s0[i].c, s0[j].c);
+    f[1] = lerp(s0[i].xm, s0[j].xm);
+    f[2] = lerp(s0[i].p, s0[j].p);
+    f[3] = lerp(s0[i].alpha, s0[j].alpha);
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 4; ++k) {
+        const double v = lerp(strips[k][i].w[r], strips[k][j].w[r]), v0 = lerp(s0[i].w[r], s0[j].w[r]);
+        f[4 + 4 * r + k] = k == 0 ? v0 : v - v0;
+      }
+  }
+}
+
 LutNode SolveNode(const WheelsetTrackGeometry& geometry, Side side, const EquilibriumResult& eq, double load_N,
                   const WheelContactOptions& base) {
   LutNode node;
@@ -128,6 +215,9 @@ LutNode SolveNode(const WheelsetTrackGeometry& geometry, Side side, const Equili
         fit[k] = FitRigidSlip(r[k].patches[j], q.centre_x_m, q.centre_s_m, o.fastsim.marching);
       for (int i = 0; i < 8; ++i)
         for (int k = 0; k < kMapVelocities; ++k) q.slip_map[4 * i + k] = k == 0 ? fit[0][i] : fit[k][i] - fit[0][i];
+      std::vector<CellStrip> strips[kMapVelocities];
+      for (int k = 0; k < kMapVelocities; ++k) strips[k] = StripsOf(r[k].patches[j], geometry, side, o.fastsim.marching);
+      FillStations(strips, &q);
     }
     q.auto_alpha_c_deg = p.auto_alpha_c_deg;
     for (int k = 0; k < kMapVelocities; ++k) {

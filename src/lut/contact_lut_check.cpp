@@ -44,10 +44,20 @@ bool MatchesNode(const std::vector<PatchReport>& a, const LutNode& n, double mat
   return true;
 }
 
-Percentiles Summarise(std::vector<double> v) {
+// v: (error, sample index) pairs
+Percentiles Summarise(const std::vector<std::pair<double, long>>& e, const std::vector<Sample>& samples) {
   Percentiles p;
-  p.count = static_cast<int>(v.size());
-  if (v.empty()) return p;
+  p.count = static_cast<int>(e.size());
+  if (e.empty()) return p;
+  std::vector<double> v;
+  long worst = e[0].second;
+  double worst_value = -1.0;
+  for (const auto& x : e) {
+    v.push_back(x.first);
+    if (x.first > worst_value) worst_value = x.first, worst = x.second;
+  }
+  const Sample& s = samples[worst];
+  p.worst_side = side_index(s.side), p.worst_y_m = s.y, p.worst_yaw_rad = s.psi, p.worst_load_N = s.Q;
   std::sort(v.begin(), v.end());
   auto at = [&](double q) { return v[std::min(v.size() - 1, static_cast<size_t>(std::ceil(q * v.size())) - 1)]; };
   p.p50 = at(0.5), p.p90 = at(0.9), p.p95 = at(0.95), p.p99 = at(0.99), p.max = v.back();
@@ -134,8 +144,12 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
   }
   ContactLutCheckResult r;
   r.samples = options.samples;
-  std::vector<double> fn, fx, fy, ry, lat;
-  for (const Outcome& o : out) {
+  std::vector<std::pair<double, long>> fn, fx, fy, ry, lat;
+  auto add = [](std::vector<std::pair<double, long>>& to, const std::vector<double>& from, long k) {
+    for (double x : from) to.emplace_back(x, k);
+  };
+  for (long k = 0; k < static_cast<long>(out.size()); ++k) {
+    const Outcome& o = out[k];
     r.direct_cpu_s += o.direct_s;
     r.lut_cpu_s += o.lut_s;
     if (o.lut_error) ++r.lut_errors;
@@ -144,11 +158,11 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
     if (o.single) {
       ++r.single_topology;
       if (!o.same) { ++r.single_topology_mismatch; continue; }
-      fn.insert(fn.end(), o.fn.begin(), o.fn.end());
-      fx.insert(fx.end(), o.fx.begin(), o.fx.end());
-      fy.insert(fy.end(), o.fy.begin(), o.fy.end());
-      ry.insert(ry.end(), o.rail_y.begin(), o.rail_y.end());
-      lat.push_back(o.lateral);
+      add(fn, o.fn, k);
+      add(fx, o.fx, k);
+      add(fy, o.fy, k);
+      add(ry, o.rail_y, k);
+      lat.emplace_back(o.lateral, k);
     } else {
       ++r.jump_samples;
       if (o.same) ++r.jump_same_topology;
@@ -156,11 +170,11 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
       else ++r.jump_outside;
     }
   }
-  r.normal_force_rel = Summarise(fn);
-  r.fx_rel = Summarise(fx);
-  r.fy_rel = Summarise(fy);
-  r.rail_y_m = Summarise(ry);
-  r.lateral_force_rel = Summarise(lat);
+  r.normal_force_rel = Summarise(fn, samples);
+  r.fx_rel = Summarise(fx, samples);
+  r.fy_rel = Summarise(fy, samples);
+  r.rail_y_m = Summarise(ry, samples);
+  r.lateral_force_rel = Summarise(lat, samples);
   return r;
 }
 

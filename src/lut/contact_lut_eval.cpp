@@ -42,16 +42,22 @@ bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
 
 // Fields of a patch normalised by their Hertzian power of the node's load (forces ~ Q, lengths and pressure
 // ~ Q^(1/3), area and approach ~ Q^(2/3)): nearly independent of Q, so the interpolation in Q is close to exact.
-constexpr int kScaled = 17, kFields = kScaled + 12 + 32;
+constexpr int kScaled = 19, kStationValues = kLutStations * kLutStationFields;
+constexpr int kFields = kScaled + 12 + 32 + kStationValues;
 void Pack(const LutPatch& p, double Q, double* f) {
   const double q1 = 1.0 / Q, q13 = 1.0 / std::cbrt(Q), q23 = q13 * q13;
   const double v[kScaled] = {p.y_contact_rail_m, p.z_contact_rail_m, p.rail_s_m, p.y_contact_wheel_m, p.lead_m,
                                   p.contact_angle_rad, p.rolling_radius_m, p.fn_N * q1, p.pressure_vertical_N * q1,
                                   p.pressure_lateral_N * q1, p.pmax_Pa * q13, p.area_m2 * q23, p.approach_m * q23,
-                                  p.a_m * q13, p.b_m * q13, p.centre_x_m * q13, p.centre_s_m * q13};
+                                  p.a_m * q13, p.b_m * q13, p.centre_x_m * q13, p.centre_s_m * q13,
+                             p.station_s_min_m * q13, p.station_s_max_m * q13};
   std::copy(v, v + kScaled, f);
   std::copy(p.creepage_map.begin(), p.creepage_map.end(), f + kScaled);
   std::copy(p.slip_map.begin(), p.slip_map.end(), f + kScaled + 12);
+  double* st = f + kScaled + 44;
+  std::copy(p.stations.begin(), p.stations.end(), st);
+  for (int k = 0; k < kLutStations; ++k)  // half-length, centre x, peak pressure ~ Q^(1/3)
+    for (int i = 0; i < 3; ++i) st[k * kLutStationFields + i] *= q13;
 }
 void Unpack(const double* f, double Q, LutPatch* p) {
   const double q13 = std::cbrt(Q), q23 = q13 * q13;
@@ -72,8 +78,13 @@ void Unpack(const double* f, double Q, LutPatch* p) {
   p->b_m = f[14] * q13;
   p->centre_x_m = f[15] * q13;
   p->centre_s_m = f[16] * q13;
+  p->station_s_min_m = f[17] * q13;
+  p->station_s_max_m = f[18] * q13;
   std::copy(f + kScaled, f + kScaled + 12, p->creepage_map.begin());
-  std::copy(f + kScaled + 12, f + kFields, p->slip_map.begin());
+  std::copy(f + kScaled + 12, f + kScaled + 44, p->slip_map.begin());
+  std::copy(f + kScaled + 44, f + kFields, p->stations.begin());
+  for (int k = 0; k < kLutStations; ++k)
+    for (int i = 0; i < 3; ++i) p->stations[k * kLutStationFields + i] *= q13;
 }
 
 // The interpolated normal solution at (y, psi, Q).
@@ -136,6 +147,75 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   return out;
 }
 
+// Mean of sqrt(1 - t^2) over [t1, t2] (the semi-ellipse's element mean), -1 <= t1 < t2 <= 1.
+double SemiEllipseMean(double t1, double t2) {
+  auto F = [](double t) { return 0.5 * (t * std::sqrt(std::max(0.0, 1.0 - t * t)) + std::asin(t)); };
+  return (F(t2) - F(t1)) / (t2 - t1);
+}
+
+// KP patches: the pipeline's curved-patch FASTSIM (patch_model_kp.cpp, curved_fastsim.hpp) on the tabulated patch
+// (LutPatch::stations): one strip per station with its half-length, centre, semi-elliptic traction bound scaled to
+// the normal force, its rigid slip (per-strip creepages at the spin origin, local_creepage.hpp) and the SDEC
+// flexibilities; the strip forces along their local tangents projected on t0 (cos alpha), as force_reference_N.
+void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput& in, const WheelContactOptions& options,
+                     FastsimResult* t, double* fx, double* fy, double* mz) {
+  const int n = options.fastsim_elements;
+  const double width = (q.station_s_max_m - q.station_s_min_m) / kLutStations;
+  FastsimPatch patch;
+  std::vector<FastsimCreepages> creep;
+  std::vector<double> alpha;
+  const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+  double load = 0.0;
+  for (int k = 0; k < kLutStations; ++k) {
+    const double* f = &q.stations[k * kLutStationFields];
+    const double c = f[0], xm = f[1], peak = f[2];
+    if (!(c > 0.0) || !(peak > 0.0)) continue;
+    FastsimStrip strip;
+    strip.y_m = q.station_s_min_m + (k + 0.5) * width;
+    strip.width_m = width;
+    strip.x_lead_m = xm + c;
+    strip.x_trail_m = xm - c;
+    strip.first_element = patch.elements();
+    strip.n_elements = n;
+    for (int e = 0; e < n; ++e) {
+      const double t2 = 1.0 - 2.0 * e / n, t1 = 1.0 - 2.0 * (e + 1.0) / n;  // from the leading edge
+      const double p = peak * SemiEllipseMean(t1, t2);
+      patch.bound_pressure_Pa.push_back(p);
+      load += p * width * 2.0 * c / n;
+    }
+    patch.strips.push_back(strip);
+    double w[3] = {0.0, 0.0, 0.0};
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < 4; ++j) w[r] += f[4 + 4 * r + j] * u[j];
+    // the core's rigid slip is (xi_j - phi_j y L1/L3, eta_j + phi_j x L2/L3) (fastsim_core.cpp)
+    FastsimCreepages cr;
+    cr.phi_per_m = w[2] * L.L3 / L.L2;
+    cr.xi = w[0] + cr.phi_per_m * strip.y_m * L.L1 / L.L3;
+    cr.eta = w[1];
+    creep.push_back(cr);
+    alpha.push_back(f[3]);
+  }
+  *fx = *fy = *mz = 0.0;
+  if (patch.strips.empty() || !(load > 0.0)) {
+    t->status = FastsimStatus::NoContact;
+    return;
+  }
+  for (double& p : patch.bound_pressure_Pa) p *= in.normal_force_N / load;  // the bound carries the normal force
+  std::vector<FastsimStripTotals> totals;
+  SolveFastsimStripsEach(patch, L, creep, in.friction_coefficient, in.rolling_speed_m_per_s, options.fastsim, t, &totals);
+  t->fx_N = t->fy_N = t->mz_Nm = t->adhesion_area_m2 = t->slip_area_m2 = t->frictional_power_W = 0.0;
+  for (size_t j = 0; j < totals.size(); ++j) {
+    *fx += totals[j].fx_N;
+    *fy += totals[j].fy_N * std::cos(alpha[j]);
+    *mz += totals[j].mz_Nm;
+    t->adhesion_area_m2 += totals[j].adhesion_area_m2;
+    t->slip_area_m2 += totals[j].slip_area_m2;
+    t->frictional_power_W += totals[j].frictional_power_W;
+  }
+  t->fx_N = *fx, t->fy_N = *fy, t->mz_Nm = *mz;
+  t->status = t->adhesion_area_m2 > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+}
+
 // Creep forces of one patch: FASTSIM on the stored ellipse, as the hertz model's tangential solve
 // (patch_model_hertz.cpp) does it.
 // u: (1, v_lat / V, yaw_rate / V, axle_rate / V) with the wheelset kinematics, nullptr with given creepages.
@@ -166,7 +246,15 @@ void SolveCreep(const LutPatch& q, const Creepages& cr, const double* u, double 
     in.creepages.eta += cr.spin_per_m * q.centre_x_m * L.L2 / L.L3;
   }
   FastsimResult t;
-  if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant()) {
+  if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant() &&
+      q.station_s_max_m > q.station_s_min_m) {
+    SolveOnStations(q, u, in, options, &t, &p->fx_N, &p->fy_N, &p->mz_Nm);
+    p->tangential_status = to_string(t.status);
+    p->adhesion_area_m2 = t.adhesion_area_m2;
+    p->slip_area_m2 = t.slip_area_m2;
+    p->frictional_power_W = t.frictional_power_W;
+    return;
+  } else if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant()) {
     // KP models: strip by strip with the tabulated rigid slip (LutPatch::slip_map), about the ellipse centre
     double c[8] = {};
     for (int i = 0; i < 8; ++i)

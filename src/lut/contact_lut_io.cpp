@@ -158,6 +158,8 @@ const std::vector<PatchField>& PatchFields() {
       {"b_m", "m", &LutPatch::b_m},
       {"centre_x_m", "m", &LutPatch::centre_x_m},
       {"centre_s_m", "m", &LutPatch::centre_s_m},
+      {"station_s_min_m", "m", &LutPatch::station_s_min_m},
+      {"station_s_max_m", "m", &LutPatch::station_s_max_m},
       {"alpha_c_deg", "deg", &LutPatch::alpha_c_deg},
       {"auto_alpha_c_deg", "deg", &LutPatch::auto_alpha_c_deg},
   };
@@ -200,6 +202,10 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
   AttrString(root, "node_order", "node k = (i_lateral * n_yaw + i_yaw) * n_load + i_load");
   AttrString(root, "status_names", "0 ok, 1 no_contact, 2 not_converged, 3 no_rigid_equilibrium");
   AttrString(root, "model_names", "0 hertz, 1 kp, 2 kpec, 3 conformal, 4 exact (ContactModel)");
+  AttrString(root, "stations",
+             "KP patches: rows = patches, 12 lateral stations x 16 values: half-length c [m], strip centre x [m], "
+             "peak pressure [Pa], normal rotation alpha [rad], rigid slip map 3 x 4 (w_x [-], w_s at x = 0 [-], "
+             "dw_s/dx [1/m]; columns as creepage_map), over [station_s_min_m, station_s_max_m]");
   AttrString(root, "slip_map",
              "KP patches, rows c0..c7 of w_x = c0 + c1 sigma + c2 sigma^2, w_s = c3 + c4 sigma + c5 sigma^2 + "
              "(c6 + c7 sigma) x' (sigma = s - centre_s_m, x' = x - centre_x_m [m]); columns as creepage_map");
@@ -216,7 +222,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
     if (nodes.size() != lut.grid.nodes()) Fail(path, "the table's node count does not match its grid");
     Handle g{H5Gcreate2(root, kSideGroups[s], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
     std::vector<int> status, offset{0}, model;
-    std::vector<double> vertical, roll, map, slip;
+    std::vector<double> vertical, roll, map, slip, stations;
     for (const LutNode& n : nodes) {
       status.push_back(n.status);
       vertical.push_back(n.vertical_m);
@@ -226,6 +232,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
         model.push_back(p.model);
         map.insert(map.end(), p.creepage_map.begin(), p.creepage_map.end());
         slip.insert(slip.end(), p.slip_map.begin(), p.slip_map.end());
+        stations.insert(stations.end(), p.stations.begin(), p.stations.end());
       }
     }
     WriteData(g.id, "node_status", status, "-");
@@ -241,6 +248,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
     }
     WriteData(g.id, "creepage_map", map, "see root attribute creepage_map", 12);
     WriteData(g.id, "slip_map", slip, "see root attribute slip_map", 32);
+    WriteData(g.id, "stations", stations, "see root attribute stations", kLutStations * kLutStationFields);
   }
   if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) Fail(path, "cannot be written");
 }
@@ -315,6 +323,8 @@ ContactLut LoadContactLut(const std::string& path) {
     for (const PatchField& f : PatchFields()) fields.push_back(ReadData<double>(g.id, f.name, path, patches));
     const std::vector<double> map = ReadData<double>(g.id, "creepage_map", path, 12 * patches);
     const std::vector<double> slip = ReadData<double>(g.id, "slip_map", path, 32 * patches);
+    constexpr size_t kS = kLutStations * kLutStationFields;
+    const std::vector<double> stations = ReadData<double>(g.id, "stations", path, kS * patches);
     std::vector<LutNode>& out = lut.nodes[s];
     out.resize(nodes);
     for (size_t k = 0; k < nodes; ++k) {
@@ -328,6 +338,7 @@ ContactLut LoadContactLut(const std::string& path) {
         for (size_t f = 0; f < fields.size(); ++f) p.*(PatchFields()[f].member) = fields[f][r];
         std::copy(map.begin() + 12 * r, map.begin() + 12 * (r + 1), p.creepage_map.begin());
         std::copy(slip.begin() + 32 * r, slip.begin() + 32 * (r + 1), p.slip_map.begin());
+        std::copy(stations.begin() + kS * r, stations.begin() + kS * (r + 1), p.stations.begin());
         n.patches.push_back(p);
       }
     }
