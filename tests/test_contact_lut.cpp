@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -69,8 +68,8 @@ const ContactLut& ConformalLut() {
   return lut;
 }
 
-WheelsetVelocity Velocity() {  // rolling with a little lateral and axle creep and a curve's yaw rate
-  return {10.0, 0.01, 10.0 / 400.0, 10.0 / 0.46 * (1.0 + 1e-3)};
+WheelsetVelocity Velocity() {  // rolling with a little lateral and axle creep and a curve's yaw rate (partial slip)
+  return {10.0, 0.002, 10.0 / 2000.0, 10.0 / 0.46 * (1.0 + 2e-4)};
 }
 
 WheelContactReport Direct(Side side, double y, double psi, double Q, WheelContactOptions o) {
@@ -126,9 +125,9 @@ TEST(ContactLut, NodeValuesEqualTheDirectSolveToRoundOff) {
   EXPECT_GE(two_patch, 1);  // the flange region holds two-point contact
 }
 
-// The conformal model's normal solution at a node is the direct one; its creep forces come from FASTSIM on the SDEC
-// with the patch's tabulated rigid slip (not the curved-patch FASTSIM): they agree with the direct ones within a few
-// per cent of mu Q (the measured difference at these tread nodes is <= 1.6 % of mu Q).
+// The conformal model's normal solution at a node is the direct one; its creep forces come from the curved-patch
+// FASTSIM scheme on the patch resampled on 12 lateral stations (the KP solution has ~31 strips), so they agree with
+// the direct ones to the resampling error: within 1 % of mu Q (measured <= 0.5 % on the default scenario's tread).
 TEST(ContactLut, ConformalNodeNormalExactCreepClose) {
   const ContactLut& lut = ConformalLut();
   for (double y_mm : {-2.0, 0.5, 3.0}) {
@@ -139,8 +138,9 @@ TEST(ContactLut, ConformalNodeNormalExactCreepClose) {
     for (size_t j = 0; j < d.patches.size(); ++j) {
       EXPECT_NEAR(l.patches[j].fn_N, d.patches[j].fn_N, 1e-9 * Q);
       EXPECT_NEAR(l.patches[j].y_contact_rail_m, d.patches[j].y_contact_rail_m, 1e-15);
-      EXPECT_NEAR(l.patches[j].fx_N, d.patches[j].fx_N, 0.03 * 0.3 * Q) << "y " << y_mm;
-      EXPECT_NEAR(l.patches[j].fy_N, d.patches[j].fy_N, 0.03 * 0.3 * Q) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].fx_N, d.patches[j].fx_N, 0.01 * 0.3 * Q) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].fy_N, d.patches[j].fy_N, 0.01 * 0.3 * Q) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].mz_Nm, d.patches[j].mz_Nm, 0.05 * std::fabs(d.patches[j].mz_Nm) + 1.0) << "y " << y_mm;
     }
   }
 }
@@ -279,6 +279,8 @@ TEST(ContactLut, FileRoundTripIsExact) {
         EXPECT_EQ(p.centre_s_m, q.centre_s_m);
         EXPECT_EQ(p.creepage_map, q.creepage_map);
         EXPECT_EQ(p.slip_map, q.slip_map);
+        EXPECT_EQ(p.stations, q.stations);
+        EXPECT_EQ(p.station_s_max_m, q.station_s_max_m);
       }
     }
   }
