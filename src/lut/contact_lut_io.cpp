@@ -3,6 +3,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <functional>
 #include <type_traits>
 #include <mutex>
@@ -107,9 +108,18 @@ void WriteData(hid_t group, const char* name, const std::vector<T>& v, const std
   const bool is_double = std::is_same<T, double>::value;
   hsize_t dims[2] = {columns ? v.size() / columns : v.size(), columns};
   Handle space{H5Screate_simple(columns ? 2 : 1, dims, nullptr), H5Sclose};
-  Handle set{H5Dcreate2(group, name, is_double ? H5T_IEEE_F64LE : H5T_STD_I32LE, space.id, H5P_DEFAULT, H5P_DEFAULT,
+  // larger datasets: chunked with shuffle + deflate (lossless; h5py reads them as any other)
+  Handle create{H5Pcreate(H5P_DATASET_CREATE), H5Pclose};
+  if (v.size() >= 4096) {
+    hsize_t chunk[2] = {std::min<hsize_t>(dims[0], columns ? std::max<hsize_t>(1, 65536 / columns) : 65536), columns};
+    H5Pset_chunk(create.id, columns ? 2 : 1, chunk);
+    H5Pset_shuffle(create.id);
+    H5Pset_deflate(create.id, 4);
+  }
+  Handle set{H5Dcreate2(group, name, is_double ? H5T_IEEE_F64LE : H5T_STD_I32LE, space.id, H5P_DEFAULT, create.id,
                         H5P_DEFAULT),
              H5Dclose};
+  if (set.id < 0) throw InputError(std::string("contact LUT file: dataset '") + name + "' cannot be created");
   if (!v.empty()) H5Dwrite(set.id, is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
   AttrString(set.id, "units", units);
 }
