@@ -1,28 +1,30 @@
 #pragma once
 // Contact look-up table (LUT) of one wheel-rail pair (after paper 004, Santamaria et al. 2009: tabulated elastic
-// multi-patch contact for dynamics; docs/architecture.md "Contact look-up table", interpolation rule in
-// docs/physics-reference.md §13).
+// multi-patch contact for dynamics; docs/architecture.md "Contact look-up table", interpolation and creep forces in
+// docs/physics-reference.md §15).
 //
 // TABLE: per wheel side, a grid over the wheelset lateral shift y, yaw psi and the wheel's vertical load Q. At each
 // node the wheelset's vertical position and roll are those of the rigid two-rail equilibrium at (y, psi), exactly
 // as the quasi-static curving evaluates a wheelset (kinematics_quasistatic.hpp), and SolveWheelContact solves the
 // wheel in load control with the PRESSURE balance (the normal solution is then independent of the velocity). Each
-// node keeps every patch of that normal solution, ordered along the rail (gauge side first), and the affine map
-// from the wheelset velocities to the patch's rigid creepages (the pipeline's own creepages at the node, see
-// LutPatch::creepage_map).
+// node keeps every patch of that normal solution, ordered along the rail (gauge side first), and what the creep
+// forces need at any velocity: the affine map from the wheelset velocities to the reference creepages (the
+// pipeline's own creepages at four velocities, LutPatch::creepage_map), and for the KP models the patch itself on
+// 12 lateral stations with the affine map of each strip's rigid slip (LutPatch::stations).
 //
 // EVALUATION (EvaluateContactLut, MakeLutContactFunction): inside a grid cell whose eight corner nodes have one
-// patch topology (same patch count, same model per patch, each patch within match_distance_m along the rail of
+// patch topology (same status, patch count, model per patch, each patch within match_distance_m along the rail of
 // its partner) every patch field is interpolated tri-linearly, the load-dependent fields normalised by their
-// Hertzian power of Q (forces / Q, lengths / Q^(1/3), areas, approach / Q^(2/3), pressure / Q^(1/3)). Where the
-// topology changes inside the cell, the topology of the nearest corner node is taken and only the corners with
-// that topology are interpolated (weights renormalised): a tread patch and a flange patch are never averaged and a
-// contact jump is placed within one grid step. Creep forces are solved at evaluation time: rigid creepages of the
-// interpolated map at the actual velocity, then FASTSIM on the stored ellipse (a, b: Hertz, or the SDEC of the KP
-// models) with the options' friction, material and FASTSIM settings (SolveFastsimHertz, the hertz model's
-// tangential solver). With the TOTAL load balance (the default) the effective load Q_eff of the pressure balance
-// is found such that Q_eff + (vertical creep forces at Q_eff) = Q (fixed point): the same push-down the direct
-// solver's total balance finds, since the normal solution depends only on the push.
+// Hertzian power of Q (forces / Q; lengths and pressures / Q^(1/3); area, approach / Q^(2/3)). Where the topology
+// changes inside the cell, the topology of the nearest corner node is taken and only the corners with that topology
+// are interpolated (weights renormalised): a tread patch and a flange patch are never averaged and a contact jump
+// is placed within one grid step. Creep forces are solved at evaluation time for the actual velocity: hertz patches
+// by FASTSIM on the stored ellipse with the interpolated creepages (the pipeline's hertz tangential solve); KP
+// patches (kp, kpec, conformal) by the curved-patch FASTSIM scheme on the interpolated stations with per-strip rigid
+// slip and the SDEC flexibilities (with given creepages or a slip-dependent friction law: FASTSIM on the SDEC
+// ellipse centred at the patch centroid). With the TOTAL load balance (the default) the effective load Q_eff of the
+// pressure balance is found such that Q_eff + (vertical creep forces at Q_eff) = Q (secant): the same push-down the
+// direct solver's total balance finds, since the normal solution depends only on the push.
 // The pose's vertical position and roll are NOT used (the table's are those of the rigid equilibrium at (y, psi));
 // a query outside the table is an InputError naming the axis and value (never extrapolated).
 #include <array>
@@ -126,7 +128,7 @@ struct ContactLut {
 };
 
 struct ContactLutBuildOptions {
-  ContactLutGrid grid;
+  ContactLutGrid grid;  // the axes (ContactLutGrid::validate)
   // model, material, elastic flange, KP strips, candidate options of every node (the load, load balance,
   // creepages and tangential switches are set by the build)
   WheelContactOptions contact;

@@ -36,7 +36,7 @@ struct Percentiles {
 };
 
 struct ContactLutCheckResult {
-  int samples = 0;
+  int samples = 0;                // random poses drawn
   int single_topology = 0;        // samples in single-topology cells (both solves Ok)
   int single_topology_mismatch = 0;  // ... where the direct topology still differs (a sub-cell patch the grid missed)
   int jump_samples = 0;           // samples in cells with a topology change (both Ok)

@@ -1,4 +1,5 @@
 // conforma lut build|info|eval|check: the contact look-up table of one wheel-rail pair (contact_lut.hpp).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,24 +20,37 @@ namespace conforma::cli {
 
 namespace {
 
-// "min:max:step" (inclusive, the last value max when it is reached within step/1000) or "a,b,c"; scaled to SI.
+// Comma-separated items, each a value or "min:max:step" (inclusive; max itself when reached within step/1000),
+// scaled to SI, sorted, values closer than 1e-9 of the span merged: "-10:10:0.1,5.5:8:0.05" refines a range.
 std::vector<double> ParseAxis(const std::string& text, const char* option, double scale) {
   std::vector<double> v;
   try {
-    if (text.find(':') != std::string::npos) {
+    for (const std::string& item : SplitCommaList(text)) {
+      if (item.find(':') == std::string::npos) {
+        size_t used = 0;
+        v.push_back(std::stod(item, &used) * scale);
+        if (used != item.size()) throw InputError("");
+        continue;
+      }
       double lo, hi, step;
       char c1, c2;
-      std::istringstream in(text);
+      std::istringstream in(item);
       if (!(in >> lo >> c1 >> hi >> c2 >> step) || c1 != ':' || c2 != ':' || !(step > 0.0) || !(hi > lo))
         throw InputError("");
       const long n = std::lround(std::floor((hi - lo) / step + 1e-3));
       if (n > 100000) throw InputError("");
       for (long k = 0; k <= n; ++k) v.push_back((lo + k * step) * scale);
-    } else {
-      for (const std::string& item : SplitCommaList(text)) v.push_back(std::stod(item) * scale);
     }
   } catch (const std::exception&) {
-    throw InputError(std::string(option) + " '" + text + "': expected min:max:step or a comma list");
+    throw InputError(std::string(option) + " '" + text + "': expected values and min:max:step ranges, comma-separated");
+  }
+  std::sort(v.begin(), v.end());
+  if (!v.empty()) {
+    const double tol = 1e-9 * std::max(1e-30, v.back() - v.front());
+    std::vector<double> merged{v[0]};
+    for (double x : v)
+      if (x - merged.back() > tol) merged.push_back(x);
+    v = merged;
   }
   return v;
 }
@@ -120,7 +134,10 @@ void RegisterLutCommand(CLI::App& app) {
   {
     struct Build {
       LutArgs args;
-      std::string out = "contact_lut.h5", y_mm = "-10:10:0.1", yaw_mrad = "-8:8:2", load_kN = "20:95:15";
+      // default grid: the default scenario's pair (docs/architecture.md "Contact look-up table"); y refined where
+      // S1002 meets the flange (|y| 5.5-8 mm, contact point moving fast)
+      std::string out = "contact_lut.h5", y_mm = "-10:10:0.1,-8:-5.5:0.05,5.5:8:0.05", yaw_mrad = "-8:8:2",
+                  load_kN = "20:95:15";
       double match_mm = 3.0;
       int threads = 0;
     };

@@ -1,5 +1,5 @@
 // Evaluation of a contact look-up table (contact_lut.hpp): topology-preserving interpolation of the normal
-// solution (docs/physics-reference.md §13), creepages from the tabulated affine map, FASTSIM on the stored ellipse.
+// solution, creepages from the tabulated affine maps, FASTSIM on the tabulated patch (docs/physics-reference.md §15).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
