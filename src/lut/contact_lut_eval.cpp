@@ -95,7 +95,9 @@ struct NormalAtPose {
   LutCellInfo cell;
 };
 
-NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q) {
+// Q: where the table is read; Q_scale: the load the normalised fields are scaled back to (the same; a Hertzian
+// rescaling of the patches of Q to the total balance's effective load was tried and was worse: see §15.3).
+NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q, double Q_scale) {
   const ContactLutGrid& g = lut.grid;
   size_t iy, ip, iq;
   double ty, tp, tq;
@@ -142,7 +144,7 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   out.patches.resize(np);
   for (size_t j = 0; j < np; ++j) {
     out.patches[j] = ref.patches[j];  // the integer and non-interpolated fields (model, alpha_c, extents)
-    Unpack(&acc[j * kFields], Q, &out.patches[j]);
+    Unpack(&acc[j * kFields], Q_scale, &out.patches[j]);
   }
   return out;
 }
@@ -310,10 +312,11 @@ bool IsKpModel(ContactModel m) {
   return m == ContactModel::Kp || m == ContactModel::Kpec || m == ContactModel::Conformal;
 }
 
-// The report at the pressure-balanced load Q_eff (what the direct solve gives with LoadBalance::Pressure).
+// The report at the pressure-balanced load Q_eff read at Q_table (= Q_eff; what the direct solve gives with
+// LoadBalance::Pressure).
 WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose& pose, const WheelsetVelocity& velocity,
-                            const WheelContactOptions& options, double Q_eff, LutCellInfo* info) {
-  const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_eff);
+                            const WheelContactOptions& options, double Q_table, double Q_eff, LutCellInfo* info) {
+  const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_table, Q_eff);
   if (info) *info = n.cell;
   WheelContactReport report;
   report.side = side;
@@ -422,7 +425,7 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
   }
   const double Q = options.vertical_load_N;
   const bool total = options.load_balance == LoadBalance::Total && options.solve_tangential;
-  WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, info);
+  WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, Q, info);
   if (total && r.status == WheelContactStatus::Ok) {
     // Total-force balance: Q_eff + C(Q_eff) = Q, C = vertical creep forces (header comment); secant iteration
     // from the fixed-point step
@@ -442,7 +445,7 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
                         lut.grid.load_N.back() * 1e-3);
           throw InputError(text);
         }
-        r = ReportAt(lut, side, pose, velocity, options, x1, info);
+        r = ReportAt(lut, side, pose, velocity, options, x1, x1, info);
         ++evaluations;
         if (r.status != WheelContactStatus::Ok) break;
         const double g1 = residual(r);
