@@ -23,8 +23,9 @@
 // patches (kp, kpec, conformal) by the curved-patch FASTSIM scheme on the interpolated stations with per-strip rigid
 // slip and the SDEC flexibilities (with given creepages or a slip-dependent friction law: FASTSIM on the SDEC
 // ellipse centred at the patch centroid). With the TOTAL load balance (the default) the effective load Q_eff of the
-// pressure balance is found such that Q_eff + (vertical creep forces at Q_eff) = Q (secant): the same push-down the
-// direct solver's total balance finds, since the normal solution depends only on the push.
+// pressure balance is found such that Q_eff + (vertical creep forces at Q_eff) = Q (secant): close to the push the
+// direct solver's total balance finds on the tread; at a flange, where the vertical creep forces are large, the
+// pipeline keeps the candidate regions of Q pressed deeper and the two differ (docs/physics-reference.md §15.4).
 // The pose's vertical position and roll are NOT used (the table's are those of the rigid equilibrium at (y, psi));
 // a query outside the table is an InputError naming the axis and value (never extrapolated).
 #include <array>
