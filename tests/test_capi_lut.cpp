@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <string>
 
+#include <unistd.h>
+
 #include "conforma/contact_lut.hpp"
 #include "conforma/contact_lut_io.hpp"
 #include "conforma/standard_profiles.hpp"
@@ -26,10 +28,15 @@ std::string TableFile() {
     b.grid.yaw_rad = {-2e-3, 0.0, 2e-3};
     b.grid.load_N = {30e3, 50e3, 70e3};
     b.contact.model = conforma::ContactModel::Hertz;
-    const std::string file = (std::filesystem::temp_directory_path() / "conforma_test_capi_lut.h5").string();
+    const std::string file = (std::filesystem::temp_directory_path() /
+                              ("conforma_test_capi_lut_" + std::to_string(getpid()) + ".h5")).string();
     conforma::SaveContactLut(conforma::BuildContactLut(g, b), file);
     return file;
   }();
+  static const struct Remove {  // the file goes with the process
+    std::string file;
+    ~Remove() { std::filesystem::remove(file); }
+  } remove{path};
   return path;
 }
 

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+
+#include <unistd.h>
 #include <type_traits>
 
 #include "conforma/contact_lut.hpp"
@@ -251,7 +253,8 @@ TEST(ContactLut, TotalForceBalanceCarriesTheLoad) {
 
 TEST(ContactLut, FileRoundTripIsExact) {
   const ContactLut& lut = ConformalLut();
-  const std::string path = (std::filesystem::temp_directory_path() / "conforma_test_contact_lut.h5").string();
+  const std::string path = (std::filesystem::temp_directory_path() /
+                                ("conforma_test_contact_lut_" + std::to_string(getpid()) + ".h5")).string();
   SaveContactLut(lut, path);
   const ContactLut back = LoadContactLut(path);
   std::filesystem::remove(path);
