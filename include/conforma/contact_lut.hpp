@@ -1,7 +1,7 @@
 #pragma once
 // Contact look-up table (LUT) of one wheel-rail pair (after paper 004, Santamaria et al. 2009: tabulated elastic
 // multi-patch contact for dynamics; docs/architecture.md "Contact look-up table", interpolation and creep forces in
-// docs/physics-reference.md §15).
+// docs/physics-reference.md §16).
 //
 // TABLE: per wheel side, a grid over the wheelset lateral shift y, yaw psi and the wheel's vertical load Q. At each
 // node the wheelset's vertical position and roll are those of the rigid two-rail equilibrium at (y, psi), exactly
@@ -25,7 +25,7 @@
 // ellipse centred at the patch centroid). With the TOTAL load balance (the default) the effective load Q_eff of the
 // pressure balance is found such that Q_eff + (vertical creep forces at Q_eff) = Q (secant): close to the push the
 // direct solver's total balance finds on the tread; at a flange, where the vertical creep forces are large, the
-// pipeline keeps the candidate regions of Q pressed deeper and the two differ (docs/physics-reference.md §15.4).
+// pipeline keeps the candidate regions of Q pressed deeper and the two differ (docs/physics-reference.md §16.4).
 // The pose's vertical position and roll are NOT used (the table's are those of the rigid equilibrium at (y, psi));
 // a query outside the table is an InputError naming the axis and value (never extrapolated).
 #include <array>

@@ -1,5 +1,5 @@
 // Evaluation of a contact look-up table (contact_lut.hpp): topology-preserving interpolation of the normal
-// solution, creepages from the tabulated affine maps, FASTSIM on the tabulated patch (docs/physics-reference.md §15).
+// solution, creepages from the tabulated affine maps, FASTSIM on the tabulated patch (docs/physics-reference.md §16).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -96,7 +96,7 @@ struct NormalAtPose {
 };
 
 // Q: where the table is read; Q_scale: the load the normalised fields are scaled back to (the same; a Hertzian
-// rescaling of the patches of Q to the total balance's effective load was tried and was worse: see §15.3).
+// rescaling of the patches of Q to the total balance's effective load was tried and was worse: see §16.4).
 NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q, double Q_scale) {
   const ContactLutGrid& g = lut.grid;
   size_t iy, ip, iq;
