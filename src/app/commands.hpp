@@ -16,6 +16,7 @@ void RegisterThresholdCommand(CLI::App& app);  // conforma threshold: conformity
 void RegisterStressCommand(CLI::App& app);     // conforma stress: numerical stability stress suite
 void RegisterCurvingCommand(CLI::App& app);    // conforma curving: curving kinematics and wheel forces per class
 void RegisterValidateCommand(CLI::App& app);   // conforma validate: wear simulation against measured wheels
+void RegisterTrackCommand(CLI::App& app);      // conforma track: track irregularities from a PSD
 void RegisterLutCommand(CLI::App& app);        // conforma lut: contact look-up table build / info / eval / check
 
 // Run-time files of the commands (conforma/data_paths.hpp), resolved when a command runs, not when it is declared

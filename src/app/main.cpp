@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterStressCommand(app);
   conforma::cli::RegisterCurvingCommand(app);
   conforma::cli::RegisterValidateCommand(app);
+  conforma::cli::RegisterTrackCommand(app);
   conforma::cli::RegisterLutCommand(app);
   try {
     app.parse(argc, argv);

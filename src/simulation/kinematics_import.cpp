@@ -10,6 +10,7 @@
 #include <sstream>
 #include <vector>
 
+#include "conforma/csv_columns.hpp"
 #include "conforma/error.hpp"
 
 namespace conforma {
@@ -24,32 +25,6 @@ constexpr int kRequiredCount = kWeight;  // columns before kWeight are required
 const std::array<const char*, kColumnCount> kNames = {
     "time_s",     "wheelset",    "y_m",         "z_m",          "roll_rad", "yaw_rad",        "dy_m_s",
     "dyaw_rad_s", "speed_m_s",   "omega_rad_s", "load_left_N", "load_right_N", "weight", "curvature_per_m"};
-
-std::string Trim(const std::string& s) {
-  const size_t b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return std::string();
-  const size_t e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> SplitCells(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) cells.push_back(Trim(cell));
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
-
-double ParseNumber(const std::string& cell, const std::string& column, const std::string& path, int line) {
-  if (cell.empty()) throw InputError(path, line, "empty cell in column '" + column + "'");
-  char* end = nullptr;  // ERANGE on underflow is fine (subnormals round-trip); overflow gives inf, caught below
-  const double v = std::strtod(cell.c_str(), &end);
-  if (end != cell.c_str() + cell.size())
-    throw InputError(path, line, "column '" + column + "': '" + cell + "' is not a number");
-  if (!std::isfinite(v)) throw InputError(path, line, "column '" + column + "': value must be finite");
-  return v;
-}
 
 }  // namespace
 
@@ -66,9 +41,9 @@ KinematicsSeries ImportKinematicsCsv(const std::string& path) {
   int line_no = 0;
   while (std::getline(in, line)) {
     ++line_no;
-    const std::string t = Trim(line);
+    const std::string t = TrimCsvCell(line);
     if (t.empty() || t[0] == '#') continue;
-    const std::vector<std::string> cells = SplitCells(t);
+    const std::vector<std::string> cells = SplitCsvCells(t);
     if (!have_header) {
       header_cells = cells.size();
       for (size_t k = 0; k < cells.size(); ++k)
@@ -89,7 +64,7 @@ KinematicsSeries ImportKinematicsCsv(const std::string& path) {
                                           std::to_string(cells.size()));
     std::array<double, kColumnCount> v{};
     for (int c = 0; c < kColumnCount; ++c)
-      if (index[c] >= 0) v[c] = ParseNumber(cells[index[c]], kNames[c], path, line_no);
+      if (index[c] >= 0) v[c] = ParseCsvNumber(cells[index[c]], kNames[c], path, line_no);
     if (v[kWheelset] < 0.0 || v[kWheelset] != std::floor(v[kWheelset]) || v[kWheelset] > 1e6)
       throw InputError(path, line_no, "column 'wheelset' must be a non-negative integer");
     if (v[kLoadLeft] < 0.0) throw InputError(path, line_no, "column 'load_left_N' must be >= 0");
