@@ -12,12 +12,15 @@
 
 #include <Eigen/Geometry>
 
+#include "conforma/contact_lut.hpp"
+#include "conforma/contact_lut_io.hpp"
 #include "conforma/error.hpp"
 #include "interop.hpp"
 
 struct conforma_model {
   std::unique_ptr<conforma::WheelsetTrackGeometry> geometry;
   conforma::WheelContactOptions contact;  // model, material, friction, discretisation (load set per call)
+  std::shared_ptr<const conforma::ContactLut> lut;  // conforma_model_create_with_lut: contacts from this table
   mutable std::mutex error_mutex;
   mutable std::string last_error;
 };
@@ -109,7 +112,9 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   for (Side side : {Side::Left, Side::Right}) {
     const int i = conforma::side_index(side);
     options.vertical_load_N = load_control ? e.vertical_load_N[i] : -1.0;
-    const conforma::WheelContactReport r = SolveWheelContact(*model.geometry, side, pose, velocity, options);
+    const conforma::WheelContactReport r =
+        model.lut ? conforma::EvaluateContactLut(*model.lut, *model.geometry, side, pose, velocity, options)
+                  : SolveWheelContact(*model.geometry, side, pose, velocity, options);
     FillWheel(*model.geometry, side, r, &result->wheel[i]);
   }
 }
@@ -193,6 +198,36 @@ conforma_status conforma_model_create(const conforma_track_params* track, const 
   } catch (...) {
     CopyText("internal error", error_text, error_text_size);
     return CONFORMA_ERROR_INTERNAL;
+  }
+}
+
+conforma_status conforma_model_create_with_lut(const conforma_track_params* track,
+                                               const conforma_contact_params* contact, const char* lut_path,
+                                               conforma_model** model, char* error_text, size_t error_text_size) {
+  if (!lut_path) {
+    if (model) *model = nullptr;
+    CopyText("conforma_model_create_with_lut: lut_path is NULL", error_text, error_text_size);
+    return CONFORMA_ERROR_NULL;
+  }
+  const conforma_status status = conforma_model_create(track, contact, model, error_text, error_text_size);
+  if (status != CONFORMA_OK) return status;
+  try {
+    auto lut = std::make_shared<const conforma::ContactLut>(conforma::LoadContactLut(lut_path));
+    // the table's elastic-flange rule (not a parameter of conforma_contact_params); the model, material and track
+    // must be the table's (checked here once, and by every evaluation)
+    (*model)->contact.max_touching_contact_angle_rad = lut->header.max_touching_contact_angle_rad;
+    conforma::WheelContactOptions probe = (*model)->contact;
+    probe.vertical_load_N = 0.0;  // an unloaded wheel: only the compatibility checks run
+    conforma::EvaluateContactLut(*lut, *(*model)->geometry, Side::Left, conforma::WheelsetPose{},
+                                 conforma::WheelsetVelocity{1.0, 0.0, 0.0, 0.0}, probe);
+    (*model)->lut = std::move(lut);
+    return CONFORMA_OK;
+  } catch (const std::exception& e) {
+    const bool input = dynamic_cast<const conforma::InputError*>(&e) != nullptr;
+    CopyText(input ? std::string(e.what()) : std::string("internal error: ") + e.what(), error_text, error_text_size);
+    conforma_model_destroy(*model);
+    *model = nullptr;
+    return input ? CONFORMA_ERROR_INPUT : CONFORMA_ERROR_INTERNAL;
   }
 }
 

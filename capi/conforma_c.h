@@ -196,6 +196,16 @@ CONFORMA_C_EXPORT conforma_status conforma_model_create(const conforma_track_par
                                                         const conforma_contact_params* contact,
                                                         conforma_model** model, char* error_text,
                                                         size_t error_text_size);
+/* The same handle, but every load-control evaluation reads the contact look-up table in lut_path (an HDF5 file of
+ * `conforma lut build`, include/conforma/contact_lut.hpp) instead of solving: ~10-40 times faster. track and contact
+ * must be those the table was made for (model, material, profiles, gauge, radius: CONFORMA_ERROR_INPUT otherwise);
+ * the table's elastic-flange rule is taken over. With the table the pose's vertical_m and roll_rad are not used (the
+ * table's are those of the rigid equilibrium at lateral_m, yaw_rad), CONFORMA_GIVEN_APPROACH is CONFORMA_ERROR_INPUT,
+ * and a pose or load outside the table is CONFORMA_ERROR_INPUT naming the axis (never extrapolated). */
+CONFORMA_C_EXPORT conforma_status conforma_model_create_with_lut(const conforma_track_params* track,
+                                                                 const conforma_contact_params* contact,
+                                                                 const char* lut_path, conforma_model** model,
+                                                                 char* error_text, size_t error_text_size);
 /* Frees the model (NULL is ignored). No evaluation may be running on it. */
 CONFORMA_C_EXPORT void conforma_model_destroy(conforma_model* model);
 

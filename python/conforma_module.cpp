@@ -11,6 +11,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "conforma/contact_lut.hpp"
+#include "conforma/contact_lut_io.hpp"
 #include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
 #include "conforma/profile_by_name.hpp"
@@ -224,6 +226,34 @@ py::dict ContactAtPose(const Track& track, const std::string& side, double later
   return WheelDict(*track.geometry, r, fields);
 }
 
+// One wheel from a contact look-up table (contact_lut.hpp) at (lateral_m, yaw_rad) and load_N: model, material and
+// elastic flange are the table's; track must be the table's (InputError otherwise).
+py::dict LutEvaluate(const ContactLut& lut, const Track& track, const std::string& side, double lateral_m,
+                     double yaw_rad, double load_N, double speed_m_s, double lateral_velocity_m_s,
+                     double yaw_rate_rad_s, std::optional<double> axle_angular_velocity_rad_s, double mu, int grid,
+                     const std::string& load_balance) {
+  Side s = Side::Left;
+  if (side == "right") s = Side::Right;
+  else if (side != "left") throw InputError("side must be 'left' or 'right', not '" + side + "'");
+  WheelContactOptions o;
+  o.model = lut.header.model;
+  o.material = lut.header.material;
+  o.max_touching_contact_angle_rad = lut.header.max_touching_contact_angle_rad;
+  o.vertical_load_N = load_N;
+  o.friction_coefficient = mu;
+  o.fastsim_elements = grid;
+  o.load_balance = ParseLoadBalance(load_balance);
+  const double r0 = track.geometry->setup().nominal_radius_m[0];
+  const WheelsetVelocity v{speed_m_s, lateral_velocity_m_s, yaw_rate_rad_s,
+                           axle_angular_velocity_rad_s.value_or(speed_m_s / r0)};
+  WheelContactReport r;
+  {
+    py::gil_scoped_release release;
+    r = EvaluateContactLut(lut, *track.geometry, s, WheelsetPose{lateral_m, 0.0, 0.0, yaw_rad}, v, o);
+  }
+  return WheelDict(*track.geometry, r, false);
+}
+
 py::list Manchester(const std::string& model, bool creepages_from_file, const std::string& data_dir,
                     int fastsim_elements) {
   ManchesterOptions o;
@@ -402,6 +432,23 @@ pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear
         py::arg("exact_element_m") = WheelContactOptions{}.exact_element_size_m,
         "One wheel at a given wheelset pose and velocities (the multibody entry point); load_N < 0 (default): "
         "pose as given, otherwise load control starting from vertical_m. Returns a wheel dict as contact().");
+  py::class_<ContactLut, std::shared_ptr<ContactLut>>(m, "ContactLut", R"doc(A contact look-up table file of
+`conforma lut build` (HDF5; include/conforma/contact_lut.hpp), loaded once and evaluated at any pose inside it.)doc")
+      .def(py::init([](const std::string& path) { return std::make_shared<ContactLut>(LoadContactLut(path)); }),
+           py::arg("path"))
+      .def_property_readonly("model", [](const ContactLut& l) { return std::string(to_string(l.header.model)); })
+      .def_property_readonly("wheel_profile", [](const ContactLut& l) { return l.header.wheel_profile; })
+      .def_property_readonly("rail_profile", [](const ContactLut& l) { return l.header.rail_profile; })
+      .def_property_readonly("lateral_m", [](const ContactLut& l) { return l.grid.lateral_m; })
+      .def_property_readonly("yaw_rad", [](const ContactLut& l) { return l.grid.yaw_rad; })
+      .def_property_readonly("load_N", [](const ContactLut& l) { return l.grid.load_N; })
+      .def("evaluate", &LutEvaluate, py::arg("track"), py::arg("side"), py::arg("lateral_m"), py::arg("yaw_rad") = 0.0,
+           py::arg("load_N") = 50e3, py::arg("speed_m_s") = 2.0, py::arg("lateral_velocity_m_s") = 0.0,
+           py::arg("yaw_rate_rad_s") = 0.0, py::arg("axle_angular_velocity_rad_s") = py::none(), py::arg("mu") = 0.3,
+           py::arg("grid") = 30, py::arg("load_balance") = "total",
+           "One wheel from the table at (lateral_m, yaw_rad) carrying load_N (vertical position and roll of the "
+           "rigid equilibrium, as the table); track must be the one the table was made for. Returns a wheel dict as "
+           "contact() (without fields); outside the table InputError naming the axis.");
   m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,
         py::arg("data_dir") = SharedDataDir(), py::arg("fastsim_elements") = 30,
         "Manchester benchmark A-2.2 (left wheel, 21 cases) against CONTACT's results: one dict per case with the "

@@ -30,6 +30,7 @@ import pathlib as _pathlib
 
 from . import _core, types  # noqa: F401
 from ._core import (  # noqa: F401
+    ContactLut,
     InputError,
     Profile,
     Track,

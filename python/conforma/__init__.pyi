@@ -3,6 +3,7 @@ import pathlib
 from typing import Any, Dict, List, Optional, Union
 
 from . import types as types
+from ._core import ContactLut as ContactLut
 from ._core import InputError as InputError
 from ._core import Profile as Profile
 from ._core import Track as Track

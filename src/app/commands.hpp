@@ -18,6 +18,7 @@ void RegisterCurvingCommand(CLI::App& app);    // conforma curving: curving kine
 void RegisterValidateCommand(CLI::App& app);   // conforma validate: wear simulation against measured wheels
 void RegisterTrackCommand(CLI::App& app);      // conforma track: track irregularities from a PSD
 void RegisterDynamicsCommand(CLI::App& app);   // conforma dynamics: time-domain lateral vehicle dynamics, eigenvalues
+void RegisterLutCommand(CLI::App& app);        // conforma lut: contact look-up table build / info / eval / check
 
 // Run-time files of the commands (conforma/data_paths.hpp), resolved when a command runs, not when it is declared
 // (src/app/run_time_paths.cpp):

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterValidateCommand(app);
   conforma::cli::RegisterTrackCommand(app);
   conforma::cli::RegisterDynamicsCommand(app);
+  conforma::cli::RegisterLutCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,52 @@
+"""conforma.ContactLut: a table written by `conforma lut build` loads, evaluates like `conforma lut eval --json`, and
+refuses a pose outside it; its HDF5 file is readable with h5py when that is installed."""
+import json
+import subprocess
+
+import pytest
+
+import conforma
+
+ARGS = ["--model", "hertz", "--load-N", "50000"]
+
+
+@pytest.fixture(scope="module")
+def table(cli, tmp_path_factory):
+    path = str(tmp_path_factory.mktemp("lut") / "t.h5")
+    subprocess.run([cli, "lut", "build", "--out", path, "--model", "hertz", "--y-mm", "-2:2:0.5", "--yaw-mrad", "0,2",
+                    "--load-kN", "40,60"], check=True, capture_output=True)
+    return path
+
+
+def test_evaluation_matches_the_command_line(cli, table):
+    lut = conforma.ContactLut(table)
+    assert lut.model == "hertz" and lut.wheel_profile == "S1002"
+    assert len(lut.lateral_m) == 9 and lut.load_N == [40e3, 60e3]
+    wheel = lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, load_N=50e3, load_balance="total")
+    out = subprocess.run([cli, "lut", "eval", table, "--y-mm", "0.7", "--yaw-mrad", "1", "--side", "left", "--json"]
+                         + ARGS, check=True, capture_output=True, text=True).stdout
+    ref = json.loads(out)["wheels"][0]
+    assert wheel["status"] == ref["status"] == "ok"
+    assert len(wheel["patches"]) == len(ref["patches"])
+    for a, b in zip(wheel["patches"], ref["patches"]):
+        assert a["fn_N"] == pytest.approx(b["fn_N"], rel=1e-12)
+        assert a["fy_N"] == pytest.approx(b["fy_N"], rel=1e-9, abs=1e-9)
+
+
+def test_outside_the_table_is_an_input_error(table):
+    lut = conforma.ContactLut(table)
+    with pytest.raises(conforma.InputError, match="lateral shift y"):
+        lut.evaluate(conforma.Track(), "left", 3e-3)
+    with pytest.raises(conforma.InputError):
+        conforma.ContactLut(table + ".missing")
+
+
+def test_file_is_self_describing(table):
+    h5py = pytest.importorskip("h5py")
+    with h5py.File(table, "r") as f:
+        model = f.attrs["model"]
+        assert (model.decode() if isinstance(model, bytes) else model) == "hertz"
+        units = f["left/fn_N"].attrs["units"]
+        assert (units.decode() if isinstance(units, bytes) else units) == "N"
+        offsets = f["left/node_patch_offset"][:]
+        assert len(offsets) == 9 * 2 * 2 + 1 and offsets[-1] == len(f["left/fn_N"])

@@ -1,0 +1,474 @@
+// Evaluation of a contact look-up table (contact_lut.hpp): topology-preserving interpolation of the normal
+// solution, creepages from the tabulated affine maps, FASTSIM on the tabulated patch (docs/physics-reference.md §17).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "conforma/contact_lut.hpp"
+#include "conforma/contact_plausibility.hpp"
+#include "conforma/error.hpp"
+#include "conforma/fastsim.hpp"
+#include "conforma/friction_law.hpp"
+
+namespace conforma {
+
+namespace {
+
+// Cell of one axis: lower index and the fraction t in [0, 1]. InputError outside the axis (no extrapolation).
+void Locate(const std::vector<double>& axis, double v, const char* name, const char* unit, double unit_scale,
+            size_t* i, double* t) {
+  const double lo = axis.front(), hi = axis.back();
+  if (!std::isfinite(v) || v < lo || v > hi) {
+    char text[256];
+    std::snprintf(text, sizeof text, "contact LUT: %s = %.9g %s is outside the table [%.9g, %.9g] %s (not extrapolated)",
+                  name, v * unit_scale, unit, lo * unit_scale, hi * unit_scale, unit);
+    throw InputError(text);
+  }
+  size_t k = static_cast<size_t>(std::upper_bound(axis.begin(), axis.end(), v) - axis.begin());
+  k = std::min(std::max<size_t>(k, 1), axis.size() - 1) - 1;
+  *i = k;
+  *t = (v - axis[k]) / (axis[k + 1] - axis[k]);
+}
+
+bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
+  if (a.status != b.status || a.patches.size() != b.patches.size()) return false;
+  for (size_t j = 0; j < a.patches.size(); ++j) {
+    if (a.patches[j].model != b.patches[j].model) return false;
+    if (!(std::fabs(a.patches[j].rail_s_m - b.patches[j].rail_s_m) < match_distance_m)) return false;
+  }
+  return true;
+}
+
+// Fields of a patch normalised by their Hertzian power of the node's load (forces ~ Q, lengths and pressure
+// ~ Q^(1/3), area and approach ~ Q^(2/3)): nearly independent of Q, so the interpolation in Q is close to exact.
+constexpr int kScaled = 19, kStationValues = kLutStations * kLutStationFields;
+constexpr int kFields = kScaled + 12 + 32 + kStationValues;
+void Pack(const LutPatch& p, double Q, double* f) {
+  const double q1 = 1.0 / Q, q13 = 1.0 / std::cbrt(Q), q23 = q13 * q13;
+  const double v[kScaled] = {p.y_contact_rail_m, p.z_contact_rail_m, p.rail_s_m, p.y_contact_wheel_m, p.lead_m,
+                                  p.contact_angle_rad, p.rolling_radius_m, p.fn_N * q1, p.pressure_vertical_N * q1,
+                                  p.pressure_lateral_N * q1, p.pmax_Pa * q13, p.area_m2 * q23, p.approach_m * q23,
+                                  p.a_m * q13, p.b_m * q13, p.centre_x_m * q13, p.centre_s_m * q13,
+                             p.station_s_min_m * q13, p.station_s_max_m * q13};
+  std::copy(v, v + kScaled, f);
+  std::copy(p.creepage_map.begin(), p.creepage_map.end(), f + kScaled);
+  std::copy(p.slip_map.begin(), p.slip_map.end(), f + kScaled + 12);
+  double* st = f + kScaled + 44;
+  std::copy(p.stations.begin(), p.stations.end(), st);
+  for (int k = 0; k < kLutStations; ++k)  // half-length, centre x, peak pressure ~ Q^(1/3)
+    for (int i = 0; i < 3; ++i) st[k * kLutStationFields + i] *= q13;
+}
+void Unpack(const double* f, double Q, LutPatch* p) {
+  const double q13 = std::cbrt(Q), q23 = q13 * q13;
+  p->y_contact_rail_m = f[0];
+  p->z_contact_rail_m = f[1];
+  p->rail_s_m = f[2];
+  p->y_contact_wheel_m = f[3];
+  p->lead_m = f[4];
+  p->contact_angle_rad = f[5];
+  p->rolling_radius_m = f[6];
+  p->fn_N = f[7] * Q;
+  p->pressure_vertical_N = f[8] * Q;
+  p->pressure_lateral_N = f[9] * Q;
+  p->pmax_Pa = f[10] * q13;
+  p->area_m2 = f[11] * q23;
+  p->approach_m = f[12] * q23;
+  p->a_m = f[13] * q13;
+  p->b_m = f[14] * q13;
+  p->centre_x_m = f[15] * q13;
+  p->centre_s_m = f[16] * q13;
+  p->station_s_min_m = f[17] * q13;
+  p->station_s_max_m = f[18] * q13;
+  std::copy(f + kScaled, f + kScaled + 12, p->creepage_map.begin());
+  std::copy(f + kScaled + 12, f + kScaled + 44, p->slip_map.begin());
+  std::copy(f + kScaled + 44, f + kFields, p->stations.begin());
+  for (int k = 0; k < kLutStations; ++k)
+    for (int i = 0; i < 3; ++i) p->stations[k * kLutStationFields + i] *= q13;
+}
+
+// The interpolated normal solution at (y, psi, Q).
+struct NormalAtPose {
+  int status = 0;
+  double vertical_m = 0.0, roll_rad = 0.0;
+  std::vector<LutPatch> patches;
+  LutCellInfo cell;
+};
+
+// Q: where the table is read; Q_scale: the load the normalised fields are scaled back to (the same; a Hertzian
+// rescaling of the patches of Q to the total balance's effective load was tried and was worse: see §17.4).
+NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q, double Q_scale) {
+  const ContactLutGrid& g = lut.grid;
+  size_t iy, ip, iq;
+  double ty, tp, tq;
+  Locate(g.lateral_m, y, "lateral shift y", "mm", 1e3, &iy, &ty);
+  Locate(g.yaw_rad, psi, "yaw psi", "mrad", 1e3, &ip, &tp);
+  Locate(g.load_N, Q, "wheel load Q", "kN", 1e-3, &iq, &tq);
+  const std::vector<LutNode>& nodes = lut.nodes[side_index(side)];
+  const LutNode* corner[8];
+  double w[8], Qc[8];
+  for (int c = 0; c < 8; ++c) {
+    const int dy = c >> 2 & 1, dp = c >> 1 & 1, dq = c & 1;
+    corner[c] = &nodes[g.index(iy + dy, ip + dp, iq + dq)];
+    Qc[c] = g.load_N[iq + dq];
+    w[c] = (dy ? ty : 1.0 - ty) * (dp ? tp : 1.0 - tp) * (dq ? tq : 1.0 - tq);
+  }
+  NormalAtPose out;
+  out.cell.iy = iy, out.cell.ipsi = ip, out.cell.iq = iq;
+  bool single = true;
+  for (int c = 1; c < 8; ++c) single = single && SameTopology(*corner[0], *corner[c], lut.header.match_distance_m);
+  out.cell.single_topology = single && corner[0]->status == static_cast<int>(WheelContactStatus::Ok);
+  // the topology of the nearest corner (largest weight; the first on a tie) and the corners sharing it
+  int nearest = 0;
+  for (int c = 1; c < 8; ++c)
+    if (w[c] > w[nearest]) nearest = c;
+  const LutNode& ref = *corner[nearest];
+  double wsum = 0.0;
+  for (int c = 0; c < 8; ++c) {
+    if (!SameTopology(ref, *corner[c], lut.header.match_distance_m)) w[c] = 0.0;
+    wsum += w[c];
+  }
+  out.status = ref.status;
+  const size_t np = ref.patches.size();
+  std::vector<double> acc(np * kFields, 0.0), f(kFields);
+  for (int c = 0; c < 8; ++c) {
+    if (w[c] == 0.0) continue;
+    const double wc = w[c] / wsum;
+    out.vertical_m += wc * corner[c]->vertical_m;
+    out.roll_rad += wc * corner[c]->roll_rad;
+    for (size_t j = 0; j < np; ++j) {
+      Pack(corner[c]->patches[j], Qc[c], f.data());
+      for (int k = 0; k < kFields; ++k) acc[j * kFields + k] += wc * f[k];
+    }
+  }
+  out.patches.resize(np);
+  for (size_t j = 0; j < np; ++j) {
+    out.patches[j] = ref.patches[j];  // the integer and non-interpolated fields (model, alpha_c, extents)
+    Unpack(&acc[j * kFields], Q_scale, &out.patches[j]);
+  }
+  return out;
+}
+
+// Mean of sqrt(1 - t^2) over [t1, t2] (the semi-ellipse's element mean), -1 <= t1 < t2 <= 1.
+double SemiEllipseMean(double t1, double t2) {
+  auto F = [](double t) { return 0.5 * (t * std::sqrt(std::max(0.0, 1.0 - t * t)) + std::asin(t)); };
+  return (F(t2) - F(t1)) / (t2 - t1);
+}
+
+// KP patches: the pipeline's curved-patch FASTSIM (patch_model_kp.cpp, curved_fastsim.hpp) on the tabulated patch
+// (LutPatch::stations): one strip per station with its half-length, centre, semi-elliptic traction bound scaled to
+// the normal force, its rigid slip (per-strip creepages at the spin origin, local_creepage.hpp) and the SDEC
+// flexibilities; the strip forces along their local tangents projected on t0 (cos alpha), as force_reference_N.
+void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput& in, const WheelContactOptions& options,
+                     FastsimResult* t, double* fx, double* fy, double* mz) {
+  const int n = options.fastsim_elements;
+  const double width = (q.station_s_max_m - q.station_s_min_m) / kLutStations;
+  FastsimPatch patch;
+  std::vector<FastsimCreepages> creep;
+  std::vector<double> alpha;
+  const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+  double load = 0.0;
+  for (int k = 0; k < kLutStations; ++k) {
+    const double* f = &q.stations[k * kLutStationFields];
+    const double c = f[0], xm = f[1], peak = f[2];
+    if (!(c > 0.0) || !(peak > 0.0)) continue;
+    FastsimStrip strip;
+    strip.y_m = q.station_s_min_m + (k + 0.5) * width;
+    strip.width_m = width;
+    strip.x_lead_m = xm + c;
+    strip.x_trail_m = xm - c;
+    strip.first_element = patch.elements();
+    strip.n_elements = n;
+    for (int e = 0; e < n; ++e) {
+      const double t2 = 1.0 - 2.0 * e / n, t1 = 1.0 - 2.0 * (e + 1.0) / n;  // from the leading edge
+      const double p = peak * SemiEllipseMean(t1, t2);
+      patch.bound_pressure_Pa.push_back(p);
+      load += p * width * 2.0 * c / n;
+    }
+    patch.strips.push_back(strip);
+    double w[3] = {0.0, 0.0, 0.0};
+    for (int r = 0; r < 3; ++r)
+      for (int j = 0; j < 4; ++j) w[r] += f[4 + 4 * r + j] * u[j];
+    // the core's rigid slip is (xi_j - phi_j y L1/L3, eta_j + phi_j x L2/L3) (fastsim_core.cpp)
+    FastsimCreepages cr;
+    cr.phi_per_m = w[2] * L.L3 / L.L2;
+    cr.xi = w[0] + cr.phi_per_m * strip.y_m * L.L1 / L.L3;
+    cr.eta = w[1];
+    creep.push_back(cr);
+    alpha.push_back(f[3]);
+  }
+  *fx = *fy = *mz = 0.0;
+  if (patch.strips.empty() || !(load > 0.0)) {
+    t->status = FastsimStatus::NoContact;
+    return;
+  }
+  for (double& p : patch.bound_pressure_Pa) p *= in.normal_force_N / load;  // the bound carries the normal force
+  std::vector<FastsimStripTotals> totals;
+  SolveFastsimStripsEach(patch, L, creep, in.friction_coefficient, in.rolling_speed_m_per_s, options.fastsim, t, &totals);
+  t->fx_N = t->fy_N = t->mz_Nm = t->adhesion_area_m2 = t->slip_area_m2 = t->frictional_power_W = 0.0;
+  for (size_t j = 0; j < totals.size(); ++j) {
+    *fx += totals[j].fx_N;
+    *fy += totals[j].fy_N * std::cos(alpha[j]);
+    *mz += totals[j].mz_Nm;
+    t->adhesion_area_m2 += totals[j].adhesion_area_m2;
+    t->slip_area_m2 += totals[j].slip_area_m2;
+    t->frictional_power_W += totals[j].frictional_power_W;
+  }
+  t->fx_N = *fx, t->fy_N = *fy, t->mz_Nm = *mz;
+  t->status = t->adhesion_area_m2 > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+}
+
+// Creep forces of one patch: FASTSIM on the stored ellipse, as the hertz model's tangential solve
+// (patch_model_hertz.cpp) does it.
+// u: (1, v_lat / V, yaw_rate / V, axle_rate / V) with the wheelset kinematics, nullptr with given creepages.
+void SolveCreep(const LutPatch& q, const Creepages& cr, const double* u, double V, const WheelContactOptions& options,
+                PatchReport* p) {
+  if (!options.solve_tangential || !(q.a_m > 0.0) || !(q.b_m > 0.0)) {
+    p->tangential_status = "not_solved";
+    return;
+  }
+  if (cr.longitudinal == 0.0 && cr.lateral == 0.0 && cr.spin_per_m == 0.0) {
+    p->tangential_status = "no_creepage";
+    return;
+  }
+  FastsimHertzInput in;
+  in.a_m = q.a_m;
+  in.b_m = q.b_m;
+  in.normal_force_N = q.fn_N;
+  in.creepages = FastsimCreepages{cr.longitudinal, cr.lateral, cr.spin_per_m};
+  in.friction_coefficient = options.effective_friction_law().static_value();
+  in.material = options.material;
+  in.nx = in.ny = options.fastsim_elements;
+  in.rolling_speed_m_per_s = V;
+  if (q.centre_x_m != 0.0 || q.centre_s_m != 0.0) {
+    // creepages at the ellipse centre (x_c, s_c) such that FASTSIM's rigid slip (xi - phi y L1/L3,
+    // eta + phi x L2/L3; docs/physics-reference.md §2.4) equals the one about the reference point
+    const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+    in.creepages.xi -= cr.spin_per_m * q.centre_s_m * L.L1 / L.L3;
+    in.creepages.eta += cr.spin_per_m * q.centre_x_m * L.L2 / L.L3;
+  }
+  FastsimResult t;
+  if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant() &&
+      q.station_s_max_m > q.station_s_min_m) {
+    SolveOnStations(q, u, in, options, &t, &p->fx_N, &p->fy_N, &p->mz_Nm);
+    p->tangential_status = to_string(t.status);
+    p->adhesion_area_m2 = t.adhesion_area_m2;
+    p->slip_area_m2 = t.slip_area_m2;
+    p->frictional_power_W = t.frictional_power_W;
+    return;
+  } else if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant()) {
+    // KP models: strip by strip with the tabulated rigid slip (LutPatch::slip_map), about the ellipse centre
+    double c[8] = {};
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < 4; ++k) c[i] += q.slip_map[4 * i + k] * u[k];
+    in.creepages = FastsimCreepages{cr.longitudinal, cr.lateral, cr.spin_per_m};
+    FastsimPatch patch;
+    BuildFastsimHertzPatch(in, options.fastsim, &patch);
+    const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+    std::vector<FastsimCreepages> strip(patch.strips.size());
+    for (size_t j = 0; j < strip.size(); ++j) {
+      // the core's rigid slip is (xi_j - phi_j y L1/L3, eta_j + phi_j x L2/L3) (fastsim_core.cpp)
+      const double y = patch.strips[j].y_m;
+      const double phi = (c[6] + c[7] * y) * L.L3 / L.L2;
+      strip[j].phi_per_m = phi;
+      strip[j].xi = c[0] + c[1] * y + c[2] * y * y + phi * y * L.L1 / L.L3;
+      strip[j].eta = c[3] + c[4] * y + c[5] * y * y;
+    }
+    std::vector<FastsimStripTotals> totals;
+    SolveFastsimStripsEach(patch, L, strip, in.friction_coefficient, V, options.fastsim, &t, &totals);
+    t.fx_N = t.fy_N = t.mz_Nm = t.adhesion_area_m2 = t.slip_area_m2 = t.frictional_power_W = 0.0;
+    for (const FastsimStripTotals& s : totals) {
+      t.fx_N += s.fx_N;
+      t.fy_N += s.fy_N;
+      t.mz_Nm += s.mz_Nm;
+      t.adhesion_area_m2 += s.adhesion_area_m2;
+      t.slip_area_m2 += s.slip_area_m2;
+      t.frictional_power_W += s.frictional_power_W;
+    }
+    t.status = patch.strips.empty() ? FastsimStatus::NoContact
+               : t.adhesion_area_m2 > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
+  } else if (options.friction_law.is_constant()) {
+    t = SolveFastsimHertz(in, options.fastsim);
+  } else {
+    FastsimPatch patch;
+    BuildFastsimHertzPatch(in, options.fastsim, &patch);
+    if (patch.strips.empty()) {
+      t = SolveFastsimHertz(in, options.fastsim);
+    } else {
+      SolveFastsimStripsWithLaw(patch, FastsimHertzFlexibilities(in, options.fastsim), in.creepages,
+                                options.friction_law, V, options.fastsim, &t);
+    }
+  }
+  p->tangential_status = to_string(t.status);
+  p->fx_N = t.fx_N;
+  p->fy_N = t.fy_N;
+  p->mz_Nm = t.mz_Nm + q.centre_x_m * t.fy_N - q.centre_s_m * t.fx_N;  // about the reference point
+  p->adhesion_area_m2 = t.adhesion_area_m2;
+  p->slip_area_m2 = t.slip_area_m2;
+  p->frictional_power_W = t.frictional_power_W;
+}
+
+bool IsKpModel(ContactModel m) {
+  return m == ContactModel::Kp || m == ContactModel::Kpec || m == ContactModel::Conformal;
+}
+
+// The report at the pressure-balanced load Q_eff read at Q_table (= Q_eff; what the direct solve gives with
+// LoadBalance::Pressure).
+WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose& pose, const WheelsetVelocity& velocity,
+                            const WheelContactOptions& options, double Q_table, double Q_eff, LutCellInfo* info) {
+  const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_table, Q_eff);
+  if (info) *info = n.cell;
+  WheelContactReport report;
+  report.side = side;
+  report.model = options.model;
+  report.pose = pose;
+  report.pose.vertical_m = n.vertical_m;
+  report.pose.roll_rad = n.roll_rad;
+  if (n.status == kLutNoEquilibrium || n.status == static_cast<int>(WheelContactStatus::NoContact)) {
+    report.status = WheelContactStatus::NoContact;
+    return report;
+  }
+  const double V = velocity.forward_speed_m_s;
+  const bool kinematics = !options.creepages_given;
+  if (kinematics && options.solve_tangential && !n.patches.empty()) {
+    require_positive(V, "WheelsetVelocity.forward_speed_m_s");
+    require_finite(velocity.lateral_velocity_m_s, "WheelsetVelocity.lateral_velocity_m_s");
+    require_finite(velocity.yaw_rate_rad_s, "WheelsetVelocity.yaw_rate_rad_s");
+    require_finite(velocity.axle_angular_velocity_rad_s, "WheelsetVelocity.axle_angular_velocity_rad_s");
+  }
+  for (const LutPatch& q : n.patches) {
+    PatchReport p;
+    p.model = static_cast<ContactModel>(q.model);
+    p.auto_alpha_c_deg = q.auto_alpha_c_deg;
+    p.normal_status = "ok";  // the node solutions are accepted ones
+    p.fn_N = q.fn_N;
+    p.pmax_Pa = q.pmax_Pa;
+    p.p0_Pa = p.model == ContactModel::Hertz ? q.pmax_Pa : 0.0;
+    p.area_m2 = q.area_m2;
+    p.a_m = q.a_m;
+    p.b_m = q.b_m;
+    p.width_m = q.width_m;
+    p.length_m = q.length_m;
+    p.approach_m = q.approach_m;
+    p.contact_angle_rad = q.contact_angle_rad;
+    p.y_contact_rail_m = q.y_contact_rail_m;
+    p.z_contact_rail_m = q.z_contact_rail_m;
+    p.y_contact_wheel_m = q.y_contact_wheel_m;
+    p.rolling_radius_m = q.rolling_radius_m;
+    p.lead_m = q.lead_m;
+    p.reference_s_on_rail_m = q.rail_s_m;
+    p.alpha_c_deg = q.alpha_c_deg;
+    p.is_conformal = IsKpModel(p.model) && q.alpha_c_deg > options.conformity_threshold_deg;
+    Creepages cr = options.creepages;
+    const double u[4] = {1.0, V > 0.0 ? velocity.lateral_velocity_m_s / V : 0.0,
+                         V > 0.0 ? velocity.yaw_rate_rad_s / V : 0.0,
+                         V > 0.0 ? velocity.axle_angular_velocity_rad_s / V : 0.0};
+    if (kinematics && V > 0.0) {
+      double c[3] = {0.0, 0.0, 0.0};
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 4; ++k) c[i] += q.creepage_map[4 * i + k] * u[k];
+      cr = Creepages{c[0], c[1], c[2]};
+    }
+    p.xi = cr.longitudinal;
+    p.eta = cr.lateral;
+    p.phi_per_m = cr.spin_per_m;
+    SolveCreep(q, cr, kinematics && V > 0.0 ? u : nullptr, V, options, &p);
+    p.vertical_force_N = q.pressure_vertical_N + p.fy_N * std::sin(q.contact_angle_rad);
+    p.lateral_force_N = q.pressure_lateral_N + p.fy_N * std::cos(q.contact_angle_rad);
+    report.vertical_force_N += p.vertical_force_N;
+    report.pressure_vertical_force_N += q.pressure_vertical_N;
+    report.lateral_force_N += p.lateral_force_N;
+    report.patches.push_back(p);
+  }
+  report.status = n.status == static_cast<int>(WheelContactStatus::Ok)
+                      ? (report.patches.empty() ? WheelContactStatus::NoContact : WheelContactStatus::Ok)
+                      : WheelContactStatus::NotConverged;
+  return report;
+}
+
+void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometry, const WheelContactOptions& o) {
+  const ContactLutHeader& h = lut.header;
+  auto mismatch = [](const std::string& what, const std::string& table, const std::string& given) {
+    throw InputError("contact LUT: " + what + " of the table (" + table + ") differs from the one given (" + given + ")");
+  };
+  if (o.model != h.model) mismatch("contact model", to_string(h.model), to_string(o.model));
+  if (o.material.shear_modulus_Pa != h.material.shear_modulus_Pa || o.material.poisson_ratio != h.material.poisson_ratio)
+    mismatch("material", std::to_string(h.material.shear_modulus_Pa) + " Pa, nu " + std::to_string(h.material.poisson_ratio),
+             std::to_string(o.material.shear_modulus_Pa) + " Pa, nu " + std::to_string(o.material.poisson_ratio));
+  if (o.max_touching_contact_angle_rad != h.max_touching_contact_angle_rad)
+    mismatch("elastic-flange angle (max_touching_contact_angle_rad)", std::to_string(h.max_touching_contact_angle_rad),
+             std::to_string(o.max_touching_contact_angle_rad));
+  for (Side s : {Side::Left, Side::Right}) {
+    const int i = side_index(s);
+    if (std::fabs(geometry.rail_origin_eta_m(s) - h.rail_origin_eta_m[i]) > 1e-9 ||
+        std::fabs(geometry.setup().nominal_radius_m[i] - h.nominal_radius_m[i]) > 1e-9)
+      throw InputError("contact LUT: the track geometry given is not the table's (rail position or nominal wheel "
+                       "radius differ; table made for wheel '" + h.wheel_profile + "' on rail '" + h.rail_profile + "')");
+  }
+}
+
+}  // namespace
+
+WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrackGeometry& geometry, Side side,
+                                      const WheelsetPose& pose, const WheelsetVelocity& velocity,
+                                      const WheelContactOptions& options, LutCellInfo* info) {
+  options.validate();
+  CheckCompatible(lut, geometry, options);
+  if (options.vertical_load_N < 0.0)
+    throw InputError("contact LUT: approach mode (vertical_load_N < 0) is not tabulated; give the wheel load");
+  if (options.vertical_load_N == 0.0) {  // unloaded wheel: no contact, as the pipeline
+    WheelContactReport r;
+    r.side = side;
+    r.model = options.model;
+    r.pose = pose;
+    return r;
+  }
+  const double Q = options.vertical_load_N;
+  const bool total = options.load_balance == LoadBalance::Total && options.solve_tangential;
+  WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, Q, info);
+  if (total && r.status == WheelContactStatus::Ok) {
+    // Total-force balance: Q_eff + C(Q_eff) = Q, C = vertical creep forces (header comment); secant iteration
+    // from the fixed-point step
+    auto residual = [&](const WheelContactReport& rep) { return rep.vertical_force_N - Q; };
+    double x0 = Q, g0 = residual(r);
+    int evaluations = 1;
+    const double tolerance = options.load_tolerance * Q;
+    if (std::fabs(g0) > tolerance) {
+      double x1 = Q - g0;
+      bool converged = false;
+      for (; evaluations < 60; ) {
+        if (!(x1 >= lut.grid.load_N.front() && x1 <= lut.grid.load_N.back())) {
+          char text[256];
+          std::snprintf(text, sizeof text, "contact LUT: the total-force balance needs the effective load Q_eff = "
+                        "%.6g kN (load %.6g kN minus the vertical creep forces), outside the table's wheel load axis "
+                        "[%.6g, %.6g] kN (not extrapolated)", x1 * 1e-3, Q * 1e-3, lut.grid.load_N.front() * 1e-3,
+                        lut.grid.load_N.back() * 1e-3);
+          throw InputError(text);
+        }
+        r = ReportAt(lut, side, pose, velocity, options, x1, x1, info);
+        ++evaluations;
+        if (r.status != WheelContactStatus::Ok) break;
+        const double g1 = residual(r);
+        if (std::fabs(g1) <= tolerance) { converged = true; break; }
+        const double slope = (g1 - g0) / (x1 - x0);
+        const double x2 = slope > 0.0 && std::isfinite(slope) ? x1 - g1 / slope : x1 - g1;
+        x0 = x1, g0 = g1, x1 = x2;
+        if (!(x1 > 0.0)) break;
+      }
+      if (!converged && r.status == WheelContactStatus::Ok) r.status = WheelContactStatus::NotConverged;
+    }
+    r.load_iterations = evaluations;
+  }
+  r.warnings = ContactPlausibilityWarnings(r, geometry, options);
+  return r;
+}
+
+LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut) {
+  if (!lut) throw InputError("contact LUT: no table given");
+  return [lut](const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+               const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+    return EvaluateContactLut(*lut, geometry, side, pose, velocity, options);
+  };
+}
+
+}  // namespace conforma

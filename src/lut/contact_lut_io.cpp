@@ -1,0 +1,359 @@
+// HDF5 file of a contact look-up table (contact_lut_io.hpp), written with the HDF5 C library.
+#include "conforma/contact_lut_io.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <functional>
+#include <type_traits>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+namespace {
+
+constexpr const char* kFormat = "conforma-contact-lut";
+constexpr int kFormatVersion = 1;
+
+// The serial HDF5 library is not thread-safe: one process-wide lock around every file operation.
+std::mutex& Hdf5Mutex() {
+  static std::mutex m;
+  return m;
+}
+
+struct Handle {  // closes an HDF5 id on scope exit
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~Handle() {
+    if (id >= 0) close(id);
+  }
+};
+
+[[noreturn]] void Fail(const std::string& path, const std::string& what) {
+  throw InputError(path, 0, "contact LUT file: " + what);
+}
+
+void AttrString(hid_t obj, const char* name, const std::string& value) {
+  Handle type{H5Tcopy(H5T_C_S1), H5Tclose};
+  H5Tset_size(type.id, value.empty() ? 1 : value.size());
+  H5Tset_strpad(type.id, H5T_STR_NULLPAD);
+  Handle space{H5Screate(H5S_SCALAR), H5Sclose};
+  Handle attr{H5Acreate2(obj, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  H5Awrite(attr.id, type.id, value.empty() ? "" : value.data());
+}
+
+void AttrDoubles(hid_t obj, const char* name, const std::vector<double>& v) {
+  const hsize_t n = v.size();
+  Handle space{n == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr), H5Sclose};
+  Handle attr{H5Acreate2(obj, name, H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  H5Awrite(attr.id, H5T_NATIVE_DOUBLE, v.data());
+}
+
+void AttrInt(hid_t obj, const char* name, int v) {
+  Handle space{H5Screate(H5S_SCALAR), H5Sclose};
+  Handle attr{H5Acreate2(obj, name, H5T_STD_I32LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  H5Awrite(attr.id, H5T_NATIVE_INT, &v);
+}
+
+std::string ReadAttrString(hid_t obj, const char* name, const std::string& path) {
+  if (H5Aexists(obj, name) <= 0) Fail(path, std::string("attribute '") + name + "' missing");
+  Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
+  Handle type{H5Aget_type(attr.id), H5Tclose};
+  if (H5Tget_class(type.id) != H5T_STRING) Fail(path, std::string("attribute '") + name + "' is not a string");
+  if (H5Tis_variable_str(type.id) > 0) {
+    char* s = nullptr;
+    Handle mem{H5Tcopy(H5T_C_S1), H5Tclose};
+    H5Tset_size(mem.id, H5T_VARIABLE);
+    H5Aread(attr.id, mem.id, &s);
+    std::string out = s ? s : "";
+    H5free_memory(s);
+    return out;
+  }
+  const size_t n = H5Tget_size(type.id);
+  std::string s(n, '\0');
+  H5Aread(attr.id, type.id, s.data());
+  s.resize(s.find('\0') == std::string::npos ? n : s.find('\0'));
+  return s;
+}
+
+std::vector<double> ReadAttrDoubles(hid_t obj, const char* name, const std::string& path) {
+  if (H5Aexists(obj, name) <= 0) Fail(path, std::string("attribute '") + name + "' missing");
+  Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
+  Handle space{H5Aget_space(attr.id), H5Sclose};
+  const hssize_t n = H5Sget_simple_extent_npoints(space.id);
+  std::vector<double> v(n > 0 ? n : 0);
+  if (!v.empty()) H5Aread(attr.id, H5T_NATIVE_DOUBLE, v.data());
+  return v;
+}
+double ReadAttrDouble(hid_t obj, const char* name, const std::string& path) {
+  const std::vector<double> v = ReadAttrDoubles(obj, name, path);
+  if (v.size() != 1) Fail(path, std::string("attribute '") + name + "' is not a scalar");
+  return v[0];
+}
+int ReadAttrInt(hid_t obj, const char* name, const std::string& path) {
+  if (H5Aexists(obj, name) <= 0) Fail(path, std::string("attribute '") + name + "' missing");
+  Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
+  int v = 0;
+  H5Aread(attr.id, H5T_NATIVE_INT, &v);
+  return v;
+}
+
+// A 1-D (columns = 0) or 2-D (rows x columns) dataset of doubles or ints with a "units" attribute.
+template <class T>
+void WriteData(hid_t group, const char* name, const std::vector<T>& v, const std::string& units, hsize_t columns = 0) {
+  const bool is_double = std::is_same<T, double>::value;
+  hsize_t dims[2] = {columns ? v.size() / columns : v.size(), columns};
+  Handle space{H5Screate_simple(columns ? 2 : 1, dims, nullptr), H5Sclose};
+  // larger datasets: chunked with shuffle + deflate (lossless; h5py reads them as any other)
+  Handle create{H5Pcreate(H5P_DATASET_CREATE), H5Pclose};
+  if (v.size() >= 4096) {
+    hsize_t chunk[2] = {std::min<hsize_t>(dims[0], columns ? std::max<hsize_t>(1, 65536 / columns) : 65536), columns};
+    H5Pset_chunk(create.id, columns ? 2 : 1, chunk);
+    H5Pset_shuffle(create.id);
+    H5Pset_deflate(create.id, 4);
+  }
+  Handle set{H5Dcreate2(group, name, is_double ? H5T_IEEE_F64LE : H5T_STD_I32LE, space.id, H5P_DEFAULT, create.id,
+                        H5P_DEFAULT),
+             H5Dclose};
+  if (set.id < 0) throw InputError(std::string("contact LUT file: dataset '") + name + "' cannot be created");
+  if (!v.empty()) H5Dwrite(set.id, is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  AttrString(set.id, "units", units);
+}
+
+template <class T>
+std::vector<T> ReadData(hid_t group, const char* name, const std::string& path, size_t expected) {
+  if (H5Lexists(group, name, H5P_DEFAULT) <= 0) Fail(path, std::string("dataset '") + name + "' missing");
+  Handle set{H5Dopen2(group, name, H5P_DEFAULT), H5Dclose};
+  Handle space{H5Dget_space(set.id), H5Sclose};
+  const hssize_t n = H5Sget_simple_extent_npoints(space.id);
+  if (n < 0 || static_cast<size_t>(n) != expected)
+    Fail(path, std::string("dataset '") + name + "' has " + std::to_string(n) + " values, expected " +
+                   std::to_string(expected));
+  std::vector<T> v(expected);
+  if (expected > 0 &&
+      H5Dread(set.id, std::is_same<T, double>::value ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL,
+              H5P_DEFAULT, v.data()) < 0)
+    Fail(path, std::string("dataset '") + name + "' cannot be read");
+  return v;
+}
+
+// Every double field of LutPatch with its dataset name and units (one table drives writing and reading).
+struct PatchField {
+  const char* name;
+  const char* units;
+  double LutPatch::*member;
+};
+const std::vector<PatchField>& PatchFields() {
+  static const std::vector<PatchField> fields = {
+      {"y_contact_rail_m", "m", &LutPatch::y_contact_rail_m},
+      {"z_contact_rail_m", "m", &LutPatch::z_contact_rail_m},
+      {"rail_s_m", "m", &LutPatch::rail_s_m},
+      {"y_contact_wheel_m", "m", &LutPatch::y_contact_wheel_m},
+      {"lead_m", "m", &LutPatch::lead_m},
+      {"contact_angle_rad", "rad", &LutPatch::contact_angle_rad},
+      {"rolling_radius_m", "m", &LutPatch::rolling_radius_m},
+      {"fn_N", "N", &LutPatch::fn_N},
+      {"pressure_vertical_N", "N", &LutPatch::pressure_vertical_N},
+      {"pressure_lateral_N", "N", &LutPatch::pressure_lateral_N},
+      {"pmax_Pa", "Pa", &LutPatch::pmax_Pa},
+      {"area_m2", "m^2", &LutPatch::area_m2},
+      {"approach_m", "m", &LutPatch::approach_m},
+      {"width_m", "m", &LutPatch::width_m},
+      {"length_m", "m", &LutPatch::length_m},
+      {"a_m", "m", &LutPatch::a_m},
+      {"b_m", "m", &LutPatch::b_m},
+      {"centre_x_m", "m", &LutPatch::centre_x_m},
+      {"centre_s_m", "m", &LutPatch::centre_s_m},
+      {"station_s_min_m", "m", &LutPatch::station_s_min_m},
+      {"station_s_max_m", "m", &LutPatch::station_s_max_m},
+      {"alpha_c_deg", "deg", &LutPatch::alpha_c_deg},
+      {"auto_alpha_c_deg", "deg", &LutPatch::auto_alpha_c_deg},
+  };
+  return fields;
+}
+
+constexpr const char* kSideGroups[2] = {"left", "right"};
+
+}  // namespace
+
+void SaveContactLut(const ContactLut& lut, const std::string& path) {
+  lut.grid.validate();
+  std::lock_guard<std::mutex> lock(Hdf5Mutex());
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported as InputError, not printed
+  Handle file{H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
+  if (file.id < 0) Fail(path, "cannot be created");
+  const ContactLutHeader& h = lut.header;
+  const hid_t root = file.id;
+  AttrString(root, "format", kFormat);
+  AttrInt(root, "format_version", kFormatVersion);
+  AttrString(root, "wheel_profile", h.wheel_profile);
+  AttrString(root, "rail_profile", h.rail_profile);
+  AttrString(root, "track", h.track);
+  AttrString(root, "model", to_string(h.model));
+  AttrDoubles(root, "shear_modulus_Pa", {h.material.shear_modulus_Pa});
+  AttrDoubles(root, "poisson_ratio", {h.material.poisson_ratio});
+  AttrDoubles(root, "density_kg_m3", {h.material.density_kg_m3});
+  AttrDoubles(root, "max_touching_contact_angle_rad", {h.max_touching_contact_angle_rad});
+  AttrInt(root, "kp_strips", h.kp_strips);
+  AttrDoubles(root, "candidate_strip_width_m", {h.candidate_strip_width_m});
+  AttrDoubles(root, "patch_combine_distance_m", {h.patch_combine_distance_m});
+  AttrInt(root, "conformal_variable_penetration", h.conformal_variable_penetration ? 1 : 0);
+  AttrDoubles(root, "match_distance_m", {h.match_distance_m});
+  AttrDoubles(root, "rail_origin_eta_m", {h.rail_origin_eta_m[0], h.rail_origin_eta_m[1]});
+  AttrDoubles(root, "nominal_radius_m", {h.nominal_radius_m[0], h.nominal_radius_m[1]});
+  AttrString(root, "conforma_version", h.conforma_version);
+  AttrString(root, "conforma_commit", h.conforma_commit);
+  AttrDoubles(root, "generation_s", {h.generation_s});
+  AttrInt(root, "threads", h.threads);
+  AttrString(root, "node_order", "node k = (i_lateral * n_yaw + i_yaw) * n_load + i_load");
+  AttrString(root, "status_names", "0 ok, 1 no_contact, 2 not_converged, 3 no_rigid_equilibrium");
+  AttrString(root, "model_names", "0 hertz, 1 kp, 2 kpec, 3 conformal, 4 exact (ContactModel)");
+  AttrString(root, "stations",
+             "KP patches: rows = patches, 12 lateral stations x 16 values: half-length c [m], strip centre x [m], "
+             "peak pressure [Pa], normal rotation alpha [rad], rigid slip map 3 x 4 (w_x [-], w_s at x = 0 [-], "
+             "dw_s/dx [1/m]; columns as creepage_map), over [station_s_min_m, station_s_max_m]");
+  AttrString(root, "slip_map",
+             "KP patches, rows c0..c7 of w_x = c0 + c1 sigma + c2 sigma^2, w_s = c3 + c4 sigma + c5 sigma^2 + "
+             "(c6 + c7 sigma) x' (sigma = s - centre_s_m, x' = x - centre_x_m [m]); columns as creepage_map");
+  AttrString(root, "creepage_map",
+             "rows xi, eta, phi [1/m]; columns multiply (1, v_lateral/V, yaw_rate/V, axle_rate/V) [-, -, 1/m, 1/m]");
+  {
+    Handle grid{H5Gcreate2(root, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    WriteData(grid.id, "lateral_m", lut.grid.lateral_m, "m");
+    WriteData(grid.id, "yaw_rad", lut.grid.yaw_rad, "rad");
+    WriteData(grid.id, "load_N", lut.grid.load_N, "N");
+  }
+  for (int s = 0; s < 2; ++s) {
+    const std::vector<LutNode>& nodes = lut.nodes[s];
+    if (nodes.size() != lut.grid.nodes()) Fail(path, "the table's node count does not match its grid");
+    Handle g{H5Gcreate2(root, kSideGroups[s], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    std::vector<int> status, offset{0}, model;
+    std::vector<double> vertical, roll, map, slip, stations;
+    for (const LutNode& n : nodes) {
+      status.push_back(n.status);
+      vertical.push_back(n.vertical_m);
+      roll.push_back(n.roll_rad);
+      offset.push_back(offset.back() + static_cast<int>(n.patches.size()));
+      for (const LutPatch& p : n.patches) {
+        model.push_back(p.model);
+        map.insert(map.end(), p.creepage_map.begin(), p.creepage_map.end());
+        slip.insert(slip.end(), p.slip_map.begin(), p.slip_map.end());
+        stations.insert(stations.end(), p.stations.begin(), p.stations.end());
+      }
+    }
+    WriteData(g.id, "node_status", status, "-");
+    WriteData(g.id, "node_vertical_m", vertical, "m");
+    WriteData(g.id, "node_roll_rad", roll, "rad");
+    WriteData(g.id, "node_patch_offset", offset, "-");
+    WriteData(g.id, "model", model, "-");
+    for (const PatchField& f : PatchFields()) {
+      std::vector<double> v;
+      for (const LutNode& n : nodes)
+        for (const LutPatch& p : n.patches) v.push_back(p.*f.member);
+      WriteData(g.id, f.name, v, f.units);
+    }
+    WriteData(g.id, "creepage_map", map, "see root attribute creepage_map", 12);
+    WriteData(g.id, "slip_map", slip, "see root attribute slip_map", 32);
+    WriteData(g.id, "stations", stations, "see root attribute stations", kLutStations * kLutStationFields);
+  }
+  if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0) Fail(path, "cannot be written");
+}
+
+ContactLut LoadContactLut(const std::string& path) {
+  std::lock_guard<std::mutex> lock(Hdf5Mutex());
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (H5Fis_hdf5(path.c_str()) <= 0) Fail(path, "not found or not an HDF5 file");
+  Handle file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
+  if (file.id < 0) Fail(path, "cannot be opened");
+  const hid_t root = file.id;
+  if (ReadAttrString(root, "format", path) != kFormat) Fail(path, "not a Conforma contact LUT (attribute format)");
+  if (ReadAttrInt(root, "format_version", path) != kFormatVersion) Fail(path, "unsupported format_version");
+  ContactLut lut;
+  ContactLutHeader& h = lut.header;
+  h.wheel_profile = ReadAttrString(root, "wheel_profile", path);
+  h.rail_profile = ReadAttrString(root, "rail_profile", path);
+  h.track = ReadAttrString(root, "track", path);
+  h.model = ParseContactModel(ReadAttrString(root, "model", path));
+  h.material.shear_modulus_Pa = ReadAttrDouble(root, "shear_modulus_Pa", path);
+  h.material.poisson_ratio = ReadAttrDouble(root, "poisson_ratio", path);
+  h.material.density_kg_m3 = ReadAttrDouble(root, "density_kg_m3", path);
+  h.max_touching_contact_angle_rad = ReadAttrDouble(root, "max_touching_contact_angle_rad", path);
+  h.kp_strips = ReadAttrInt(root, "kp_strips", path);
+  h.candidate_strip_width_m = ReadAttrDouble(root, "candidate_strip_width_m", path);
+  h.patch_combine_distance_m = ReadAttrDouble(root, "patch_combine_distance_m", path);
+  h.conformal_variable_penetration = ReadAttrInt(root, "conformal_variable_penetration", path) != 0;
+  h.match_distance_m = ReadAttrDouble(root, "match_distance_m", path);
+  const std::vector<double> eta = ReadAttrDoubles(root, "rail_origin_eta_m", path);
+  const std::vector<double> r0 = ReadAttrDoubles(root, "nominal_radius_m", path);
+  if (eta.size() != 2 || r0.size() != 2) Fail(path, "rail_origin_eta_m / nominal_radius_m need 2 values");
+  h.rail_origin_eta_m = {eta[0], eta[1]};
+  h.nominal_radius_m = {r0[0], r0[1]};
+  h.conforma_version = ReadAttrString(root, "conforma_version", path);
+  h.conforma_commit = ReadAttrString(root, "conforma_commit", path);
+  h.generation_s = ReadAttrDouble(root, "generation_s", path);
+  h.threads = ReadAttrInt(root, "threads", path);
+  auto axis_size = [&](const char* name) {
+    if (H5Lexists(root, "grid", H5P_DEFAULT) <= 0) Fail(path, "group 'grid' missing");
+    Handle grid{H5Gopen2(root, "grid", H5P_DEFAULT), H5Gclose};
+    if (H5Lexists(grid.id, name, H5P_DEFAULT) <= 0) Fail(path, std::string("dataset 'grid/") + name + "' missing");
+    Handle set{H5Dopen2(grid.id, name, H5P_DEFAULT), H5Dclose};
+    Handle space{H5Dget_space(set.id), H5Sclose};
+    return static_cast<size_t>(H5Sget_simple_extent_npoints(space.id));
+  };
+  const size_t ny = axis_size("lateral_m"), npsi = axis_size("yaw_rad"), nq = axis_size("load_N");
+  {
+    Handle grid{H5Gopen2(root, "grid", H5P_DEFAULT), H5Gclose};
+    lut.grid.lateral_m = ReadData<double>(grid.id, "lateral_m", path, ny);
+    lut.grid.yaw_rad = ReadData<double>(grid.id, "yaw_rad", path, npsi);
+    lut.grid.load_N = ReadData<double>(grid.id, "load_N", path, nq);
+  }
+  try {
+    lut.grid.validate();
+  } catch (const InputError& e) {
+    Fail(path, e.what());
+  }
+  const size_t nodes = lut.grid.nodes();
+  for (int s = 0; s < 2; ++s) {
+    if (H5Lexists(root, kSideGroups[s], H5P_DEFAULT) <= 0) Fail(path, std::string("group '") + kSideGroups[s] + "' missing");
+    Handle g{H5Gopen2(root, kSideGroups[s], H5P_DEFAULT), H5Gclose};
+    const std::vector<int> status = ReadData<int>(g.id, "node_status", path, nodes);
+    const std::vector<double> vertical = ReadData<double>(g.id, "node_vertical_m", path, nodes);
+    const std::vector<double> roll = ReadData<double>(g.id, "node_roll_rad", path, nodes);
+    const std::vector<int> offset = ReadData<int>(g.id, "node_patch_offset", path, nodes + 1);
+    if (offset[0] != 0) Fail(path, "node_patch_offset must start at 0");
+    for (size_t k = 0; k < nodes; ++k)
+      if (offset[k + 1] < offset[k]) Fail(path, "node_patch_offset must not decrease");
+    const size_t patches = static_cast<size_t>(offset[nodes]);
+    const std::vector<int> model = ReadData<int>(g.id, "model", path, patches);
+    std::vector<std::vector<double>> fields;
+    for (const PatchField& f : PatchFields()) fields.push_back(ReadData<double>(g.id, f.name, path, patches));
+    const std::vector<double> map = ReadData<double>(g.id, "creepage_map", path, 12 * patches);
+    const std::vector<double> slip = ReadData<double>(g.id, "slip_map", path, 32 * patches);
+    constexpr size_t kS = kLutStations * kLutStationFields;
+    const std::vector<double> stations = ReadData<double>(g.id, "stations", path, kS * patches);
+    std::vector<LutNode>& out = lut.nodes[s];
+    out.resize(nodes);
+    for (size_t k = 0; k < nodes; ++k) {
+      LutNode& n = out[k];
+      n.status = status[k];
+      n.vertical_m = vertical[k];
+      n.roll_rad = roll[k];
+      for (int r = offset[k]; r < offset[k + 1]; ++r) {
+        LutPatch p;
+        p.model = model[r];
+        for (size_t f = 0; f < fields.size(); ++f) p.*(PatchFields()[f].member) = fields[f][r];
+        std::copy(map.begin() + 12 * r, map.begin() + 12 * (r + 1), p.creepage_map.begin());
+        std::copy(slip.begin() + 32 * r, slip.begin() + 32 * (r + 1), p.slip_map.begin());
+        std::copy(stations.begin() + kS * r, stations.begin() + kS * (r + 1), p.stations.begin());
+        n.patches.push_back(p);
+      }
+    }
+  }
+  return lut;
+}
+
+}  // namespace conforma

@@ -1,0 +1,369 @@
+// Contact look-up table (contact_lut.hpp): exactness at the grid nodes, interpolation error against direct solves,
+// two-point contact kept as two patches, HDF5 round trip, out-of-table and bad input, thread-count independence.
+// test-links: lut
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <unistd.h>
+#include <type_traits>
+
+#include "conforma/contact_lut.hpp"
+#include "conforma/contact_lut_io.hpp"
+#include "conforma/error.hpp"
+#include "conforma/kinematics_quasistatic.hpp"
+#include "conforma/wheel_contact.hpp"
+#include "pipeline_test_geometry.hpp"
+
+using namespace conforma;
+
+// the LUT is a WheelContactFunction (the curving's and the dynamics' contact evaluation)
+static_assert(std::is_same<LutContactFunction, WheelContactFunction>::value, "LUT function type");
+
+namespace {
+
+const WheelsetTrackGeometry& Geometry() { return test::PipelineGeometry(); }
+
+WheelContactOptions Options(ContactModel model, LoadBalance balance = LoadBalance::Pressure) {
+  WheelContactOptions o;
+  o.model = model;
+  o.load_balance = balance;
+  return o;
+}
+
+std::vector<double> Axis(double lo, double hi, double step, double scale) {
+  std::vector<double> v;
+  for (int k = 0; lo + k * step <= hi + 1e-9 * step; ++k) v.push_back((lo + k * step) * scale);
+  return v;
+}
+
+// S1002 / 60E1 1:40 over tread and flange (flange contact from y ~ 6 mm), hertz
+const ContactLut& HertzLut() {
+  static const ContactLut lut = [] {
+    ContactLutBuildOptions b;
+    b.grid.lateral_m = Axis(-4.0, 8.0, 0.25, 1e-3);
+    b.grid.yaw_rad = {-2e-3, 0.0, 2e-3};
+    b.grid.load_N = {30e3, 50e3, 70e3};
+    b.contact = Options(ContactModel::Hertz);
+    b.wheel_profile = "S1002";
+    b.rail_profile = "60E1";
+    return BuildContactLut(Geometry(), b);
+  }();
+  return lut;
+}
+
+// the same pair with the conformal model, coarser
+const ContactLut& ConformalLut() {
+  static const ContactLut lut = [] {
+    ContactLutBuildOptions b;
+    b.grid.lateral_m = Axis(-2.0, 4.0, 0.5, 1e-3);
+    b.grid.yaw_rad = {0.0, 2e-3};
+    b.grid.load_N = {40e3, 60e3};
+    b.contact = Options(ContactModel::Conformal);
+    return BuildContactLut(Geometry(), b);
+  }();
+  return lut;
+}
+
+WheelsetVelocity Velocity() {  // rolling with a little lateral and axle creep and a curve's yaw rate (partial slip)
+  return {10.0, 0.002, 10.0 / 2000.0, 10.0 / 0.46 * (1.0 + 2e-4)};
+}
+
+WheelContactReport Direct(Side side, double y, double psi, double Q, WheelContactOptions o) {
+  o.vertical_load_N = Q;
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(y, psi);
+  EXPECT_EQ(eq.status, EquilibriumStatus::Converged);
+  return SolveWheelContact(Geometry(), side, eq.pose, Velocity(), o);
+}
+
+WheelContactReport FromLut(const ContactLut& lut, Side side, double y, double psi, double Q, WheelContactOptions o,
+                           LutCellInfo* info = nullptr) {
+  o.vertical_load_N = Q;
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(y, psi);
+  return EvaluateContactLut(lut, Geometry(), side, eq.pose, Velocity(), o, info);
+}
+
+}  // namespace
+
+// At a grid node the table holds the direct solution: the normal fields to round-off; with the hertz model the
+// creep forces too (the same FASTSIM on the same ellipse with the pipeline's creepages, rebuilt from the affine map).
+TEST(ContactLut, NodeValuesEqualTheDirectSolveToRoundOff) {
+  const ContactLut& lut = HertzLut();
+  int checked = 0, two_patch = 0;
+  for (double y_mm : {-3.0, 0.0, 2.5, 5.0, 6.5, 7.25}) {
+    for (Side side : {Side::Left, Side::Right}) {
+      const double Q = 50e3;
+      const WheelContactReport d = Direct(side, y_mm * 1e-3, 2e-3, Q, Options(ContactModel::Hertz));
+      const WheelContactReport l = FromLut(lut, side, y_mm * 1e-3, 2e-3, Q, Options(ContactModel::Hertz));
+      ASSERT_EQ(d.status, WheelContactStatus::Ok);
+      ASSERT_EQ(l.status, d.status);
+      ASSERT_EQ(l.patches.size(), d.patches.size()) << "y " << y_mm;
+      two_patch += d.patches.size() == 2;
+      for (size_t j = 0; j < d.patches.size(); ++j) {
+        const PatchReport &a = d.patches[j], &b = l.patches[j];
+        EXPECT_NEAR(b.fn_N, a.fn_N, 1e-9 * Q);
+        EXPECT_NEAR(b.y_contact_rail_m, a.y_contact_rail_m, 1e-15);
+        EXPECT_NEAR(b.contact_angle_rad, a.contact_angle_rad, 1e-15);
+        EXPECT_NEAR(b.pmax_Pa, a.pmax_Pa, 1e-9 * a.pmax_Pa);
+        EXPECT_NEAR(b.a_m, a.a_m, 1e-15);
+        EXPECT_NEAR(b.xi, a.xi, 1e-15);
+        EXPECT_NEAR(b.eta, a.eta, 1e-15);
+        EXPECT_NEAR(b.phi_per_m, a.phi_per_m, 1e-12);
+        EXPECT_NEAR(b.fx_N, a.fx_N, 1e-8 * Q);
+        EXPECT_NEAR(b.fy_N, a.fy_N, 1e-8 * Q);
+        EXPECT_NEAR(b.mz_Nm, a.mz_Nm, 1e-8 * Q * 1e-3);
+        ++checked;
+      }
+      EXPECT_NEAR(l.vertical_force_N, d.vertical_force_N, 1e-8 * Q);
+      EXPECT_NEAR(l.lateral_force_N, d.lateral_force_N, 1e-8 * Q);
+    }
+  }
+  EXPECT_GE(checked, 12);
+  EXPECT_GE(two_patch, 1);  // the flange region holds two-point contact
+}
+
+// The conformal model's normal solution at a node is the direct one; its creep forces come from the curved-patch
+// FASTSIM scheme on the patch resampled on 12 lateral stations (the KP solution has ~31 strips), so they agree with
+// the direct ones to the resampling error: within 1 % of mu Q (measured <= 0.5 % on the default scenario's tread).
+TEST(ContactLut, ConformalNodeNormalExactCreepClose) {
+  const ContactLut& lut = ConformalLut();
+  for (double y_mm : {-2.0, 0.5, 3.0}) {
+    const double Q = 60e3;
+    const WheelContactReport d = Direct(Side::Left, y_mm * 1e-3, 2e-3, Q, Options(ContactModel::Conformal));
+    const WheelContactReport l = FromLut(lut, Side::Left, y_mm * 1e-3, 2e-3, Q, Options(ContactModel::Conformal));
+    ASSERT_EQ(l.patches.size(), d.patches.size());
+    for (size_t j = 0; j < d.patches.size(); ++j) {
+      EXPECT_NEAR(l.patches[j].fn_N, d.patches[j].fn_N, 1e-9 * Q);
+      EXPECT_NEAR(l.patches[j].y_contact_rail_m, d.patches[j].y_contact_rail_m, 1e-15);
+      EXPECT_NEAR(l.patches[j].fx_N, d.patches[j].fx_N, 0.01 * 0.3 * Q) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].fy_N, d.patches[j].fy_N, 0.01 * 0.3 * Q) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].mz_Nm, d.patches[j].mz_Nm, 0.05 * std::fabs(d.patches[j].mz_Nm) + 1.0) << "y " << y_mm;
+    }
+  }
+}
+
+// Between the nodes of single-topology cells on the tread (0.25 mm, 2 mrad, 20 kN steps): the targets,
+// normal force within 1 % of Q, contact position within 0.1 mm, creep forces within 1 % of mu Q.
+TEST(ContactLut, InterpolationBetweenNodesMeetsTheTargetsOnTheTread) {
+  const ContactLut& lut = HertzLut();
+  int checked = 0;
+  for (double y_mm : {-3.37, -1.12, 0.61, 1.88, 3.13, 4.41}) {
+    for (double psi : {-1.3e-3, 0.7e-3}) {
+      for (Side side : {Side::Left, Side::Right}) {
+        const double Q = 43.7e3;
+        LutCellInfo info;
+        const WheelContactReport l = FromLut(lut, side, y_mm * 1e-3, psi, Q, Options(ContactModel::Hertz), &info);
+        if (!info.single_topology) continue;
+        const WheelContactReport d = Direct(side, y_mm * 1e-3, psi, Q, Options(ContactModel::Hertz));
+        ASSERT_EQ(l.patches.size(), d.patches.size());
+        for (size_t j = 0; j < d.patches.size(); ++j) {
+          EXPECT_NEAR(l.patches[j].fn_N, d.patches[j].fn_N, 0.01 * Q) << "y " << y_mm;
+          EXPECT_NEAR(l.patches[j].y_contact_rail_m, d.patches[j].y_contact_rail_m, 0.1e-3) << "y " << y_mm;
+          EXPECT_NEAR(l.patches[j].fx_N, d.patches[j].fx_N, 0.01 * 0.3 * Q) << "y " << y_mm;
+          EXPECT_NEAR(l.patches[j].fy_N, d.patches[j].fy_N, 0.01 * 0.3 * Q) << "y " << y_mm;
+        }
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GE(checked, 16);
+}
+
+// Two-point contact of S1002 on 60E1 (1:40, hertz, rigid flange) pushed towards the flange: tread (0.12-0.14 rad)
+// and flange root (0.29-0.32 rad) together at y = 4.75-5.25 mm, the flange root alone up to 6.25 mm, then the jump
+// onto the flange (1.2 rad, the tread lifted). Inside a cell whose corners all have the two patches the LUT keeps
+// them apart (never one averaged patch); in a cell where the topology changes it takes the nearest node's and
+// interpolates only among the corners sharing it (each angle within those corners' angles).
+TEST(ContactLut, TwoPointContactKeepsTwoPatches) {
+  const ContactLut& lut = HertzLut();
+  const ContactLutGrid& g = lut.grid;
+  const std::vector<LutNode>& nodes = lut.nodes[side_index(Side::Left)];
+  int two_patch_cells = 0, jump_cells = 0, tread_and_flange = 0;
+  for (size_t iy = 0; iy + 1 < g.lateral_m.size(); ++iy) {
+    const size_t ip = 1, iq = 1;  // yaw 0 .. 2 mrad, load 50 .. 70 kN
+    int two = 0;
+    for (int c = 0; c < 8; ++c)
+      two += nodes[g.index(iy + (c >> 2 & 1), ip + (c >> 1 & 1), iq + (c & 1))].patches.size() == 2;
+    if (two == 0) continue;
+    for (double t : {0.3, 0.7}) {
+      const double y = g.lateral_m[iy] + t * (g.lateral_m[iy + 1] - g.lateral_m[iy]);
+      const double psi = 0.9e-3, Q = 61e3;
+      LutCellInfo info;
+      const WheelContactReport l = FromLut(lut, Side::Left, y, psi, Q, Options(ContactModel::Hertz), &info);
+      ASSERT_EQ(l.status, WheelContactStatus::Ok);
+      if (two == 8) {
+        ++two_patch_cells;
+        ASSERT_EQ(l.patches.size(), 2u) << "y " << y;
+        // two separate patches (also two tread patches of two rigid gap minima elsewhere on the tread)
+        EXPECT_GT(std::fabs(l.patches[0].reference_s_on_rail_m - l.patches[1].reference_s_on_rail_m), 2e-3);
+        const double lo = std::min(l.patches[0].contact_angle_rad, l.patches[1].contact_angle_rad);
+        const double hi = std::max(l.patches[0].contact_angle_rad, l.patches[1].contact_angle_rad);
+        if (hi > 0.25) {  // tread (0.12-0.14 rad) and flange root (0.29-0.32 rad)
+          ++tread_and_flange;
+          EXPECT_LT(lo, 0.2);
+        }
+        const WheelContactReport d = Direct(Side::Left, y, psi, Q, Options(ContactModel::Hertz));
+        ASSERT_EQ(d.patches.size(), 2u) << "y " << y;
+        for (size_t j = 0; j < 2; ++j) {
+          EXPECT_NEAR(l.patches[j].contact_angle_rad, d.patches[j].contact_angle_rad, 0.05);
+          EXPECT_NEAR(l.patches[j].fn_N, d.patches[j].fn_N, 0.05 * Q);
+        }
+      } else {
+        ++jump_cells;
+        EXPECT_FALSE(info.single_topology);
+        // the nearest corner's topology (psi: t = 0.45 -> lower, Q: t = 0.55 -> upper), each patch's angle within
+        // those of the corners sharing it: nothing averaged across a topology change
+        const LutNode& nearest = nodes[g.index(iy + (t > 0.5 ? 1 : 0), ip, iq + 1)];
+        ASSERT_EQ(l.patches.size(), nearest.patches.size()) << "y " << y;
+        for (size_t j = 0; j < l.patches.size(); ++j) {
+          double lo = 1e9, hi = -1e9;
+          for (int c = 0; c < 8; ++c) {
+            const LutNode& n = nodes[g.index(iy + (c >> 2 & 1), ip + (c >> 1 & 1), iq + (c & 1))];
+            if (n.patches.size() != nearest.patches.size()) continue;
+            lo = std::min(lo, n.patches[j].contact_angle_rad);
+            hi = std::max(hi, n.patches[j].contact_angle_rad);
+          }
+          EXPECT_GE(l.patches[j].contact_angle_rad, lo - 1e-12);
+          EXPECT_LE(l.patches[j].contact_angle_rad, hi + 1e-12);
+        }
+      }
+    }
+  }
+  EXPECT_GE(tread_and_flange, 2);
+  EXPECT_GE(jump_cells, 4);
+}
+
+// With the total-force balance the LUT's wheel carries the load (pressure and creep forces) like the direct solve.
+TEST(ContactLut, TotalForceBalanceCarriesTheLoad) {
+  const ContactLut& lut = HertzLut();
+  const double Q = 47e3;
+  const WheelContactOptions o = Options(ContactModel::Hertz, LoadBalance::Total);
+  const WheelContactReport l = FromLut(lut, Side::Left, 1.1e-3, 0.5e-3, Q, o);
+  const WheelContactReport d = Direct(Side::Left, 1.1e-3, 0.5e-3, Q, o);
+  ASSERT_EQ(l.status, WheelContactStatus::Ok);
+  EXPECT_NEAR(l.vertical_force_N, Q, 1e-5 * Q);
+  EXPECT_NEAR(l.pressure_vertical_force_N, d.pressure_vertical_force_N, 0.01 * Q);
+  EXPECT_NEAR(l.lateral_force_N, d.lateral_force_N, 0.01 * Q);
+}
+
+TEST(ContactLut, FileRoundTripIsExact) {
+  const ContactLut& lut = ConformalLut();
+  const std::string path = (std::filesystem::temp_directory_path() /
+                                ("conforma_test_contact_lut_" + std::to_string(getpid()) + ".h5")).string();
+  SaveContactLut(lut, path);
+  const ContactLut back = LoadContactLut(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(back.grid.lateral_m, lut.grid.lateral_m);
+  EXPECT_EQ(back.grid.yaw_rad, lut.grid.yaw_rad);
+  EXPECT_EQ(back.grid.load_N, lut.grid.load_N);
+  EXPECT_EQ(back.header.model, lut.header.model);
+  EXPECT_EQ(back.header.rail_origin_eta_m, lut.header.rail_origin_eta_m);
+  EXPECT_EQ(back.header.max_touching_contact_angle_rad, lut.header.max_touching_contact_angle_rad);
+  for (int s = 0; s < 2; ++s) {
+    ASSERT_EQ(back.nodes[s].size(), lut.nodes[s].size());
+    for (size_t k = 0; k < lut.nodes[s].size(); ++k) {
+      const LutNode &a = lut.nodes[s][k], &b = back.nodes[s][k];
+      ASSERT_EQ(a.status, b.status);
+      ASSERT_EQ(a.vertical_m, b.vertical_m);
+      ASSERT_EQ(a.roll_rad, b.roll_rad);
+      ASSERT_EQ(a.patches.size(), b.patches.size());
+      for (size_t j = 0; j < a.patches.size(); ++j) {
+        const LutPatch &p = a.patches[j], &q = b.patches[j];
+        EXPECT_EQ(p.model, q.model);
+        EXPECT_EQ(p.fn_N, q.fn_N);
+        EXPECT_EQ(p.y_contact_rail_m, q.y_contact_rail_m);
+        EXPECT_EQ(p.pressure_lateral_N, q.pressure_lateral_N);
+        EXPECT_EQ(p.a_m, q.a_m);
+        EXPECT_EQ(p.centre_s_m, q.centre_s_m);
+        EXPECT_EQ(p.creepage_map, q.creepage_map);
+        EXPECT_EQ(p.slip_map, q.slip_map);
+        EXPECT_EQ(p.stations, q.stations);
+        EXPECT_EQ(p.station_s_max_m, q.station_s_max_m);
+      }
+    }
+  }
+  const WheelContactReport x = FromLut(lut, Side::Right, 1.3e-3, 1e-3, 50e3, Options(ContactModel::Conformal));
+  const WheelContactReport y = FromLut(back, Side::Right, 1.3e-3, 1e-3, 50e3, Options(ContactModel::Conformal));
+  ASSERT_EQ(x.patches.size(), y.patches.size());
+  for (size_t j = 0; j < x.patches.size(); ++j) EXPECT_EQ(x.patches[j].fy_N, y.patches[j].fy_N);
+}
+
+TEST(ContactLut, OutsideTheTableIsAnInputErrorNamingTheAxis) {
+  const ContactLut& lut = HertzLut();
+  auto message = [&](double y, double psi, double Q) {
+    try {
+      FromLut(lut, Side::Left, y, psi, Q, Options(ContactModel::Hertz));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(9e-3, 0.0, 50e3).find("lateral shift y = 9 mm"), std::string::npos) << message(9e-3, 0.0, 50e3);
+  EXPECT_NE(message(0.0, 3e-3, 50e3).find("yaw psi"), std::string::npos);
+  EXPECT_NE(message(0.0, 0.0, 90e3).find("wheel load Q"), std::string::npos);
+}
+
+TEST(ContactLut, BadInputIsAnInputError) {
+  const ContactLut& lut = HertzLut();
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(0.0, 0.0);
+  WheelContactOptions o = Options(ContactModel::Hertz);
+  o.vertical_load_N = -1.0;  // approach mode is not tabulated
+  EXPECT_THROW(EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), o), InputError);
+  o.vertical_load_N = 50e3;
+  o.model = ContactModel::Kpec;  // not the table's model
+  EXPECT_THROW(EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), o), InputError);
+  o.model = ContactModel::Hertz;
+  o.vertical_load_N = 0.0;  // unloaded: no contact, as the pipeline
+  EXPECT_EQ(EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), o).status,
+            WheelContactStatus::NoContact);
+  EXPECT_THROW(LoadContactLut("/nonexistent/folder/no_such_table.h5"), InputError);
+  ContactLutBuildOptions b;
+  b.grid.lateral_m = {0.0, 1e-3};
+  b.grid.yaw_rad = {0.0, 0.0};  // not increasing
+  b.grid.load_N = {40e3, 60e3};
+  EXPECT_THROW(BuildContactLut(Geometry(), b), InputError);
+  b.grid.yaw_rad = {0.0, 1e-3};
+  b.grid.load_N = {-10e3, 60e3};  // negative load
+  EXPECT_THROW(BuildContactLut(Geometry(), b), InputError);
+  EXPECT_THROW(MakeLutContactFunction(nullptr), InputError);
+}
+
+// Each node is solved on its own and written into its slot: 1 and 2 threads give the identical table.
+TEST(ContactLut, GenerationIsIndependentOfTheThreadCount) {
+  ContactLutBuildOptions b;
+  b.grid.lateral_m = Axis(4.0, 8.0, 0.5, 1e-3);
+  b.grid.yaw_rad = {0.0, 2e-3};
+  b.grid.load_N = {40e3, 60e3};
+  b.contact = Options(ContactModel::Kpec);
+  b.threads = 1;
+  const ContactLut one = BuildContactLut(Geometry(), b);
+  b.threads = 2;
+  const ContactLut two = BuildContactLut(Geometry(), b);
+  for (int s = 0; s < 2; ++s)
+    for (size_t k = 0; k < one.nodes[s].size(); ++k) {
+      ASSERT_EQ(one.nodes[s][k].patches.size(), two.nodes[s][k].patches.size());
+      EXPECT_EQ(one.nodes[s][k].vertical_m, two.nodes[s][k].vertical_m);
+      for (size_t j = 0; j < one.nodes[s][k].patches.size(); ++j) {
+        EXPECT_EQ(one.nodes[s][k].patches[j].fn_N, two.nodes[s][k].patches[j].fn_N);
+        EXPECT_EQ(one.nodes[s][k].patches[j].slip_map, two.nodes[s][k].patches[j].slip_map);
+      }
+    }
+}
+
+// As a WheelContactFunction the LUT gives what EvaluateContactLut gives.
+TEST(ContactLut, ContactFunctionWrapsTheEvaluation) {
+  auto lut = std::make_shared<const ContactLut>(HertzLut());
+  const WheelContactFunction f = MakeLutContactFunction(lut);
+  WheelContactOptions o = Options(ContactModel::Hertz);
+  o.vertical_load_N = 55e3;
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(2.2e-3, 0.3e-3);
+  const WheelContactReport a = f(Geometry(), Side::Right, eq.pose, Velocity(), o);
+  const WheelContactReport b = EvaluateContactLut(*lut, Geometry(), Side::Right, eq.pose, Velocity(), o);
+  ASSERT_EQ(a.patches.size(), b.patches.size());
+  EXPECT_EQ(a.lateral_force_N, b.lateral_force_N);
+}
