@@ -13,6 +13,8 @@
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "conforma/contact_lut.hpp"
+#include "conforma/contact_lut_io.hpp"
 #include "exit_status.hpp"
 #include "conforma/error.hpp"
 #include "conforma/hertz.hpp"
@@ -56,7 +58,7 @@ LinearWheelsetContact ProfileLinearContact(const WheelsetTrackGeometry& g, const
 void RegisterDynamicsCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("dynamics", "time-domain lateral vehicle dynamics over a tangent or a curve");
   struct Args {
-    std::string scenario, model, out, stepper = "rosenbrock4", irregularity;
+    std::string scenario, model, out, stepper = "rosenbrock4", irregularity, lut;
     int bogies = 0, jacobian_reuse = 1;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
            curve = 100.0, cant_mm = 0.0, start = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
@@ -80,6 +82,8 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--irregularity", a->irregularity,
                   "track irregularity CSV (track_irregularity.hpp: s_m, alignment_m[, alignment_slope, vertical_level_m, "
                   "cross_level_rad]; `conforma track irregularity` writes one); it must cover the run");
+  sub->add_option("--lut", a->lut, "contact look-up table (HDF5, `conforma lut build` with the same profiles and model) "
+                                   "instead of the direct contact solver");
   sub->add_option("--start-m", a->start, "station s of the leading bogie centre at t = 0, m (the curve begins at s = 0 "
                                          "with its tangent; an irregularity file must cover the whole vehicle)");
   sub->add_option("--offset-mm", a->offset_mm, "initial lateral offset of every wheelset, mm (the disturbance)");
@@ -154,7 +158,11 @@ void RegisterDynamicsCommand(CLI::App& app) {
                          std::to_string(s_end) + " m");
       SetTrackIrregularity(track, irr, o.model.cant_base_m);
     }
-    const VehicleDynamicsModel m(vehicle, &g, track, o.model, &SolveWheelContact);
+    WheelContactFunction contact = &SolveWheelContact;
+    if (!a->lut.empty()) {  // the table checks profiles, model and material against the query at each evaluation
+      contact = MakeLutContactFunction(std::make_shared<const ContactLut>(LoadContactLut(a->lut)));
+    }
+    const VehicleDynamicsModel m(vehicle, &g, track, o.model, contact);
     o.duration_s = a->duration;
     o.output_interval_s = a->interval;
     o.absolute_tolerance = a->atol;
@@ -173,8 +181,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
       if (!f) throw InputError("--out: cannot write '" + a->out + "'");
       WriteDynamicsHistoryCsv(f, m, r);
     }
-    std::printf("dynamics: %s, %s contact (%s), stepper %s, V %.1f km/h, %d bogies\n", to_string(r.status),
-                to_string(o.model.contact_kind), to_string(model), to_string(o.stepper), a->speed_kmh, vehicle.bogie_count);
+    std::printf("dynamics: %s, %s contact (%s%s), stepper %s, V %.1f km/h, %d bogies\n", to_string(r.status),
+                to_string(o.model.contact_kind), to_string(model), a->lut.empty() ? ", direct" : ", look-up table",
+                to_string(o.stepper), a->speed_kmh, vehicle.bogie_count);
     std::printf("  simulated %.3f s (%.1f m) in %.2f s wall: %.3f simulated s per wall s\n", r.simulated_time_s,
                 r.simulated_time_s * o.model.speed_m_s, wall, r.simulated_time_s / wall);
     std::printf("  steps %ld (rejected %ld, contact-failure retries %ld), derivatives %ld, Jacobians %ld, contact solves %ld\n",
