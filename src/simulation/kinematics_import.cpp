@@ -29,42 +29,15 @@ const std::array<const char*, kColumnCount> kNames = {
 }  // namespace
 
 KinematicsSeries ImportKinematicsCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open kinematics file");
+  const CsvColumns table = ReadCsvColumns(path, std::vector<std::string>(kNames.begin(), kNames.end()), kRequiredCount);
   KinematicsSeries series;
   series.source = path;
-  std::array<int, kColumnCount> index;
-  index.fill(-1);
-  size_t header_cells = 0;
-  bool have_header = false, have_weight = false;
-  std::string line;
-  int line_no = 0;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string t = TrimCsvCell(line);
-    if (t.empty() || t[0] == '#') continue;
-    const std::vector<std::string> cells = SplitCsvCells(t);
-    if (!have_header) {
-      header_cells = cells.size();
-      for (size_t k = 0; k < cells.size(); ++k)
-        for (int c = 0; c < kColumnCount; ++c)
-          if (cells[k] == kNames[c]) {
-            if (index[c] >= 0) throw InputError(path, line_no, "column '" + cells[k] + "' appears twice");
-            index[c] = static_cast<int>(k);
-          }
-      for (int c = 0; c < kRequiredCount; ++c)
-        if (index[c] < 0)
-          throw InputError(path, line_no, std::string("missing required column '") + kNames[c] + "'");
-      have_weight = index[kWeight] >= 0;
-      have_header = true;
-      continue;
-    }
-    if (cells.size() != header_cells)
-      throw InputError(path, line_no, "expected " + std::to_string(header_cells) + " cells, found " +
-                                          std::to_string(cells.size()));
+  const bool have_weight = table.present[kWeight];
+  for (size_t row = 0; row < table.rows(); ++row) {
+    const int line_no = table.line[row];
     std::array<double, kColumnCount> v{};
     for (int c = 0; c < kColumnCount; ++c)
-      if (index[c] >= 0) v[c] = ParseCsvNumber(cells[index[c]], kNames[c], path, line_no);
+      if (table.present[c]) v[c] = table.values[c][row];
     if (v[kWheelset] < 0.0 || v[kWheelset] != std::floor(v[kWheelset]) || v[kWheelset] > 1e6)
       throw InputError(path, line_no, "column 'wheelset' must be a non-negative integer");
     if (v[kLoadLeft] < 0.0) throw InputError(path, line_no, "column 'load_left_N' must be >= 0");
@@ -84,10 +57,9 @@ KinematicsSeries ImportKinematicsCsv(const std::string& path) {
     s.velocity.axle_angular_velocity_rad_s = v[kOmega];
     s.vertical_load_N[0] = v[kLoadLeft];
     s.vertical_load_N[1] = v[kLoadRight];
-    s.track_curvature_per_m = index[kCurvature] >= 0 ? v[kCurvature] : 0.0;
+    s.track_curvature_per_m = table.present[kCurvature] ? v[kCurvature] : 0.0;
     series.samples.push_back(s);
   }
-  if (!have_header) throw InputError(path, line_no, "no header line (column names) found");
   if (!have_weight) {  // equal weights per wheelset
     std::map<int, int> count;
     for (const KinematicsSample& s : series.samples) ++count[s.wheelset];
