@@ -16,7 +16,9 @@
 //   start      in a curve, the quasi-static curving solution (SolveQuasiStaticCurving) when the provider would
 //              accept it (QuasiStaticRejection empty), else the kinematic curving estimate; the carbodies on the
 //              chord through their bogie centres, shifted by the secondary deflection m_c a_nc / k_s,y; all rates
-//              zero. On tangent track: centred. The first settle_s seconds are discarded.
+//              zero. On tangent track: centred. With an irregularity every body is then moved onto the actual
+//              centre line at its station (y + y_irr, psi + y_irr', dy/dt = V y_irr'). The first settle_s seconds
+//              are discarded.
 //   samples    every history sample at t = settle_s, settle_s + sample_interval_s, ... up to settle_s + duration_s:
 //              per wheelset j at its station s = s0 + V t + x_j the pose RELATIVE TO THE ACTUAL (IRREGULAR) TRACK
 //              as the contact saw it, y - y_irr(s) and psi - y_irr'(s), vertical position and roll of the rigid

@@ -118,6 +118,19 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
   const VehicleDynamicsModel m(v, &g, track, o.model, contact);
   DynamicClassKinematics out;
   if (c != 0.0) CurveStart(sc, g, tc, qo, contact, m, &o, &out.quasistatic_start);
+  if (d.irregularity) {
+    // every body starts on the actual (irregular) centre line at its station, moving along it: the transient of
+    // a vehicle put down beside the track is not in the samples' start
+    const int nq = m.position_count();
+    o.initial_positions.resize(nq, 0.0);
+    o.initial_velocities.assign(nq, 0.0);
+    for (int q = 0; q < nq; q += 2) {
+      const double s = s0 + m.body_position_m(q);
+      o.initial_positions[q] += track.alignment(s);
+      o.initial_positions[q + 1] += track.alignment_derivative(s);
+      o.initial_velocities[q] = V * track.alignment_derivative(s);
+    }
+  }
 
   const DynamicsResult r = SimulateVehicleDynamics(m, o);
   out.status = r.status;
