@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "conforma/dynamic_kinematics.hpp"
@@ -93,6 +94,29 @@ TEST(DynamicKinematics, IrregularitySpreadsTheContactAndTheSeedReproducesIt) {
     EXPECT_EQ(p.vertical_load_N[1], q.vertical_load_N[1]);
   }
   for (const auto& [ws, sum] : WeightSums(a)) EXPECT_NEAR(sum, 1.0, 1e-12) << "ws " << ws;
+}
+
+TEST(DynamicKinematics, FailedIntegrationFallsBackWithItsReason) {
+  const Scenario sc = ParseScenario(
+      ScenarioText("{duration_s: 0.2, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none}", "600"), "test");
+  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
+  // a contact that never solves: the quasi-static start and the integration both fail
+  const WearContactFunction broken = [](const WheelsetTrackGeometry&, Side, const WheelsetPose&, const WheelsetVelocity&,
+                                        const WheelContactOptions&) { return WheelContactReport{}; };
+  const DynamicClassKinematics r = SimulateClassKinematics(sc, g, sc.classes[0], ContactModel::Hertz, broken);
+  EXPECT_FALSE(r.failure.empty());
+  EXPECT_NE(r.status, DynamicsStatus::Completed);
+  EXPECT_TRUE(r.series.samples.empty());
+  auto log = std::make_shared<KinematicsFallbackLog>();
+  const KinematicsFunction kin = MakeWearKinematics(sc, ContactModel::Hertz, broken, log);
+  const KinematicsSeries s = kin(g, sc.classes[0], 0);
+  ASSERT_EQ(log->size(), 1u);
+  const KinematicsFallbackLog::Entry e = log->since(0)[0];
+  EXPECT_EQ(e.replacement, "kinematic estimate");
+  EXPECT_NE(e.reason.find("dynamics"), std::string::npos) << e.reason;
+  const KinematicsSeries estimate = KinematicCurvingEstimate(sc, g, sc.classes[0]);
+  ASSERT_EQ(s.samples.size(), estimate.samples.size());
+  for (size_t i = 0; i < s.samples.size(); ++i) EXPECT_EQ(s.samples[i].pose.lateral_m, estimate.samples[i].pose.lateral_m);
 }
 
 TEST(DynamicKinematics, BadKeysAreInputErrorsNamingTheKey) {
