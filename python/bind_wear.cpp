@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "conforma/dynamic_kinematics.hpp"
 #include "conforma/error.hpp"
 #include "conforma/scenario.hpp"
 #include "conforma/wear_simulation.hpp"
@@ -65,6 +66,7 @@ py::dict RunWear(const py::object& scenario, const std::string& model, int steps
   o.contact.model = model.empty() ? sc.model : ParseContactModel(model);
   o.steps = steps;
   o.total_km = total_km;
+  o.kinematics_factory = &MakeWearKinematics;  // every provider of the scenario, `dynamic` included
   WearSimulationResult r;
   {
     py::gil_scoped_release release;

@@ -5,11 +5,17 @@
 // the key and the file):
 //   name: default_metro
 //   vehicle: { base: metro | minuetto, bogie_count: 5, wheelbase_m: 2.0, ... any VehicleParameters field }
-//   kinematics: { provider: quasistatic | centred | kinematic, tangent_amplitude_mm: 3, tangent_phases: 8,
-//                 cant_base_m: 1.5, free_axle_rotation: true, axle_torque_Nm: 0 }
+//   kinematics: { provider: quasistatic | centred | kinematic | dynamic, tangent_amplitude_mm: 3, tangent_phases: 8,
+//                 cant_base_m: 1.5, free_axle_rotation: true, axle_torque_Nm: 0, contact_model: hertz,
+//                 dynamic: { duration_s: 4, settle_s: 1, sample_interval_s: 0.02, stepper: rosenbrock4,
+//                            irregularity: { spectrum: ore_b176_low, seed: 1, wavelength_min_m: 3,
+//                                            wavelength_max_m: 70 } | none } }
 //       quasistatic: kinematics_quasistatic.hpp (Ceres, contact model in the loop) -- the default;
 //       centred:     every wheelset centred and unyawed, yaw rate V/R, pure rolling (fast, for tests);
-//       kinematic:   the kinematic curving estimate of wear_simulation.hpp (flange contact + angle of attack).
+//       kinematic:   the kinematic curving estimate of wear_simulation.hpp (flange contact + angle of attack);
+//       dynamic:     each class run in the time domain (dynamic_kinematics.hpp, dynamics layer: the commands inject
+//                    it through WearSimulationOptions::kinematics_factory); `dynamic` holds its settings (the
+//                    defaults shown; ScenarioDynamicKinematics).
 //   track: { gauge_mm: 1435, rail_inclination: "1:20" | 0.05 (rad) }
 //   profiles: { wheel: S1002 | <file>, rail: 50E4 | 60E1 | 54E1 | 50E6 | <file>, wheel_radius_mm: 355.5,
 //               wheel_mirror / rail_mirror: false, wheel_z_down / rail_z_down: false, wheel_units / rail_units: mm | m,
@@ -38,6 +44,7 @@
 //                      remainder to 100 % becomes a tangent class at tangent_speed_kmh (key of the same map).
 // Relative file paths are resolved against the scenario file's folder; a path starting with $CONFORMA_DATA_DIR/ is
 // in the shared data folder (data_paths.hpp SharedDataDir). Lengths in the file in mm where named.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -46,6 +53,7 @@
 #include "conforma/load_control.hpp"
 #include "conforma/material.hpp"
 #include "conforma/profile.hpp"
+#include "conforma/track_irregularity_psd.hpp"
 #include "conforma/vehicle.hpp"
 #include "conforma/wear_distribution.hpp"
 
@@ -53,8 +61,25 @@ namespace conforma {
 
 // The kinematics provider of the scenario (`kinematics.provider` above): QuasiStatic (quasistatic), Centred
 // (centred), Kinematic (kinematic).
-enum class KinematicsProvider { QuasiStatic, Centred, Kinematic };
-const char* to_string(KinematicsProvider provider);  // "quasistatic", "centred", "kinematic"
+// Dynamic (dynamic): the time-domain provider of the dynamics layer (dynamic_kinematics.hpp).
+enum class KinematicsProvider { QuasiStatic, Centred, Kinematic, Dynamic };
+const char* to_string(KinematicsProvider provider);  // "quasistatic", "centred", "kinematic", "dynamic"
+
+// The `kinematics.dynamic` map: how the `dynamic` provider runs each track class in the time domain
+// (dynamic_kinematics.hpp). Every field optional; bad values are an InputError naming the key.
+struct ScenarioDynamicKinematics {
+  double duration_s = 4.0;          // simulated time per class after settle_s whose samples are kept, s, > 0
+  double settle_s = 1.0;            // simulated time discarded at the start (transient from the initial state), s, >= 0
+  double sample_interval_s = 0.02;  // time between kept samples, s, > 0 and <= duration_s
+  std::string stepper = "rosenbrock4";  // rosenbrock4 | dopri5 (vehicle_dynamics.hpp DynamicsStepper)
+  // Track irregularity (track_irregularity.hpp SynthesizeTrackIrregularity) under every class; `irregularity: none`
+  // gives the perfect track (the samples then settle on the steady curving state).
+  bool irregularity = true;
+  IrregularitySpectrum spectrum = IrregularitySpectrum::OreB176Low;  // spectrum: ore_b176_low | ... | fra_class_6
+  std::uint64_t seed = 1;           // seed: phases of the synthesis (same seed: the same track, bit for bit)
+  double wavelength_min_m = 3.0;    // > 0
+  double wavelength_max_m = 70.0;   // >= wavelength_min_m
+};
 
 // The `kinematics` map; the fields of QuasiStaticOptions of the same names.
 struct ScenarioKinematics {
@@ -70,6 +95,7 @@ struct ScenarioKinematics {
   // would use) leaves the wear step's contact model unchanged and makes conformal runs several times faster.
   bool contact_model_set = false;                    // kinematics.contact_model given
   ContactModel contact_model = ContactModel::Hertz;  // read only with contact_model_set
+  ScenarioDynamicKinematics dynamic;                 // kinematics.dynamic (used by the dynamic provider only)
 };
 
 struct ScenarioUpdate {

@@ -136,6 +136,8 @@ class KinematicsFallbackLog {
   mutable std::mutex mutex_;
   std::vector<Entry> entries_;
 };
+// The `dynamic` provider is not made here (it lives in the dynamics layer): InputError naming
+// WearSimulationOptions::kinematics_factory.
 KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
                                           std::shared_ptr<KinematicsFallbackLog> fallbacks = nullptr);
 
@@ -161,6 +163,14 @@ struct WearSimulationOptions {
   int invalid_step_halvings = 3;     // >= 0
   // Called after every wheel step (progress display, streaming output); may be empty.
   std::function<void(const struct WearStepRecord&)> on_step;
+  // Makes the run's kinematics provider (when RunWearSimulation gets no KinematicsFunction) from the scenario, the
+  // contact model of the curving solve (CurvingContactModel), the wear contact function and the run's fallback
+  // log (its entries become steps.csv kinematics_fallbacks). Empty: MakeScenarioKinematics. The `dynamic`
+  // provider lives in the dynamics layer above this one and comes in here (dynamic_kinematics.hpp
+  // MakeWearKinematics).
+  std::function<KinematicsFunction(const Scenario&, ContactModel, const WearContactFunction&,
+                                   std::shared_ptr<KinematicsFallbackLog>)>
+      kinematics_factory;
 };
 
 // One completed wheel step (a step whose profile update fails ends the run without a record).

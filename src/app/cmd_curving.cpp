@@ -1,12 +1,16 @@
 // conforma curving --scenario F [--class I] [--model M] [--provider P]: the curving kinematics of a scenario's track
 // classes on its initial profiles, with the contact forces of every wheel at the solution (what the wear loop
 // uses as its samples; kinematics_quasistatic.hpp, wear_simulation.hpp).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <vector>
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "conforma/dynamic_kinematics.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kinematics_quasistatic.hpp"
 #include "conforma/scenario.hpp"
@@ -62,6 +66,31 @@ void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const 
                 w.wheel[0].max_contact_angle_rad * 180.0 / M_PI, w.wheel[1].max_contact_angle_rad * 180.0 / M_PI);
 }
 
+// The dynamic provider's samples per wheelset: count, mean, standard deviation and range of y and psi (relative to
+// the actual track), and of the load of the outer (right for a left curve) wheel.
+void PrintSampleSummary(const KinematicsSeries& s) {
+  std::map<int, std::vector<const KinematicsSample*>> by_ws;
+  for (const KinematicsSample& k : s.samples) by_ws[k.wheelset].push_back(&k);
+  for (const auto& [ws, v] : by_ws) {
+    auto stats = [&v](auto f, double scale, const char* name, const char* unit) {
+      double mean = 0.0, lo = 1e300, hi = -1e300;
+      for (const KinematicsSample* k : v) {
+        const double x = f(*k) * scale;
+        mean += x / v.size();
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+      double var = 0.0;
+      for (const KinematicsSample* k : v) var += std::pow(f(*k) * scale - mean, 2) / v.size();
+      std::printf("  %s %+8.3f +/- %6.3f [%+8.3f, %+8.3f] %s", name, mean, std::sqrt(var), lo, hi, unit);
+    };
+    std::printf("    ws %d: %zu samples, weights %.4f\n     ", ws, v.size(), v.front()->weight);
+    stats([](const KinematicsSample& k) { return k.pose.lateral_m; }, 1e3, "y", "mm");
+    stats([](const KinematicsSample& k) { return k.pose.yaw_rad; }, 1e3, "psi", "mrad\n     ");
+    stats([](const KinematicsSample& k) { return k.vertical_load_N[1]; }, 1e-3, "Q_R", "kN\n");
+  }
+}
+
 }  // namespace
 
 void RegisterCurvingCommand(CLI::App& app) {
@@ -77,7 +106,8 @@ void RegisterCurvingCommand(CLI::App& app) {
   sub->add_option("--model", a->model, WearModelHelp("contact model") + "; default: the scenario's");
   sub->add_flag("--equilibrium", a->equilibrium,
                 "also print the quasi-static solve itself: status and residual per bogie, flange-contact shift");
-  sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred (default: the scenario's)");
+  sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred, dynamic (default: the scenario's; dynamic prints a summary of "
+                                          "the samples per wheelset)");
   sub->callback([a]() {
     Scenario sc = LoadScenario(a->scenario);
     const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
@@ -88,13 +118,14 @@ void RegisterCurvingCommand(CLI::App& app) {
     if (a->provider == "quasistatic") sc.kinematics.provider = KinematicsProvider::QuasiStatic;
     else if (a->provider == "kinematic") sc.kinematics.provider = KinematicsProvider::Kinematic;
     else if (a->provider == "centred") sc.kinematics.provider = KinematicsProvider::Centred;
+    else if (a->provider == "dynamic") sc.kinematics.provider = KinematicsProvider::Dynamic;
     else if (!a->provider.empty()) throw InputError("--provider: unknown provider '" + a->provider + "'");
     const int nc = static_cast<int>(sc.classes.size());
     if (a->track_class >= nc) throw InputError("--class: index " + std::to_string(a->track_class) + " >= " + std::to_string(nc));
     const WheelsetTrackGeometry g(sc.MakeTrackSetup());
     auto fallbacks = std::make_shared<KinematicsFallbackLog>();
     const ContactModel curving_model = CurvingContactModel(sc, model);
-    const KinematicsFunction kin = MakeScenarioKinematics(sc, curving_model, &SolveWheelContact, fallbacks);
+    const KinematicsFunction kin = MakeWearKinematics(sc, curving_model, &SolveWheelContact, fallbacks);
     for (int c = 0; c < nc; ++c) {
       if (a->track_class >= 0 && c != a->track_class) continue;
       const TrackClass& tc = sc.classes[c];
@@ -107,7 +138,8 @@ void RegisterCurvingCommand(CLI::App& app) {
                   tc.curve_radius_m, tc.cant_m * 1e3, tc.speed_m_s * 3.6, tc.share, to_string(sc.kinematics.provider),
                   fell_back.c_str());
       if (a->equilibrium && TrackClassCurvature(tc) != 0.0) PrintEquilibrium(sc, g, tc, curving_model);
-      PrintSamples(sc, g, s, model);
+      if (sc.kinematics.provider == KinematicsProvider::Dynamic) PrintSampleSummary(s);
+      else PrintSamples(sc, g, s, model);
     }
   });
 }

@@ -1,6 +1,8 @@
 // Output files of a wear run (wear_output.hpp).
 #include "wear_output.hpp"
 
+#include "conforma/dynamic_kinematics.hpp"
+
 #include <unistd.h>
 
 #include <chrono>
@@ -110,6 +112,8 @@ WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationO
     WriteWearStep(dir, s);
     PrintProgress(label, s, steps_total);
   };
+  // every provider of the scenario, the time-domain `dynamic` one included (dynamic_kinematics.hpp)
+  if (!options.kinematics_factory) options.kinematics_factory = &MakeWearKinematics;
   const auto t0 = std::chrono::steady_clock::now();
   WearSimulationResult result = RunWearSimulation(scenario, options);
   *wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

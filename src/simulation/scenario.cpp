@@ -24,6 +24,7 @@ const char* to_string(KinematicsProvider provider) {
     case KinematicsProvider::QuasiStatic: return "quasistatic";
     case KinematicsProvider::Centred: return "centred";
     case KinematicsProvider::Kinematic: return "kinematic";
+    case KinematicsProvider::Dynamic: return "dynamic";
   }
   return "?";
 }
@@ -263,6 +264,53 @@ std::vector<TrackClass> ClassesFromCsv(const Reader& r, const YAML::Node& n, dou
   return out;
 }
 
+// kinematics.dynamic (ScenarioDynamicKinematics); every bad value names its key.
+void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynamicKinematics* d) {
+  r.check_keys(n, "kinematics.dynamic", {"duration_s", "settle_s", "sample_interval_s", "stepper", "irregularity"});
+  if (n["duration_s"]) d->duration_s = r.number(n["duration_s"], "kinematics.dynamic.duration_s");
+  if (!(d->duration_s > 0)) r.fail("kinematics.dynamic.duration_s", "must be > 0");
+  if (n["settle_s"]) d->settle_s = r.number(n["settle_s"], "kinematics.dynamic.settle_s");
+  if (!(d->settle_s >= 0)) r.fail("kinematics.dynamic.settle_s", "must be >= 0");
+  if (n["sample_interval_s"]) d->sample_interval_s = r.number(n["sample_interval_s"], "kinematics.dynamic.sample_interval_s");
+  if (!(d->sample_interval_s > 0 && d->sample_interval_s <= d->duration_s))
+    r.fail("kinematics.dynamic.sample_interval_s", "must be > 0 and <= duration_s");
+  if (n["stepper"]) d->stepper = r.text(n["stepper"], "kinematics.dynamic.stepper");
+  if (d->stepper != "rosenbrock4" && d->stepper != "dopri5")
+    r.fail("kinematics.dynamic.stepper", "unknown stepper '" + d->stepper + "' (rosenbrock4, dopri5)");
+  if (const YAML::Node i = n["irregularity"]) {
+    if (i.IsScalar()) {
+      if (r.text(i, "kinematics.dynamic.irregularity") != "none")
+        r.fail("kinematics.dynamic.irregularity", "expected `none` or a map {spectrum, seed, wavelength_min_m, wavelength_max_m}");
+      d->irregularity = false;
+      return;
+    }
+    r.check_keys(i, "kinematics.dynamic.irregularity", {"spectrum", "seed", "wavelength_min_m", "wavelength_max_m"});
+    d->irregularity = true;
+    if (i["spectrum"]) {
+      try {
+        d->spectrum = ParseIrregularitySpectrum(r.text(i["spectrum"], "kinematics.dynamic.irregularity.spectrum"));
+      } catch (const InputError& e) {
+        r.fail("kinematics.dynamic.irregularity.spectrum", e.what());
+      }
+    }
+    if (i["seed"]) {
+      long long seed = -1;
+      try {
+        seed = i["seed"].as<long long>();
+      } catch (const YAML::Exception&) {
+        r.fail("kinematics.dynamic.irregularity.seed", "expected a non-negative integer");
+      }
+      if (seed < 0) r.fail("kinematics.dynamic.irregularity.seed", "expected a non-negative integer");
+      d->seed = static_cast<std::uint64_t>(seed);
+    }
+    if (i["wavelength_min_m"]) d->wavelength_min_m = r.number(i["wavelength_min_m"], "kinematics.dynamic.irregularity.wavelength_min_m");
+    if (i["wavelength_max_m"]) d->wavelength_max_m = r.number(i["wavelength_max_m"], "kinematics.dynamic.irregularity.wavelength_max_m");
+    if (!(d->wavelength_min_m > 0)) r.fail("kinematics.dynamic.irregularity.wavelength_min_m", "must be > 0");
+    if (!(d->wavelength_max_m >= d->wavelength_min_m))
+      r.fail("kinematics.dynamic.irregularity.wavelength_max_m", "must be >= wavelength_min_m");
+  }
+}
+
 }  // namespace
 
 void Scenario::validate() const {
@@ -318,13 +366,14 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   if (root["vehicle"]) ParseVehicle(r, root["vehicle"], &s.vehicle);
   if (const YAML::Node k = root["kinematics"]) {
     r.check_keys(k, "kinematics", {"provider", "tangent_amplitude_mm", "tangent_phases", "cant_base_m", "free_axle_rotation",
-                                     "axle_torque_Nm", "contact_model"});
+                                     "axle_torque_Nm", "contact_model", "dynamic"});
     if (k["provider"]) {
       const std::string p = r.text(k["provider"], "kinematics.provider");
       if (p == "quasistatic") s.kinematics.provider = KinematicsProvider::QuasiStatic;
       else if (p == "centred") s.kinematics.provider = KinematicsProvider::Centred;
       else if (p == "kinematic") s.kinematics.provider = KinematicsProvider::Kinematic;
-      else r.fail("kinematics.provider", "unknown provider '" + p + "' (quasistatic, centred, kinematic)");
+      else if (p == "dynamic") s.kinematics.provider = KinematicsProvider::Dynamic;
+      else r.fail("kinematics.provider", "unknown provider '" + p + "' (quasistatic, centred, kinematic, dynamic)");
     }
     if (k["tangent_amplitude_mm"]) s.kinematics.tangent_amplitude_m = 1e-3 * r.number(k["tangent_amplitude_mm"], "kinematics.tangent_amplitude_mm");
     if (k["tangent_phases"]) s.kinematics.tangent_phases = r.integer(k["tangent_phases"], "kinematics.tangent_phases");
@@ -336,6 +385,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
       s.kinematics.contact_model = ModelFromName(r, m, "kinematics.contact_model");
       s.kinematics.contact_model_set = true;
     }
+    if (k["dynamic"]) ParseDynamicKinematics(r, k["dynamic"], &s.kinematics.dynamic);
   }
   if (const YAML::Node t = root["track"]) {
     r.check_keys(t, "track", {"gauge_mm", "rail_inclination"});

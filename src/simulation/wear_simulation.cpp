@@ -122,7 +122,9 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   auto fallbacks = std::make_shared<KinematicsFallbackLog>();
   const KinematicsFunction kinematics =
       kinematics_in ? kinematics_in
-                    : MakeScenarioKinematics(scenario, CurvingContactModel(scenario, options.contact.model), contact, fallbacks);
+      : options.kinematics_factory
+          ? options.kinematics_factory(scenario, CurvingContactModel(scenario, options.contact.model), contact, fallbacks)
+          : MakeScenarioKinematics(scenario, CurvingContactModel(scenario, options.contact.model), contact, fallbacks);
 
   StepWearOptions step_options;
   step_options.contact = options.contact;

@@ -297,6 +297,10 @@ KinematicsFunction MakeScenarioKinematics(const Scenario& scenario, ContactModel
   if (scenario.kinematics.provider == KinematicsProvider::Centred) {
     return [scenario](const WheelsetTrackGeometry& g, const TrackClass& tc, int) { return CentredKinematics(scenario, g, tc); };
   }
+  if (scenario.kinematics.provider == KinematicsProvider::Dynamic)
+    throw InputError("scenario " + scenario.source + ": kinematics.provider dynamic runs in the dynamics layer; "
+                     "make the provider with MakeWearKinematics (dynamic_kinematics.hpp), e.g. through "
+                     "WearSimulationOptions::kinematics_factory");
   if (scenario.kinematics.provider == KinematicsProvider::Kinematic) {
     return [scenario](const WheelsetTrackGeometry& g, const TrackClass& tc, int) {
       return KinematicCurvingEstimate(scenario, g, tc);
