@@ -39,6 +39,9 @@ enum class IrregularityComponent {
   CrossLevel,     // cross-level angle (height difference of the rails over their distance), rad
 };
 
+// Whether the spectrum defines a cross-level PSD (the ORE B176 levels; the FRA classes do not).
+bool HasCrossLevelSpectrum(IrregularitySpectrum spectrum);
+
 // S(Omega) in m^2/(rad/m) (cross-level: rad^2/(rad/m)); Omega > 0 in rad/m. FRA classes have no cross-level
 // spectrum: InputError.
 double IrregularityPsd(IrregularitySpectrum spectrum, IrregularityComponent component, double omega_rad_m);

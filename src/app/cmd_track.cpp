@@ -37,9 +37,7 @@ void RunIrregularity(IrregularityArgs a) {
                       {"vertical level", IrregularityComponent::VerticalLevel, &t.vertical_level(), 1e3, "mm"},
                       {"cross-level", IrregularityComponent::CrossLevel, &t.cross_level(), 1e3, "mrad"}};
   for (const Row& r : rows) {
-    const bool has_psd = r.c != IrregularityComponent::CrossLevel ||
-                         a.options.spectrum == IrregularitySpectrum::OreB176Low ||
-                         a.options.spectrum == IrregularitySpectrum::OreB176High;
+    const bool has_psd = r.c != IrregularityComponent::CrossLevel || HasCrossLevelSpectrum(a.options.spectrum);
     if (!has_psd || (r.c == IrregularityComponent::CrossLevel && !a.options.cross_level)) {
       std::printf("  %-15s not synthesised\n", r.name);
       continue;

@@ -112,7 +112,6 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
     io.wavelength_max_m = d.wavelength_max_m;
     io.spacing_m = std::min(0.25, 0.25 * d.wavelength_min_m);
     io.length_m = std::max(s_end + 10.0, d.wavelength_max_m);
-    io.cross_level = d.spectrum == IrregularitySpectrum::OreB176Low || d.spectrum == IrregularitySpectrum::OreB176High;
     SetTrackIrregularity(track, SynthesizeTrackIrregularity(io), qo.cant_base_m);
   }
   const VehicleDynamicsModel m(v, &g, track, o.model, contact);

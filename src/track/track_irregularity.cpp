@@ -155,8 +155,7 @@ TrackIrregularity SynthesizeTrackIrregularity(const TrackIrregularityOptions& o)
   for (int j = 0; j <= n; ++j) s[j] = j * grid.spacing_m;
   SumHarmonics(o.spectrum, IrregularityComponent::Alignment, grid, n, 0, &alignment, &slope);
   SumHarmonics(o.spectrum, IrregularityComponent::VerticalLevel, grid, n, 1, &level, nullptr);
-  const bool ore = o.spectrum == IrregularitySpectrum::OreB176Low || o.spectrum == IrregularitySpectrum::OreB176High;
-  if (o.cross_level && ore) SumHarmonics(o.spectrum, IrregularityComponent::CrossLevel, grid, n, 2, &cross, nullptr);
+  if (o.cross_level && HasCrossLevelSpectrum(o.spectrum)) SumHarmonics(o.spectrum, IrregularityComponent::CrossLevel, grid, n, 2, &cross, nullptr);
   char source[160];
   std::snprintf(source, sizeof source, "%s seed %llu, %.6g m, wavelengths %.6g-%.6g m", to_string(o.spectrum),
                 static_cast<unsigned long long>(o.seed), o.length_m, o.wavelength_min_m, o.wavelength_max_m);

@@ -78,6 +78,8 @@ double PsdAntiderivative(IrregularitySpectrum s, IrregularityComponent c, double
 
 }  // namespace
 
+bool HasCrossLevelSpectrum(IrregularitySpectrum spectrum) { return IsOre(spectrum); }
+
 const char* to_string(IrregularitySpectrum spectrum) {
   for (const NamedSpectrum& n : kNames)
     if (n.spectrum == spectrum) return n.name;
