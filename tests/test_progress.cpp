@@ -165,6 +165,29 @@ TEST(Progress, SuspendErasesTheBarAndTheNextUpdateRedrawsIt) {
   EXPECT_EQ(out.str().find('\n'), out.str().size() - 1);
 }
 
+TEST(Progress, BarIsCutToTheTerminalWidth) {
+  FakeClock clock;
+  std::ostringstream out;
+  ProgressReporter p("hertz", 4, "step", ProgressMode::Bar, out, clock.fn());
+  p.SetMaxWidth(20);
+  p.Update(1, "a long detail that would wrap");
+  EXPECT_EQ(out.str(), "\r[hertz] [#######....\033[K");
+}
+
+// The total given with the update (a library runner's ProgressFunction): a run of more than 100 units then prints
+// every 5 %.
+TEST(Progress, FunctionTakesTheTotalFromTheRunner) {
+  FakeClock clock;
+  std::ostringstream out;
+  ProgressReporter p("lut build", 0.0, "node", ProgressMode::Lines, out, clock.fn());
+  const conforma::ProgressFunction f = p.Function();
+  for (int k = 1; k <= 400; ++k) f(k, 400, "node " + std::to_string(k - 1));
+  const auto lines = Lines(out.str());
+  ASSERT_EQ(lines.size(), 20u);
+  EXPECT_EQ(lines[0].rfind("lut build: 20/400 node node 19 elapsed 0.0 s ETA 0 s", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[19].rfind("lut build: 400/400 node node 399", 0), 0u) << lines[19];
+}
+
 TEST(Progress, OlderUpdatesAreIgnored) {
   FakeClock clock;
   std::ostringstream out;

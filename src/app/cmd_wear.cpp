@@ -24,7 +24,7 @@ void RegisterWearCommand(CLI::App& app) {
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--steps", a->steps, "wheel steps (default: the scenario's)");
   sub->add_option("--km", a->km, "stop at this distance (default: the scenario's total_km; 0 = unlimited)");
-  sub->callback([a]() {
+  sub->callback([a, sub]() {
     const Scenario sc = LoadScenario(a->scenario);
     WearSimulationOptions o;
     o.contact.model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
@@ -34,7 +34,7 @@ void RegisterWearCommand(CLI::App& app) {
     const int total = a->steps >= 0 ? a->steps : sc.update.steps;
     const std::string label = to_string(o.contact.model);
     double wall = 0.0;
-    const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall);
+    const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall, ProgressModeOf(sub));
     const double km = r.steps.empty() ? 0.0 : r.steps.back().km;
     std::printf("%s: model %s, %zu steps, %.1f km, status %s, %.1f s -> %s/steps.csv\n", sc.name.c_str(), label.c_str(),
                 r.steps.size(), km, to_string(r.status), wall, a->out.c_str());

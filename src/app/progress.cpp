@@ -1,6 +1,7 @@
 // Progress display of the long commands (progress.hpp).
 #include "progress.hpp"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <utility>
 
 namespace conforma::cli {
@@ -58,6 +60,12 @@ ProgressMode ProgressModeOf(const CLI::App* command) {
   return StderrProgressMode(quiet);
 }
 
+int StderrColumns() {
+  winsize w{};
+  if (ioctl(fileno(stderr), TIOCGWINSZ, &w) != 0) return 0;
+  return w.ws_col;
+}
+
 double SteadySeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
@@ -71,7 +79,9 @@ ProgressReporter::ProgressReporter(std::string label, double total, std::string 
       out_(out),
       now_s_(std::move(now_s)),
       start_s_(now_s_()),
-      line_step_(total > kManyUnits ? kManyUnitsFraction * total : 0.0) {}
+      line_step_(total > kManyUnits ? kManyUnitsFraction * total : 0.0) {
+  if (mode_ == ProgressMode::Bar && &out_ == &std::cerr) max_width_ = std::max(0, StderrColumns() - 1);
+}
 
 ProgressReporter::~ProgressReporter() { Finish(); }
 
@@ -80,9 +90,15 @@ void ProgressReporter::SetDecimals(int decimals) {
   decimals_ = std::clamp(decimals, 0, 9);
 }
 
+void ProgressReporter::SetMaxWidth(int columns) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  max_width_ = std::max(0, columns);
+}
+
 void ProgressReporter::SetLineStep(double step) {
   std::lock_guard<std::mutex> lock(mutex_);
   line_step_ = std::max(0.0, step);
+  line_step_set_ = true;
 }
 
 double ProgressReporter::EtaSeconds(double done, double total, double elapsed_s) {
@@ -118,6 +134,24 @@ std::string ProgressReporter::LineText(const std::string& label, double done, do
 void ProgressReporter::Update(double done, const std::string& detail) {
   if (mode_ == ProgressMode::Quiet) return;
   std::lock_guard<std::mutex> lock(mutex_);
+  UpdateLocked(done, detail);
+}
+
+void ProgressReporter::Update(double done, double total, const std::string& detail) {
+  if (mode_ == ProgressMode::Quiet) return;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (total != total_) {
+    total_ = total;
+    if (!line_step_set_) line_step_ = total > kManyUnits ? kManyUnitsFraction * total : 0.0;
+  }
+  UpdateLocked(done, detail);
+}
+
+ProgressFunction ProgressReporter::Function() {
+  return [this](double done, double total, const std::string& what) { Update(done, total, what); };
+}
+
+void ProgressReporter::UpdateLocked(double done, const std::string& detail) {
   if (done < shown_done_) return;  // an older update overtaken by a newer one
   shown_done_ = done;
   const double now = now_s_();
@@ -127,7 +161,9 @@ void ProgressReporter::Update(double done, const std::string& detail) {
     if (!last && now - last_draw_s_ < kMinRedrawS) return;
     last_draw_s_ = now;
     // "\033[K": erase the rest of the line (a shorter bar than the previous one leaves nothing behind)
-    out_ << "\r" + BarText(label_, done, total_, unit_, decimals_, detail, elapsed) + "\033[K" << std::flush;
+    std::string text = BarText(label_, done, total_, unit_, decimals_, detail, elapsed);
+    if (max_width_ > 0 && static_cast<int>(text.size()) > max_width_) text.resize(max_width_);
+    out_ << "\r" + text + "\033[K" << std::flush;
     bar_open_ = true;
     return;
   }

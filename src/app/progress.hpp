@@ -15,6 +15,8 @@
 #include <ostream>
 #include <string>
 
+#include "conforma/progress.hpp"
+
 namespace CLI {
 class App;
 }  // namespace CLI
@@ -34,6 +36,8 @@ ProgressMode ProgressModeOf(const CLI::App* command);
 
 // Seconds on a monotonic clock (std::chrono::steady_clock); the reporter's default clock.
 double SteadySeconds();
+// Columns of the terminal on stderr; 0 when stderr is not a terminal or its width is not known.
+int StderrColumns();
 
 class ProgressReporter {
  public:
@@ -47,12 +51,21 @@ class ProgressReporter {
 
   // Counts shown with this many decimals (default 0: "3/7"; the dynamics: 2, "1.20/5.00 s").
   void SetDecimals(int decimals);
+  // Bar mode: cut the bar text to this many characters (0: no limit), so that it stays on one terminal line
+  // ("\r" returns to the start of the last line only). Default: the width of stderr's terminal less 1 when `out` is
+  // std::cerr, else no limit.
+  void SetMaxWidth(int columns);
   // Lines mode: print when `done` has advanced by at least `step` units since the last printed line (and the last
   // unit); 0: every update.
   void SetLineStep(double step);
   // `done` units of the total finished; detail: what the last one was ("km 120, Sd 32.10 mm"). Thread-safe; a done
   // below one already shown is ignored (updates from parallel loops).
   void Update(double done, const std::string& detail = std::string());
+  // The same with the total given (a library runner knows it: conforma/progress.hpp).
+  void Update(double done, double total, const std::string& detail);
+  // A ProgressFunction (conforma/progress.hpp) for a library runner's Options that updates this reporter, total
+  // included; the reporter must outlive the run.
+  ProgressFunction Function();
   // Bar: erases the bar line so that text printed next (stdout on the same terminal) starts on a clean line; the
   // next Update draws it again. Lines, Quiet: nothing.
   void Suspend();
@@ -68,6 +81,8 @@ class ProgressReporter {
   static double EtaSeconds(double done, double total, double elapsed_s);
 
  private:
+  void UpdateLocked(double done, const std::string& detail);
+
   std::string label_, unit_;
   double total_;
   ProgressMode mode_;
@@ -75,7 +90,9 @@ class ProgressReporter {
   std::function<double()> now_s_;
   double start_s_;
   int decimals_ = 0;
+  int max_width_ = 0;
   double line_step_;
+  bool line_step_set_ = false;   // SetLineStep called: the total does not choose the step
   double shown_done_ = -1.0;     // the largest done shown (or accepted) so far
   double last_line_done_ = 0.0;  // Lines: done of the last printed line
   double last_draw_s_ = -1e300;  // Bar: time of the last redraw
