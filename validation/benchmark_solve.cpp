@@ -269,7 +269,7 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         rows.push_back(row);
       }
     }
-    progress.Finished(c.name);
+    progress.Finished("timed " + c.name);
   }
   if (references) *references = std::move(refs);
   return rows;

@@ -165,7 +165,7 @@ void RegisterLutCommand(CLI::App& app) {
       const TrackArgs& t = b->args.track;
       o.track = "inclination " + (t.inclination.empty() ? std::string("default") : t.inclination) + ", gauge " +
                 std::to_string(t.gauge_mm) + " mm, r0 " + std::to_string(t.nominal_radius_mm) + " mm";
-      ProgressReporter progress("lut build", 0.0, "node", ProgressModeOf(sub), std::cerr);
+      ProgressReporter progress("lut build", 0.0, "", ProgressModeOf(sub), std::cerr);
       o.on_progress = progress.Function();
       const ContactLut table = BuildContactLut(*geometry, o);
       progress.Finish();
@@ -270,7 +270,7 @@ void RegisterLutCommand(CLI::App& app) {
       o.contact = c->args.options();
       o.speed_m_s = c->args.contact.speed_m_s;
       const auto t0 = std::chrono::steady_clock::now();
-      ProgressReporter progress("lut check", 0.0, "sample", ProgressModeOf(sub), std::cerr);
+      ProgressReporter progress("lut check", 0.0, "", ProgressModeOf(sub), std::cerr);
       o.on_progress = progress.Function();
       const ContactLutCheckResult r = CheckContactLut(table, *geometry, o);
       progress.Finish();

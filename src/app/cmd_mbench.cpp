@@ -24,7 +24,7 @@ void RegisterMbenchCommand(CLI::App& app) {
       ManchesterOptions o;
       o.model = ParseContactModel(name);
       o.creepages_from_file = !*kinematics;
-      ProgressReporter progress("mbench " + name, 0.0, "case", ProgressModeOf(sub), std::cerr);
+      ProgressReporter progress("mbench " + name, 0.0, "", ProgressModeOf(sub), std::cerr);
       o.on_progress = progress.Function();
       const auto rows = RunManchesterA22(DataDirOr(*data), o);
       progress.Finish();

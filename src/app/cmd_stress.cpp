@@ -68,7 +68,7 @@ void RegisterStressCommand(CLI::App& app) {
     // one reporter per run; its Options copy carries the reporter's function
     auto run = [&](const std::string& label, StressOptions run_options) {
       std::fflush(stdout);
-      ProgressReporter progress(label, static_cast<double>(run_options.cases), "case", mode, std::cerr);
+      ProgressReporter progress(label, static_cast<double>(run_options.cases), "", mode, std::cerr);
       run_options.on_progress = progress.Function();
       StressSummary summary = RunStress(setup, run_options);
       progress.Finish();

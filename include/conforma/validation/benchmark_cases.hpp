@@ -159,7 +159,7 @@ struct BenchOptions {
   int max_repeats = 201;                     // ... but at most this many (and at least 5)
   double reference_load_tolerance = 1e-8;    // BenchReferenceOptions::load_tolerance of the exact reference
   // progress (progress.hpp), 2 units per case: its exact reference ("reference <case>"), then its timed models
-  // ("<case>"); empty: none
+  // ("timed <case>"); empty: none
   ProgressFunction on_progress;
 };
 
