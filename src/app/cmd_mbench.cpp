@@ -50,6 +50,7 @@ void RegisterMbenchCommand(CLI::App& app) {
                   "Fx and Fs within 20%% or 150 N: %d/%zu cases (Fx %d, Fs %d)\n",
                   name.c_str(), 100 * worst_fn, 100 * worst_p, rows.empty() ? 0.0 : 100 * rows[0].err_pmax, 100 * worst_a,
                   both_ok, rows.size(), fx_ok, fs_ok);
+      std::fflush(stdout);  // this model's table before the next model's progress on stderr (one log for both)
     }
   });
 }
