@@ -101,5 +101,31 @@ TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {
   EXPECT_EQ(ParseScenario(std::string("contact_model: auto\n") + kClasses, "a.yaml").model, ContactModel::Auto);
 }
 
+TEST(Scenario, ClassAccelerationIsTheTorqueThatAcceleratesTheCarriedMass) {
+  // T = m a r0 per axle, every axle driven alike (scenario.hpp track_classes; physics-reference §12.3)
+  const Scenario s = ParseScenario(
+      "track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: 0.8},\n"
+      "                {radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: -1.1},\n"
+      "                {radius_m: 0, speed_kmh: 60, share: 1, axle_torque_Nm: 1234.5},\n"
+      "                {radius_m: 0, speed_kmh: 60, share: 1}]\n",
+      "duty.yaml");
+  ASSERT_EQ(s.classes.size(), 4u);
+  const double m = s.vehicle.carried_mass_per_wheelset_kg(), r0 = s.vehicle.nominal_wheel_radius_m;
+  EXPECT_NEAR(s.classes[0].axle_torque_Nm, m * 0.8 * r0, 1e-9 * m * r0);
+  EXPECT_NEAR(s.classes[1].axle_torque_Nm, -m * 1.1 * r0, 1e-9 * m * r0);
+  EXPECT_EQ(s.classes[2].axle_torque_Nm, 1234.5);
+  EXPECT_EQ(s.classes[3].axle_torque_Nm, 0.0);  // free rolling unless the class says otherwise
+  ExpectError("track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: 1, axle_torque_Nm: 3}]\n",
+              "not both");
+  ExpectError("track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: x}]\n", "acceleration_m_s2");
+  // the providers that impose the axle speed cannot carry a drive torque: said, not ignored
+  ExpectError("kinematics: {provider: centred}\ntrack_classes: [{radius_m: 0, speed_kmh: 60, share: 1, "
+              "acceleration_m_s2: 1}]\n",
+              "drive torque");
+  ExpectError("kinematics: {free_axle_rotation: false}\ntrack_classes: [{radius_m: 0, speed_kmh: 60, share: 1, "
+              "acceleration_m_s2: 1}]\n",
+              "drive torque");
+}
+
 }  // namespace
 }  // namespace conforma

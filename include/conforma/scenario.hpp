@@ -39,7 +39,9 @@
 //             to land on it), max_curvature_1_m: 1000 }
 //   rail: { fixed: true, steps: 0, cap_mm: 0.1 }  (fixed: paper 003 §7; steps m > 0: paper 003 Fig. 11)
 //   track_classes: [ { name, radius_m (0 = tangent), cant_mm, speed_kmh, share (fractions or percent; they are
-//                      normalised to sum 1), friction } ... ]
+//                      normalised to sum 1), friction, acceleration_m_s2 | axle_torque_Nm } ... ]
+//                      (acceleration_m_s2: traction > 0 / braking < 0 phase of the class, every axle driven alike:
+//                      axle torque m a r0 with m the carried mass per wheelset; TrackClass::axle_torque_Nm)
 //   track_classes_csv: <file> with columns radius_m,cant_mm,speed_kmh,share_percent ('#' comments); the
 //                      remainder to 100 % becomes a tangent class at tangent_speed_kmh (key of the same map).
 // Relative file paths are resolved against the scenario file's folder; a path starting with $CONFORMA_DATA_DIR/ is
