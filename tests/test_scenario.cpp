@@ -102,7 +102,7 @@ TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {
 }
 
 TEST(Scenario, ClassAccelerationIsTheTorqueThatAcceleratesTheCarriedMass) {
-  // T = m a r0 per axle, every axle driven alike (scenario.hpp track_classes; physics-reference §12.3)
+  // T = m a r0 per axle, every axle driven alike (scenario.hpp track_classes; docs/physics-reference.md §12.3)
   const Scenario s = ParseScenario(
       "track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: 0.8},\n"
       "                {radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: -1.1},\n"
