@@ -19,7 +19,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 SIDES = ("left", "right")
-MAGNIFY = 20.0  # depth magnification of the rail-head panels
+MAGNIFY = 10.0  # depth magnification of the rail-head panels (x20 folds the 0.85 mm gauge-corner wear of
+#                 metro_rail_steps over the 13 mm corner radius: a drawing artefact)
 
 
 def read_rows(path):

@@ -46,7 +46,7 @@ TEST(Scenario, MetroRailStepsUpdatesTheRail) {
   EXPECT_FALSE(s.rail_steps.fixed);
   EXPECT_EQ(s.rail_steps.steps, 10);
   EXPECT_NEAR(s.rail_steps.cap_m, 0.1e-3, 1e-15);
-  EXPECT_NEAR(s.rail_steps.output_spacing_m, 0.05e-3, 1e-15);
+  EXPECT_NEAR(s.rail_steps.output_spacing_m, 0.025e-3, 1e-15);
   // the same vehicle, track, profiles and line as the default metro case
   EXPECT_EQ(s.rail_name, base.rail_name);
   EXPECT_EQ(s.wheel_name, base.wheel_name);

@@ -19,6 +19,12 @@ std::string Num3(int i) {
 
 const char* kSide[2] = {"left", "right"};
 
+std::string Km(double km) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.0f", km);
+  return b;
+}
+
 bool AllValid(const RailStepSummary& k) { return k.wheels_valid && k.side[0].valid && k.side[1].valid; }
 
 bool Holds(const RailStepSummary& k) {
@@ -69,7 +75,7 @@ std::vector<RailStepSummary> WriteRailStepFiles(const std::string& dir, const We
       << "share of the sequence's km)\n";
     d << "side,s_mm,y_mm,z_mm,rail_mm";
     for (size_t j = 0; j < nv; ++j) d << ",virtual_" << j << "_mm";
-    d << "\n# weights";
+    d << "\n# weights" << std::setprecision(17);
     for (const RailSideStepSummary& o : rail[k].side) {
       d << " |";
       for (double w : o.weights) d << " " << w;
@@ -115,7 +121,7 @@ void WriteRailStepReport(const std::string& dir, const Scenario& sc, const std::
   md << "# Rail steps: " << sc.name << " (" << label << ")\n\n";
   md << "Scenario `" << sc.source << "`: " << sc.rail_steps.steps << " rail steps (paper 003 §6, Fig. 11), rail cap "
      << sc.rail_steps.cap_m * 1e3 << " mm, wheel cap " << sc.update.cap_m * 1e3 << " mm, each rail step runs the wheel "
-     << "from the new profile over " << (sc.update.total_km > 0 ? std::to_string(sc.update.total_km) + " km" : "its steps")
+     << "from the new profile over " << (sc.update.total_km > 0 ? Km(sc.update.total_km) + " km" : "its steps")
      << " (at most " << sc.update.steps << " wheel steps). " << rail.size() << " rail steps computed.\n\n";
   md << "Areas along the normals of the rail before the step (first order in the depth, "
         "`include/conforma/rail_step_summary.hpp`); identity: |A - sum_j w_j A_j| / sum_j w_j A_j <= "
