@@ -1,9 +1,10 @@
 // test-links: app
 // `conforma wear` with rail steps (rail_step_output.hpp): a small run of the shipped rail-step scenario writes
 // rail_steps.csv (one row per rail step, the area identity per side, validity) and rail_steps.md; a fixed rail
-// writes none of them; the plotting interpreter is checked before computing.
+// writes none of them; the plots of every rail step; the plotting interpreter is checked before computing.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -103,6 +104,25 @@ TEST(RailStepsCli, WearWritesTheRailStepTableWithTheAreaIdentity) {
   const std::string md = Slurp(out / "rail_steps.md");
   EXPECT_NE(md.find("Identity holds in every rail step; every wheel and rail profile valid"), std::string::npos) << md;
   EXPECT_NE(md.find("plots not produced: --no-plot"), std::string::npos) << md;
+  fs::remove_all(dir);
+}
+
+TEST(RailStepsCli, PlotsOfEveryRailStep) {
+  const char* python = "/usr/bin/python3";
+  if (std::system((std::string(python) + " -c 'import matplotlib, numpy' >/dev/null 2>&1").c_str()) != 0)
+    GTEST_SKIP() << "no python3 with matplotlib and numpy";
+  const fs::path dir = TempDir("plots");
+  const fs::path out = dir / "out";
+  const auto r = RunCli("wear --scenario '" + SmallScenario(dir, false).string() + "' --model hertz --python " +
+                        python + " --out '" + out.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  for (const char* png : {"rail_step_001.png", "rail_step_002.png", "rail_evolution.png"}) {
+    EXPECT_TRUE(fs::exists(out / png)) << png;
+    EXPECT_GT(fs::file_size(out / png), 10000u) << png;
+  }
+  const std::string md = Slurp(out / "rail_steps.md");
+  EXPECT_NE(md.find("![rail step 2](rail_step_002.png)"), std::string::npos) << md;
+  EXPECT_NE(md.find("![rail evolution](rail_evolution.png)"), std::string::npos) << md;
   fs::remove_all(dir);
 }
 
