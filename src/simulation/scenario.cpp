@@ -352,6 +352,8 @@ void Scenario::validate() const {
   if (!(update.total_km >= 0)) throw InputError(where + "update.total_km must be >= 0");
   if (!rail_steps.fixed && rail_steps.steps < 1) throw InputError(where + "rail.steps must be >= 1 when rail.fixed is false");
   if (!(rail_steps.cap_m > 0)) throw InputError(where + "rail.cap_mm must be > 0");
+  if (!(rail_steps.output_spacing_m >= 0 && rail_steps.output_spacing_m <= 1e-3))
+    throw InputError(where + "rail.spacing_mm must be in [0, 1] (0: the spacing of the rail before the step)");
   if (kinematics.tangent_phases < 1) throw InputError(where + "kinematics.tangent_phases must be >= 1");
   if (!(gauge_m > 1.0 && gauge_m < 2.0)) throw InputError(where + "track.gauge_mm out of range");
   if (wheel.empty() || rail.empty()) throw InputError(where + "profiles missing");
@@ -475,10 +477,11 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     if (u["max_curvature_1_m"]) s.update.max_curvature_1_m = r.number(u["max_curvature_1_m"], "update.max_curvature_1_m");
   }
   if (const YAML::Node rs = root["rail"]) {
-    r.check_keys(rs, "rail", {"fixed", "steps", "cap_mm"});
+    r.check_keys(rs, "rail", {"fixed", "steps", "cap_mm", "spacing_mm"});
     if (rs["fixed"]) s.rail_steps.fixed = r.boolean(rs["fixed"], "rail.fixed");
     if (rs["steps"]) s.rail_steps.steps = r.integer(rs["steps"], "rail.steps");
     if (rs["cap_mm"]) s.rail_steps.cap_m = 1e-3 * r.number(rs["cap_mm"], "rail.cap_mm");
+    if (rs["spacing_mm"]) s.rail_steps.output_spacing_m = 1e-3 * r.number(rs["spacing_mm"], "rail.spacing_mm");
   }
   if (root["track_classes"] && root["track_classes_csv"]) r.fail("top level", "give track_classes or track_classes_csv, not both");
   if (const YAML::Node tc = root["track_classes"]) {
