@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -135,6 +136,47 @@ TEST(WearSimulation, InvalidProfileHalvesTheCapInsteadOfStopping) {
   EXPECT_NEAR(s.max_depth_m, s.depth_cap_m, 0.01 * s.depth_cap_m);
   std::printf("fixed cap stops at step %zu (%s); halved cap %.3f mm passes it\n", failing_step, fixed.message.c_str(),
               s.depth_cap_m * 1e3);
+}
+
+// Samples of a class with the same pose, velocity and loads (every wheelset on tangent track) are solved once; each
+// keeps its own weight. Splitting every sample into two half-weight copies gives the same wear with the same number
+// of contact solves; a copy one ulp off in yaw is solved on its own.
+TEST(WearSimulation, RepeatedSamplesAreSolvedOnceAndKeepTheirOwnWeight) {
+  const Scenario sc = FastMetro();
+  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
+  TrackClass tangent = sc.classes.front();
+  ASSERT_EQ(tangent.curve_radius_m, 0.0);
+  tangent.share = 1.0;  // the only class of the step
+  const KinematicsSeries single = KinematicCurvingEstimate(sc, g, tangent);
+  KinematicsSeries split;
+  for (KinematicsSample s : single.samples) {
+    s.weight *= 0.5;
+    split.samples.push_back(s);
+    split.samples.push_back(s);
+  }
+  StepWearOptions o;
+  o.contact.model = ContactModel::Hertz;
+  o.wear = sc.wear;
+  std::atomic<int> calls{0};
+  const WearContactFunction counted = [&calls](const WheelsetTrackGeometry& gg, Side side, const WheelsetPose& p,
+                                               const WheelsetVelocity& v, const WheelContactOptions& co) {
+    ++calls;
+    return SolveWheelContact(gg, side, p, v, co);
+  };
+  const StepWear a = ComputeStepWear(g, {tangent}, {single}, o, counted);
+  const int calls_single = calls.exchange(0);
+  const StepWear b = ComputeStepWear(g, {tangent}, {split}, o, counted);
+  EXPECT_EQ(calls.exchange(0), calls_single);
+  EXPECT_EQ(b.samples, 2 * a.samples);
+  const auto& da = a.wheel.wheel_depth_per_metre.depth_m;
+  const auto& db = b.wheel.wheel_depth_per_metre.depth_m;
+  ASSERT_EQ(da.size(), db.size());
+  const double peak = a.wheel.wheel_depth_per_metre.max_depth_m();
+  ASSERT_GT(peak, 0.0);
+  for (size_t i = 0; i < da.size(); ++i) ASSERT_NEAR(db[i], da[i], 1e-12 * peak) << i;
+  split.samples[1].pose.yaw_rad = std::nextafter(split.samples[1].pose.yaw_rad, 1.0);
+  ComputeStepWear(g, {tangent}, {split}, o, counted);
+  EXPECT_EQ(calls.load(), calls_single + 2);  // both wheels of the perturbed copy
 }
 
 TEST(WearSimulation, SameResultForAnyThreadCount) {

@@ -1,12 +1,16 @@
 // One step of the wear loop: kinematics samples -> wheel contacts with fields -> wear cells -> class integration
 // -> combination of the classes (wear_simulation.hpp; paper 001 eqs. 24-27, paper 003 §6 steps 1-3).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <string>
+#include <utility>
 
 #include "conforma/error.hpp"
 #include "conforma/kinematics_quasistatic.hpp"
@@ -113,6 +117,26 @@ void EvaluateSample(const WheelsetTrackGeometry& geometry, const TrackClass& tra
   }
 }
 
+// For each (class, sample) item: the index of the first earlier item of the same class whose sample has the same
+// pose, velocity and wheel loads (exact equality), or -1.
+std::vector<int> FirstEqualSample(const std::vector<KinematicsSeries>& series,
+                                  const std::vector<std::pair<int, int>>& items) {
+  using Key = std::array<std::uint64_t, 10>;  // bit patterns: -0.0 is not 0.0 here, NaN is ordered
+  std::map<std::pair<int, Key>, int> first;
+  std::vector<int> same_as(items.size(), -1);
+  for (size_t it = 0; it < items.size(); ++it) {
+    const KinematicsSample& s = series[items[it].first].samples[items[it].second];
+    const std::array<double, 10> values = {s.pose.lateral_m, s.pose.vertical_m, s.pose.roll_rad, s.pose.yaw_rad,
+                     s.velocity.forward_speed_m_s, s.velocity.lateral_velocity_m_s, s.velocity.yaw_rate_rad_s,
+                     s.velocity.axle_angular_velocity_rad_s, s.vertical_load_N[0], s.vertical_load_N[1]};
+    Key key;
+    std::memcpy(key.data(), values.data(), sizeof key);
+    const auto inserted = first.emplace(std::make_pair(items[it].first, key), static_cast<int>(it));
+    if (!inserted.second) same_as[it] = inserted.first->second;
+  }
+  return same_as;
+}
+
 TrackClassWear ZeroWear(const WearDistribution& wheel_grid, const WearDistribution& rail_grid) {
   TrackClassWear t;
   t.wheel_depth_per_metre = wheel_grid;
@@ -144,16 +168,28 @@ StepWear ComputeStepWear(const WheelsetTrackGeometry& geometry, const std::vecto
         throw InputError("wear step: class " + classes[c].name + " sample " + std::to_string(i) + ": bad weight");
       items.emplace_back(static_cast<int>(c), static_cast<int>(i));
     }
+  // Samples of one class with the same pose, velocity and wheel loads give the same contact (the contact function
+  // sees nothing else; it is deterministic): on tangent track every wheelset of the vehicle runs the same
+  // oscillation, so the quasi-static provider repeats each phase once per wheelset. Each distinct sample is solved
+  // once and its slot copied (bit-identical wear; its weight stays the sample's own).
+  const std::vector<int> same_as = FirstEqualSample(series, items);
   std::vector<SampleSlot> slots(items.size());
   const int n = static_cast<int>(items.size());
 #pragma omp parallel for schedule(dynamic, 1)
   for (int it = 0; it < n; ++it) {
+    if (same_as[it] >= 0) continue;
     try {
       EvaluateSample(geometry, classes[items[it].first], series[items[it].first].samples[items[it].second], options,
                      contact, &slots[it]);
     } catch (const std::exception& e) {
       slots[it].error = e.what();
     }
+  }
+  for (int it = 0; it < n; ++it) {
+    if (same_as[it] < 0) continue;
+    slots[it] = slots[same_as[it]];
+    const double weight = series[items[it].first].samples[items[it].second].weight;
+    for (WearSample& w : slots[it].wheel) w.distance_m = weight;
   }
   for (size_t it = 0; it < slots.size(); ++it)
     if (!slots[it].error.empty())
