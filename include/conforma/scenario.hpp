@@ -45,6 +45,9 @@
 //                      axle torque m a r0 with m the carried mass per wheelset; TrackClass::axle_torque_Nm)
 //   track_classes_csv: <file> with columns radius_m,cant_mm,speed_kmh,share_percent ('#' comments); the
 //                      remainder to 100 % becomes a tangent class at tangent_speed_kmh (key of the same map).
+//   published: { source: "...", steps: 7, models: { conformal: { km, tread_wear_mm, flange_wear_mm, sd, sh, qr }, ... } }
+//                      (figures of a published study of the same case, for `conforma compare`'s report;
+//                      published_study.hpp)
 // Relative file paths are resolved against the scenario file's folder; a path starting with $CONFORMA_DATA_DIR/ is
 // in the shared data folder (data_paths.hpp SharedDataDir). Lengths in the file in mm where named.
 #include <cstdint>
@@ -56,6 +59,7 @@
 #include "conforma/load_control.hpp"
 #include "conforma/material.hpp"
 #include "conforma/profile.hpp"
+#include "conforma/published_study.hpp"
 #include "conforma/track_irregularity_psd.hpp"
 #include "conforma/vehicle.hpp"
 #include "conforma/wear_distribution.hpp"
@@ -142,6 +146,7 @@ struct Scenario {
   ScenarioUpdate update;
   ScenarioRail rail_steps;
   std::vector<TrackClass> classes;  // shares sum to 1
+  PublishedStudy published;         // published: figures of a published study of the case (compare report only)
   void validate() const;            // InputError naming the field and the file
   // Track set-up of the scenario with the given wheel and (mounted or not) rails.
   TrackSetup MakeTrackSetup() const;

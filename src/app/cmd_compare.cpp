@@ -12,6 +12,7 @@
 #include "cli_checks.hpp"
 #include "cli_setup.hpp"
 #include "exit_status.hpp"
+#include "published_report.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "conforma/scenario.hpp"
@@ -28,8 +29,8 @@ struct ModelRun {
   double wall_s = 0.0;
 };
 
-void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<ModelRun>& runs, int steps,
-                 const std::string& plot_note) {
+std::vector<PublishedCheck> WriteReport(const std::string& dir, const Scenario& sc, const std::vector<ModelRun>& runs,
+                                        int steps, const std::string& plot_note) {
   std::ofstream md(dir + "/report.md");
   if (!md) throw InputError(dir + "/report.md: cannot write");
   md << "# Wear comparison: " << sc.name << "\n\n";
@@ -65,6 +66,9 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
   std::snprintf(buf, sizeof buf, "\nInitial profile: Sd %.3f mm, Sh %.3f mm, qR %.3f mm.\n", d0.sd_m * 1e3, d0.sh_m * 1e3,
                 d0.qr_m * 1e3);
   md << buf;
+  std::vector<RunFigures> figures;
+  for (const ModelRun& r : runs) figures.push_back(RunFiguresAt(r.name, r.result, sc.published.steps));
+  const std::vector<PublishedCheck> checks = WritePublishedSection(md, sc.published, figures);
   md << "\n## Differences between the models (same step index)\n\n";
   md << "Largest distance between the two worn wheel profiles along the first one's normals (tread / flange), and the "
         "ratio of the distances travelled.\n\n| models | step | km ratio | tread mm | flange mm |\n|---|---|---|---|---|\n";
@@ -91,6 +95,7 @@ void WriteReport(const std::string& dir, const Scenario& sc, const std::vector<M
   }
   md << "\nPer-model outputs (steps.csv, profiles of every step .prw/.csv, wear distributions) are in the model "
         "folders.\n";
+  return checks;
 }
 
 }  // namespace
@@ -142,8 +147,11 @@ void RegisterCompareCommand(CLI::App& app) {
       const std::string cmd = "'" + python + "' '" + PlotScript("plot_compare.py") + "' '" + a->out + "' " + list;
       plots_ok = std::system(cmd.c_str()) == 0;
     }
-    WriteReport(a->out, sc, runs, a->steps,
-                plots_ok ? "" : a->plot ? "scripts/plot_compare.py failed" : "--no-plot");
+    const std::vector<PublishedCheck> checks =
+        WriteReport(a->out, sc, runs, a->steps, plots_ok ? "" : a->plot ? "scripts/plot_compare.py failed" : "--no-plot");
+    for (const PublishedCheck& c : checks)
+      std::printf("published %s: ours %s, published %s: %s\n", c.what.c_str(), c.ours.c_str(), c.published.c_str(),
+                  c.agrees ? "agrees" : "DIFFERS");
     std::printf("report: %s/report.md\n", a->out.c_str());
     std::vector<std::pair<std::string, const WearSimulationResult*>> done;
     for (const ModelRun& r : runs) done.emplace_back(r.name, &r.result);

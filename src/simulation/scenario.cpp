@@ -366,6 +366,55 @@ TrackSetup Scenario::MakeTrackSetup() const {
   return s;
 }
 
+namespace {
+
+// `published` (published_study.hpp): the figures of a published study of the same case, for the compare report.
+void ParsePublished(const Reader& r, const YAML::Node& n, PublishedStudy* p) {
+  r.check_keys(n, "published", {"source", "steps", "models"});
+  if (!n["source"]) r.fail("published", "source missing (where the figures are printed)");
+  p->source = r.text(n["source"], "published.source");
+  if (n["steps"]) p->steps = r.integer(n["steps"], "published.steps");
+  if (p->steps < 0) r.fail("published.steps", "must be >= 0");
+  const YAML::Node models = n["models"];
+  if (!models || !models.IsMap() || models.size() == 0) r.fail("published.models", "expected a map: model -> figures");
+  for (const auto& entry : models) {
+    PublishedModelFigures f;
+    f.model = entry.first.as<std::string>();
+    const std::string where = "published.models." + f.model;
+    try {
+      ParseContactModel(f.model);
+    } catch (const InputError& e) {
+      r.fail(where, e.what());
+    }
+    const YAML::Node v = entry.second;
+    r.check_keys(v, where, {"km", "tread_wear_mm", "flange_wear_mm", "sd", "sh", "qr"});
+    const auto positive = [&](const char* key, double scale) {
+      if (!v[key]) return -1.0;
+      const double x = r.number(v[key], where + "." + key);
+      if (!(x > 0)) r.fail(where + "." + key, "must be > 0");
+      return scale * x;
+    };
+    f.km = positive("km", 1.0);
+    f.tread_wear_m = positive("tread_wear_mm", 1e-3);
+    f.flange_wear_m = positive("flange_wear_mm", 1e-3);
+    const auto trend = [&](const char* key) {
+      if (!v[key]) return Trend::Unknown;
+      try {
+        return ParseTrend(r.text(v[key], where + "." + key));
+      } catch (const InputError& e) {
+        r.fail(where + "." + key, e.what());
+      }
+    };
+    f.sd = trend("sd");
+    f.sh = trend("sh");
+    f.qr = trend("qr");
+    if (p->find(f.model) != nullptr) r.fail(where, "given twice");
+    p->models.push_back(f);
+  }
+}
+
+}  // namespace
+
 Scenario ParseScenario(const std::string& yaml_text, const std::string& source, const std::string& base_dir) {
   Reader r{source, base_dir};
   YAML::Node root;
@@ -377,7 +426,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   r.check_keys(root, "top level",
                {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "elastic_flange_deg",
                 "load_tolerance", "load_acceptance", "wear_law",
-                "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv"});
+                "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv", "published"});
   Scenario s;
   s.source = source;
   s.vehicle = MetroVehicle();
@@ -476,6 +525,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     if (u["total_km"]) s.update.total_km = r.number(u["total_km"], "update.total_km");
     if (u["max_curvature_1_m"]) s.update.max_curvature_1_m = r.number(u["max_curvature_1_m"], "update.max_curvature_1_m");
   }
+  if (const YAML::Node pub = root["published"]) ParsePublished(r, pub, &s.published);
   if (const YAML::Node rs = root["rail"]) {
     r.check_keys(rs, "rail", {"fixed", "steps", "cap_mm", "spacing_mm"});
     if (rs["fixed"]) s.rail_steps.fixed = r.boolean(rs["fixed"], "rail.fixed");
