@@ -13,6 +13,14 @@
 
 namespace conforma::test {
 
+// The whole content of a file ("" when it cannot be read).
+inline std::string Slurp(const std::filesystem::path& f) {
+  std::ifstream in(f);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 struct CliRun {
   int exit_code = -1;  // the process's exit status; -1 when it did not exit normally (signal)
   std::string out, err;
@@ -31,16 +39,19 @@ inline CliRun RunCli(const std::string& args) {
   const int status = std::system(cmd.c_str());
   CliRun run;
   run.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-  auto slurp = [](const std::string& f) {
-    std::ifstream in(f);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  run.out = slurp(out_file);
-  run.err = slurp(err_file);
+  run.out = Slurp(out_file);
+  run.err = Slurp(err_file);
   fs::remove_all(dir);
   return run;
+}
+
+// A fresh, empty temporary folder named after the test file's prefix, the process and the name.
+inline std::filesystem::path FreshTempDir(const std::string& prefix, const std::string& name) {
+  namespace fs = std::filesystem;
+  const fs::path d = fs::temp_directory_path() / (prefix + "_" + std::to_string(::getpid()) + "_" + name);
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
 }
 
 // The shared reference data folder (CONFORMA_SHARED_DATA), for test-bank profiles.

@@ -19,23 +19,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using conforma::test::RunCli;
+using conforma::test::Slurp;
 
 const std::string kLostContacts = std::string(CONFORMA_SOURCE_DIR) + "/tests/data/lost_contacts/lost_contacts.yaml";
 
 // A fresh temporary folder per test.
-fs::path TempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("conforma_status_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string Slurp(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path TempDir(const std::string& name) { return conforma::test::FreshTempDir("conforma_status", name); }
 
 // The lost-contacts scenario with one line replaced (S1002 wheel: a fresh profile).
 fs::path ScenarioVariant(const fs::path& dir, const std::string& from, const std::string& to) {

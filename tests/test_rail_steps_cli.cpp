@@ -17,20 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using conforma::test::RunCli;
+using conforma::test::Slurp;
 
-fs::path TempDir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("conforma_rail_" + std::to_string(::getpid()) + "_" + name);
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string Slurp(const fs::path& f) {
-  std::ifstream in(f);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+fs::path TempDir(const std::string& name) { return conforma::test::FreshTempDir("conforma_rail", name); }
 
 void Replace(std::string* text, const std::string& from, const std::string& to) {
   const size_t at = text->find(from);

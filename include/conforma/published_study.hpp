@@ -19,7 +19,12 @@
 namespace conforma {
 
 // Direction of a wheel dimension (Sd, Sh, qR) from the new to the last profile of a run.
-enum class Trend { Unknown, Rises, Falls, Flat };
+enum class Trend {
+  Unknown,  // not published / not finite
+  Rises,    // grows by at least the flat tolerance
+  Falls,    // shrinks by at least the flat tolerance
+  Flat      // changes by less than the flat tolerance
+};
 const char* to_string(Trend trend);  // "-", "rises", "falls", "flat"
 Trend ParseTrend(const std::string& text);  // rises | falls | flat; throws InputError otherwise
 

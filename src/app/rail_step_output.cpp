@@ -6,16 +6,11 @@
 #include <iomanip>
 
 #include "conforma/error.hpp"
+#include "wear_output.hpp"
 
 namespace conforma::cli {
 
 namespace {
-
-std::string Num3(int i) {
-  char b[16];
-  std::snprintf(b, sizeof b, "%03d", i);
-  return b;
-}
 
 const char* kSide[2] = {"left", "right"};
 

@@ -18,13 +18,13 @@
 
 namespace conforma::cli {
 
-namespace {
-
 std::string Num3(int i) {
   char b[16];
   std::snprintf(b, sizeof b, "%03d", i);
   return b;
 }
+
+namespace {
 
 std::string StepTag(const WearStepRecord& s) {
   return (s.rail_step > 0 ? "r" + Num3(s.rail_step) + "_" : std::string()) + "step_" + Num3(s.step);

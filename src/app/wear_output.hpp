@@ -11,6 +11,9 @@
 
 namespace conforma::cli {
 
+// i with three digits ("007"), as the per-step file names use it.
+std::string Num3(int i);
+
 // Creates dir.
 void BeginWearOutput(const std::string& dir);
 // Appends the files of one step (profiles, wear distribution CSV).
