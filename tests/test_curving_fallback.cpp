@@ -34,7 +34,7 @@ void ExpectSameSeries(const KinematicsSeries& a, const KinematicsSeries& b) {
 }
 
 TEST(CurvingFallback, RejectedClassReusesItsLastAcceptedSolutionOrTheEstimate) {
-  const Scenario sc = LoadScenario(CONFORMA_SOURCE_DIR "/scenarios/default_metro.yaml");
+  const Scenario sc = LoadScenario(CONFORMA_SOURCE_DIR "/scenarios/metro_curves.yaml");
   ASSERT_EQ(sc.kinematics.provider, KinematicsProvider::QuasiStatic);
   const WheelsetTrackGeometry g(sc.MakeTrackSetup());
   const int r400 = 2;  // the R 400 m class
@@ -68,14 +68,14 @@ TEST(CurvingFallback, RejectedClassReusesItsLastAcceptedSolutionOrTheEstimate) {
   EXPECT_EQ(fallbacks->since(1)[0].replacement, "kinematic estimate");
 }
 
-// Issue 15 (total-force load control): on the default metro scenario's new profiles every class of the conformal
+// Issue 15 (total-force load control): on the metro case with curves (metro_curves.yaml), new profiles, every class of the conformal
 // run is accepted (no kinematics fallback). The R 200 m class guards the flange-climbing check: its leading
 // wheelset's equilibrium (right wheel at the flange root, ~46 deg) lies 0.006 mm from a jump of the conformal
 // wheel forces (the merged patch's reference point switching from the flange root to the tread: Y drops by
 // ~17 kN towards the flange); the former central difference over 0.02 mm spanned the jump, called the state
 // "climbing" and rejected the equilibrium, and the class fell back to the kinematic estimate.
-TEST(CurvingFallback, DefaultMetroConformalClassesAreAcceptedOnTheNewProfiles) {
-  const Scenario sc = LoadScenario(CONFORMA_SOURCE_DIR "/scenarios/default_metro.yaml");
+TEST(CurvingFallback, MetroCurvesConformalClassesAreAcceptedOnTheNewProfiles) {
+  const Scenario sc = LoadScenario(CONFORMA_SOURCE_DIR "/scenarios/metro_curves.yaml");
   const WheelsetTrackGeometry g(sc.MakeTrackSetup());
   auto fallbacks = std::make_shared<KinematicsFallbackLog>();
   const KinematicsFunction kin = MakeScenarioKinematics(sc, ContactModel::Conformal, &SolveWheelContact, fallbacks);

@@ -255,7 +255,7 @@ TEST(ProfileDistance, WornZoneFollowsTheWearDepthAndAlignment) {
 }
 
 // ---------------------------------------------------------------- end to end
-const std::string kMetro = std::string(CONFORMA_SOURCE_DIR) + "/scenarios/default_metro.yaml";
+const std::string kMetro = std::string(CONFORMA_SOURCE_DIR) + "/scenarios/metro_curves.yaml";
 
 // The default metro scenario on the kinematic curving estimate (no Ceres) with 2 tangent phases: a few seconds per
 // step, as in test_wear_simulation.

@@ -29,11 +29,22 @@ TEST(Scenario, DefaultMetroAfterPaper003) {
   EXPECT_EQ(s.wheel.kind(), ProfileKind::Wheel);
   EXPECT_EQ(s.rail.kind(), ProfileKind::Rail);
   EXPECT_NEAR(ShareSum(s), 1.0, 1e-12);
+  // a largely straight line (paper 003 §7): a duty cycle on tangent track and 1 % of R 400 m (§8.11)
   ASSERT_EQ(s.classes.size(), 4u);
-  EXPECT_EQ(s.classes[0].curve_radius_m, 0.0);  // tangent track
-  EXPECT_NEAR(s.classes[0].share, 0.8, 1e-12);   // percent normalised
-  EXPECT_NEAR(s.classes[3].speed_m_s, 35.0 / 3.6, 1e-12);
-  EXPECT_NEAR(s.classes[3].cant_m, 0.110, 1e-12);
+  double tangent = 0.0;
+  for (const TrackClass& c : s.classes) tangent += c.curve_radius_m == 0.0 ? c.share : 0.0;
+  EXPECT_NEAR(tangent, 0.99, 1e-12);  // percent normalised
+  EXPECT_EQ(s.classes[3].curve_radius_m, 400.0);
+  EXPECT_NEAR(s.classes[3].cant_m, 0.090, 1e-12);
+  // traction and braking at +-1 m/s^2: T = m a r0 on every axle, equal and opposite
+  EXPECT_GT(s.classes[1].axle_torque_Nm, 0.0);
+  EXPECT_EQ(s.classes[2].axle_torque_Nm, -s.classes[1].axle_torque_Nm);
+  EXPECT_EQ(s.classes[0].axle_torque_Nm, 0.0);
+  // paper 003's figures for the compare report
+  ASSERT_NE(s.published.find("conformal"), nullptr);
+  ASSERT_NE(s.published.find("hertz"), nullptr);
+  EXPECT_EQ(s.published.steps, 7);
+  EXPECT_LT(s.published.find("conformal")->km, s.published.find("hertz")->km);
   EXPECT_NEAR(s.update.cap_m, 0.4e-3, 1e-15);
   EXPECT_TRUE(s.rail_steps.fixed);
   EXPECT_EQ(s.model, ContactModel::Conformal);
@@ -41,13 +52,13 @@ TEST(Scenario, DefaultMetroAfterPaper003) {
 
 TEST(Scenario, MetroRailStepsUpdatesTheRail) {
   const Scenario s = LoadScenario(kDir + "metro_rail_steps.yaml");
-  const Scenario base = LoadScenario(kDir + "default_metro.yaml");
+  const Scenario base = LoadScenario(kDir + "metro_curves.yaml");
   EXPECT_EQ(s.name, "metro_rail_steps");
   EXPECT_FALSE(s.rail_steps.fixed);
   EXPECT_EQ(s.rail_steps.steps, 10);
   EXPECT_NEAR(s.rail_steps.cap_m, 0.1e-3, 1e-15);
   EXPECT_NEAR(s.rail_steps.output_spacing_m, 0.025e-3, 1e-15);
-  // the same vehicle, track, profiles and line as the default metro case
+  // the same vehicle, track, profiles and line as the metro case with curves
   EXPECT_EQ(s.rail_name, base.rail_name);
   EXPECT_EQ(s.wheel_name, base.wheel_name);
   EXPECT_EQ(s.vehicle.bogie_count, base.vehicle.bogie_count);
@@ -58,7 +69,7 @@ TEST(Scenario, MetroRailStepsUpdatesTheRail) {
     EXPECT_NEAR(s.classes[c].share, base.classes[c].share, 0.0);
   }
   EXPECT_NEAR(s.update.cap_m, base.update.cap_m, 0.0);
-  EXPECT_TRUE(base.rail_steps.fixed);  // the default stays with the fixed rail
+  EXPECT_TRUE(base.rail_steps.fixed);  // metro_curves keeps the rail fixed
   EXPECT_EQ(base.rail_steps.output_spacing_m, 0.0);
 }
 

@@ -23,7 +23,7 @@ const std::string kDir = std::string(CONFORMA_SOURCE_DIR) + "/scenarios/";
 // Default metro scenario with the kinematic curving estimate (no Ceres): fast enough for a unit test (the CLI run
 // with the quasi-static provider is reported in the issue).
 Scenario FastMetro() {
-  Scenario s = LoadScenario(kDir + "default_metro.yaml");
+  Scenario s = LoadScenario(kDir + "metro_curves.yaml");
   s.kinematics.provider = KinematicsProvider::Kinematic;
   s.kinematics.tangent_phases = 2;
   return s;
@@ -208,7 +208,7 @@ TEST(WearSimulation, SameResultForAnyThreadCount) {
 
 TEST(WearSimulation, ExportedAndReimportedKinematicsGiveTheSameWear) {
   // quasi-static curving (hertz in the loop) on one curve and tangent track, exported to CSV and re-imported
-  Scenario sc = LoadScenario(kDir + "default_metro.yaml");
+  Scenario sc = LoadScenario(kDir + "metro_curves.yaml");
   sc.classes = {sc.classes[0], sc.classes[2]};
   sc.classes[0].share = 0.7;
   sc.classes[1].share = 0.3;

@@ -89,7 +89,7 @@ def test_patch_and_unknown_statuses_count_as_incomplete():
 
 @pytest.mark.skipif(not conforma.has_wear, reason="module built without the wear loop")
 def test_wear_run_stopped_early_warns_and_strict_raises():
-    d = conforma.load_scenario(str(SCENARIO_DIR / "default_metro.yaml"))
+    d = conforma.load_scenario(str(SCENARIO_DIR / "metro_curves.yaml"))
     d["kinematics"] = {"provider": "centred"}
     d["update"]["cap_mm"] = 50  # issue 13, item 6: the first update is an invalid profile, 0 steps
     with pytest.warns(conforma.IncompleteResultWarning, match="invalid_profile"):
@@ -103,7 +103,7 @@ def test_wear_run_stopped_early_warns_and_strict_raises():
 
 @pytest.mark.skipif(not conforma.has_wear, reason="module built without the wear loop")
 def test_completed_wear_run_is_complete_and_counts_fallbacks():
-    d = conforma.load_scenario(str(SCENARIO_DIR / "default_metro.yaml"))
+    d = conforma.load_scenario(str(SCENARIO_DIR / "metro_curves.yaml"))
     d["kinematics"] = {"provider": "centred"}
     with warnings.catch_warnings():
         warnings.simplefilter("error")

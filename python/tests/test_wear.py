@@ -6,7 +6,7 @@ import pytest
 
 import conforma
 
-SCENARIO = pathlib.Path(__file__).resolve().parents[2] / "scenarios" / "default_metro.yaml"
+SCENARIO = pathlib.Path(__file__).resolve().parents[2] / "scenarios" / "metro_curves.yaml"
 
 pytestmark = pytest.mark.skipif(not conforma.has_wear, reason="module built without the wear loop")
 
@@ -31,7 +31,7 @@ def test_centred_wear_run_removes_the_cap_per_step_and_keeps_the_flange():
     assert run["status"] == "completed" and run["model"] == "hertz"
     assert list(t["step"]) == [0, 1, 2]
     assert t["km"][0] == 0.0 and np.all(np.diff(t["km"]) > 0)
-    assert t["max_depth_mm"][1:] == pytest.approx([0.4, 0.4], rel=1e-6)  # the cap of default_metro.yaml
+    assert t["max_depth_mm"][1:] == pytest.approx([0.4, 0.4], rel=1e-6)  # the cap of metro_curves.yaml
     # tread wear only: the flange dimensions stay those of the new S1002 to well under the cap
     assert np.all(np.abs(t["sd_mm"] - 32.5) < 0.05)
     assert np.all(np.abs(t["sh_mm"] - t["sh_mm"][0]) < 0.05)
