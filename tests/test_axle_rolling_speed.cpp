@@ -129,6 +129,17 @@ TEST(AxleRollingSpeed, TorqueBeyondAdhesionIsNotConverged) {
   EXPECT_TRUE(std::isfinite(r.axle_angular_velocity_rad_s));
 }
 
+// Both wheels' contacts of a kinematics sample, re-solved at its pose, velocity and loads.
+std::array<WheelContactReport, 2> SampleContacts(const WheelContactOptions& contact, const KinematicsSample& s) {
+  std::array<WheelContactReport, 2> reports;
+  for (Side side : {Side::Left, Side::Right}) {
+    WheelContactOptions c = contact;
+    c.vertical_load_N = s.vertical_load_N[side_index(side)];
+    reports[side_index(side)] = SolveWheelContact(Geometry(), side, s.pose, s.velocity, c);
+  }
+  return reports;
+}
+
 TEST(AxleRollingSpeed, TangentTrackSamplesCarryNoNetAxleTorque) {
   // the wear kinematics on tangent track (kinematics_quasistatic.hpp): every sample of the Klingel oscillation
   // re-evaluated at its axle speed carries no net torque; with the old fixed V/r0 it was about -3.6 kN m
@@ -145,13 +156,7 @@ TEST(AxleRollingSpeed, TangentTrackSamplesCarryNoNetAxleTorque) {
   ASSERT_FALSE(r.series.samples.empty());
   const double tolerance = o.residual_tolerance * v.static_wheel_load_N(o.gravity_m_s2) * kRadius;
   for (const KinematicsSample& s : r.series.samples) {
-    std::array<WheelContactReport, 2> reports;
-    for (Side side : {Side::Left, Side::Right}) {
-      WheelContactOptions c = o.contact;
-      c.vertical_load_N = s.vertical_load_N[side_index(side)];
-      reports[side_index(side)] = SolveWheelContact(Geometry(), side, s.pose, s.velocity, c);
-    }
-    EXPECT_NEAR(Torque(reports), 0.0, tolerance) << "sample at t = " << s.time_s << " s";
+    EXPECT_NEAR(Torque(SampleContacts(o.contact, s)), 0.0, tolerance) << "sample at t = " << s.time_s << " s";
   }
   // fixed axle speed (free_axle_rotation = false): the old rule, still available, keeps V / r0
   o.free_axle_rotation = false;
@@ -159,13 +164,7 @@ TEST(AxleRollingSpeed, TangentTrackSamplesCarryNoNetAxleTorque) {
   for (const KinematicsSample& s : fixed.series.samples) {
     EXPECT_DOUBLE_EQ(s.velocity.axle_angular_velocity_rad_s, kSpeed / kRadius);
     // ... and brakes the wheelset: the torque check above is what the old samples failed
-    std::array<WheelContactReport, 2> reports;
-    for (Side side : {Side::Left, Side::Right}) {
-      WheelContactOptions c = o.contact;
-      c.vertical_load_N = s.vertical_load_N[side_index(side)];
-      reports[side_index(side)] = SolveWheelContact(Geometry(), side, s.pose, s.velocity, c);
-    }
-    EXPECT_LT(Torque(reports), -1e3) << "sample at t = " << s.time_s << " s";
+    EXPECT_LT(Torque(SampleContacts(o.contact, s)), -1e3) << "sample at t = " << s.time_s << " s";
   }
 }
 
@@ -180,12 +179,7 @@ TEST(AxleRollingSpeed, ClassDriveTorqueIsCarriedByEverySample) {
   auto check = [&](const QuasiStaticResult& r, double torque, const char* what) {
     ASSERT_FALSE(r.series.samples.empty()) << what;
     for (const KinematicsSample& s : r.series.samples) {
-      std::array<WheelContactReport, 2> reports;
-      for (Side side : {Side::Left, Side::Right}) {
-        WheelContactOptions c = o.contact;
-        c.vertical_load_N = s.vertical_load_N[side_index(side)];
-        reports[side_index(side)] = SolveWheelContact(Geometry(), side, s.pose, s.velocity, c);
-      }
+      const std::array<WheelContactReport, 2> reports = SampleContacts(o.contact, s);
       // a quasi-static curve sample is re-evaluated at its equilibrium: the torque residual is within
       // residual_tolerance (scaled by Q0 r0) there; the tangent samples at their own axle speed
       EXPECT_NEAR(Torque(reports), torque, 10.0 * tolerance) << what << ", sample at t = " << s.time_s << " s";
