@@ -52,9 +52,10 @@ EOF
 run() {  # name, command...
   local name="$1"; shift
   echo "check_identical: $name"
-  # --allow-partial: the guard compares outputs (failed contacts are columns of steps.csv), not completeness
+  # --allow-partial: the guard compares outputs (failed contacts are columns of steps.csv), not completeness;
+  # --quiet: no progress lines on stderr in the log (mbench.txt is the log)
   local exe_="$1"; shift
-  if ! "$exe_" --allow-partial "$@" > "$work/$name.log" 2>&1; then
+  if ! "$exe_" --allow-partial --quiet "$@" > "$work/$name.log" 2>&1; then
     echo "check_identical: '$*' failed:" >&2
     tail -20 "$work/$name.log" >&2
     exit 2

@@ -169,6 +169,63 @@ TEST(AxleRollingSpeed, TangentTrackSamplesCarryNoNetAxleTorque) {
   }
 }
 
+TEST(AxleRollingSpeed, ClassDriveTorqueIsCarriedByEverySample) {
+  // TrackClass::axle_torque_Nm (a traction or braking class of a metro line, scenario acceleration_m_s2): each
+  // sample's contact torque equals the class's torque, on tangent track and in a curve; on tangent track it is the
+  // same as applying the torque to every class (QuasiStaticOptions::axle_torque_Nm).
+  const VehicleParameters v = MetroVehicle();
+  QuasiStaticOptions o;
+  o.contact = Contact();
+  const double tolerance = o.residual_tolerance * v.static_wheel_load_N(o.gravity_m_s2) * kRadius;
+  auto check = [&](const QuasiStaticResult& r, double torque, const char* what) {
+    ASSERT_FALSE(r.series.samples.empty()) << what;
+    for (const KinematicsSample& s : r.series.samples) {
+      std::array<WheelContactReport, 2> reports;
+      for (Side side : {Side::Left, Side::Right}) {
+        WheelContactOptions c = o.contact;
+        c.vertical_load_N = s.vertical_load_N[side_index(side)];
+        reports[side_index(side)] = SolveWheelContact(Geometry(), side, s.pose, s.velocity, c);
+      }
+      // a quasi-static curve sample is re-evaluated at its equilibrium: the torque residual is within
+      // residual_tolerance (scaled by Q0 r0) there; the tangent samples at their own axle speed
+      EXPECT_NEAR(Torque(reports), torque, 10.0 * tolerance) << what << ", sample at t = " << s.time_s << " s";
+    }
+  };
+  for (const double a : {1.0, -1.0}) {  // traction, braking at 1 m/s^2
+    const double torque = v.carried_mass_per_wheelset_kg() * a * kRadius;
+    TrackClass t;
+    t.name = "tangent";
+    t.speed_m_s = kSpeed;
+    t.friction_coefficient = 0.3;
+    t.axle_torque_Nm = torque;
+    const QuasiStaticResult r = SolveQuasiStaticCurving(v, Geometry(), t, o);
+    ASSERT_EQ(r.status, QuasiStaticStatus::Converged);
+    EXPECT_EQ(r.tangent_rolling_failures, 0);
+    check(r, torque, a > 0 ? "tangent, traction" : "tangent, braking");
+    QuasiStaticOptions everywhere = o;
+    everywhere.axle_torque_Nm = torque;
+    t.axle_torque_Nm = 0.0;
+    const QuasiStaticResult same = SolveQuasiStaticCurving(v, Geometry(), t, everywhere);
+    ASSERT_EQ(same.series.samples.size(), r.series.samples.size());
+    for (size_t i = 0; i < r.series.samples.size(); ++i)
+      EXPECT_EQ(same.series.samples[i].velocity.axle_angular_velocity_rad_s,
+                r.series.samples[i].velocity.axle_angular_velocity_rad_s);
+    TrackClass curve = t;
+    curve.name = "R800";
+    curve.curve_radius_m = 800.0;
+    curve.cant_m = 0.06;
+    curve.speed_m_s = 65.0 / 3.6;
+    curve.axle_torque_Nm = torque;
+    const QuasiStaticResult rc = SolveQuasiStaticCurving(v, Geometry(), curve, o);
+    ASSERT_EQ(rc.status, QuasiStaticStatus::Converged);
+    check(rc, torque, a > 0 ? "R800, traction" : "R800, braking");
+  }
+  TrackClass bad;
+  bad.speed_m_s = kSpeed;
+  bad.axle_torque_Nm = std::nan("");
+  EXPECT_THROW(SolveQuasiStaticCurving(v, Geometry(), bad, o), InputError);
+}
+
 TEST(AxleRollingSpeed, BadOptionsNameTheField) {
   const Wheelset w = At(0.0);
   AxleRollingSpeedOptions o;

@@ -96,6 +96,23 @@ TEST(RailUpdate, AverageAlongNormalsOfUniformOffsets) {
   EXPECT_THROW(AverageAlongNormals(base, shifted, {0.5, 0.5, 0.5}), InputError);
 }
 
+TEST(RailUpdate, RemovedAreaOfAUniformOffsetIsDepthTimesLength) {
+  // a crown worn by a uniform depth d along its normals is the concentric circle of radius R - d: the depth along
+  // the old normals is d everywhere, the first-order area d L (the exact area between the arcs is (d - d^2/(2R)) L)
+  const Profile base = crown();
+  const double d = 0.1e-3;
+  WearDistribution u = WearDistribution::ForProfile(base, 0.1e-3);
+  std::fill(u.depth_m.begin(), u.depth_m.end(), d);
+  const RemovedAlongNormals m = MeasureRemovedAlongNormals(base, RemoveAlongNormal(base, u));
+  EXPECT_NEAR(m.max_depth_m, d, 1e-10);
+  for (double t : m.depth.depth_m) EXPECT_NEAR(t, d, 1e-10);
+  EXPECT_NEAR(m.area_m2, d * base.length(), 1e-9 * d * base.length());
+  // nothing removed: zero area; the base against itself
+  const RemovedAlongNormals z = MeasureRemovedAlongNormals(base, base);
+  EXPECT_LT(std::abs(z.area_m2), 1e-18);
+  EXPECT_LT(z.max_depth_m, 1e-12);
+}
+
 TEST(RailUpdate, AveragedRailIsTheMeanOfTheVirtualRails) {
   const Profile rail = crown();
   // three wheel profiles give three different rail wear bands (per passage)

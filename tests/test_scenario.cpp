@@ -1,4 +1,4 @@
-// Scenario files (scenario.hpp): the two shipped scenarios, unknown keys and bad values named with the file.
+// Scenario files (scenario.hpp): the shipped scenarios, unknown keys and bad values named with the file.
 // test-links: simulation  (CMakeLists.txt links the test with this library only; the layers below come with it)
 
 #include <gtest/gtest.h>
@@ -39,6 +39,29 @@ TEST(Scenario, DefaultMetroAfterPaper003) {
   EXPECT_EQ(s.model, ContactModel::Conformal);
 }
 
+TEST(Scenario, MetroRailStepsUpdatesTheRail) {
+  const Scenario s = LoadScenario(kDir + "metro_rail_steps.yaml");
+  const Scenario base = LoadScenario(kDir + "default_metro.yaml");
+  EXPECT_EQ(s.name, "metro_rail_steps");
+  EXPECT_FALSE(s.rail_steps.fixed);
+  EXPECT_EQ(s.rail_steps.steps, 10);
+  EXPECT_NEAR(s.rail_steps.cap_m, 0.1e-3, 1e-15);
+  EXPECT_NEAR(s.rail_steps.output_spacing_m, 0.025e-3, 1e-15);
+  // the same vehicle, track, profiles and line as the default metro case
+  EXPECT_EQ(s.rail_name, base.rail_name);
+  EXPECT_EQ(s.wheel_name, base.wheel_name);
+  EXPECT_EQ(s.vehicle.bogie_count, base.vehicle.bogie_count);
+  EXPECT_NEAR(s.rail_inclination_rad, base.rail_inclination_rad, 0.0);
+  ASSERT_EQ(s.classes.size(), base.classes.size());
+  for (size_t c = 0; c < s.classes.size(); ++c) {
+    EXPECT_EQ(s.classes[c].name, base.classes[c].name);
+    EXPECT_NEAR(s.classes[c].share, base.classes[c].share, 0.0);
+  }
+  EXPECT_NEAR(s.update.cap_m, base.update.cap_m, 0.0);
+  EXPECT_TRUE(base.rail_steps.fixed);  // the default stays with the fixed rail
+  EXPECT_EQ(base.rail_steps.output_spacing_m, 0.0);
+}
+
 TEST(Scenario, AostaFromTheMeasuredClassTable) {
   const Scenario s = LoadScenario(kDir + "aosta_aln501.yaml");
   ASSERT_EQ(s.classes.size(), 18u);  // 17 curve classes + the straight remainder
@@ -73,6 +96,8 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("update: {cap_mm: abc}\n") + kClasses, "update.cap_mm");
   ExpectError(std::string("update: {cap_mm: -1}\n") + kClasses, "cap_mm");
   ExpectError(std::string("contact_model: fem\n") + kClasses, "fem");
+  ExpectError(std::string("rail: {fixed: false, steps: 2, spacing_mm: -0.1}\n") + kClasses, "rail.spacing_mm");
+  ExpectError(std::string("rail: {fixed: false, steps: 0}\n") + kClasses, "rail.steps");
   ExpectError(std::string("kinematics: {contact_model: fem}\n") + kClasses, "kinematics.contact_model");
   ExpectError("track_classes: [{radius_m: 0, share: 1}]\n", "speed_kmh");
   ExpectError("name: x\n", "no track classes");
@@ -99,6 +124,32 @@ TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {
   EXPECT_TRUE(s.kinematics.contact_model_set);
   EXPECT_EQ(s.kinematics.contact_model, ContactModel::Hertz);
   EXPECT_EQ(ParseScenario(std::string("contact_model: auto\n") + kClasses, "a.yaml").model, ContactModel::Auto);
+}
+
+TEST(Scenario, ClassAccelerationIsTheTorqueThatAcceleratesTheCarriedMass) {
+  // T = m a r0 per axle, every axle driven alike (scenario.hpp track_classes; docs/physics-reference.md §12.3)
+  const Scenario s = ParseScenario(
+      "track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: 0.8},\n"
+      "                {radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: -1.1},\n"
+      "                {radius_m: 0, speed_kmh: 60, share: 1, axle_torque_Nm: 1234.5},\n"
+      "                {radius_m: 0, speed_kmh: 60, share: 1}]\n",
+      "duty.yaml");
+  ASSERT_EQ(s.classes.size(), 4u);
+  const double m = s.vehicle.carried_mass_per_wheelset_kg(), r0 = s.vehicle.nominal_wheel_radius_m;
+  EXPECT_NEAR(s.classes[0].axle_torque_Nm, m * 0.8 * r0, 1e-9 * m * r0);
+  EXPECT_NEAR(s.classes[1].axle_torque_Nm, -m * 1.1 * r0, 1e-9 * m * r0);
+  EXPECT_EQ(s.classes[2].axle_torque_Nm, 1234.5);
+  EXPECT_EQ(s.classes[3].axle_torque_Nm, 0.0);  // free rolling unless the class says otherwise
+  ExpectError("track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: 1, axle_torque_Nm: 3}]\n",
+              "not both");
+  ExpectError("track_classes: [{radius_m: 0, speed_kmh: 60, share: 1, acceleration_m_s2: x}]\n", "acceleration_m_s2");
+  // the providers that impose the axle speed cannot carry a drive torque: said, not ignored
+  ExpectError("kinematics: {provider: centred}\ntrack_classes: [{radius_m: 0, speed_kmh: 60, share: 1, "
+              "acceleration_m_s2: 1}]\n",
+              "drive torque");
+  ExpectError("kinematics: {free_axle_rotation: false}\ntrack_classes: [{radius_m: 0, speed_kmh: 60, share: 1, "
+              "acceleration_m_s2: 1}]\n",
+              "drive torque");
 }
 
 }  // namespace

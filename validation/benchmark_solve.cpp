@@ -208,6 +208,7 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
   ref_options.validate();
   std::vector<BenchReference> refs(cases.size());
   std::vector<std::exception_ptr> failed(cases.size());  // an exception must not leave the parallel loop
+  ProgressCounter progress(options.on_progress, 2.0 * static_cast<double>(cases.size()));
 #pragma omp parallel for schedule(dynamic)
   for (int k = 0; k < static_cast<int>(cases.size()); ++k) {
     try {
@@ -215,6 +216,7 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
     } catch (...) {
       failed[k] = std::current_exception();
     }
+    progress.Finished("reference " + cases[k].name);
   }
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
@@ -267,6 +269,7 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         rows.push_back(row);
       }
     }
+    progress.Finished("timed " + c.name);
   }
   if (references) *references = std::move(refs);
   return rows;

@@ -74,9 +74,11 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
   contact.fastsim_elements = options.fastsim_elements;
   contact.creepages_given = options.creepages_from_file;
   std::vector<ManchesterComparison> out(cases.size());
+  ProgressCounter progress(options.on_progress, static_cast<double>(cases.size()));
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < static_cast<int>(cases.size()); ++i) {
     const ManchesterReferenceCase& c = cases[i];
+    const ProgressCounter::Unit counted(progress, "case " + std::to_string(c.id));
     ManchesterComparison& r = out[i];
     r.reference = c;
     WheelsetPose pose;

@@ -256,9 +256,11 @@ StressSummary RunStress(const StressSetup& setup, const StressOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<CaseOutcome> outcomes(static_cast<size_t>(o.cases));
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  ProgressCounter progress(o.on_progress, static_cast<double>(o.cases));
 #pragma omp parallel for schedule(dynamic, 4) num_threads(threads)
   for (long k = 0; k < o.cases; ++k) {
     const long i = o.first_case + k;
+    const ProgressCounter::Unit counted(progress, "case " + std::to_string(i));
     // generator seeded by (seed, i) only: the same case whatever the thread or the batch
     std::seed_seq seq{static_cast<std::uint32_t>(o.seed), static_cast<std::uint32_t>(o.seed >> 32),
                       static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(static_cast<std::uint64_t>(i) >> 32)};

@@ -110,8 +110,10 @@ std::vector<ThresholdPoint> CompareConformalPlanar(const std::vector<BenchCase>&
                                                    const ThresholdOptions& options) {
   options.validate();
   std::vector<ThresholdPoint> out(situations.size());
+  ProgressCounter progress(options.on_progress, static_cast<double>(situations.size()));
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < static_cast<int>(situations.size()); ++i) {
+    const ProgressCounter::Unit counted(progress, situations[i].name);
     // an exception must not leave the parallel region: a situation a model rejects is recorded as not valid, with
     // the error as its status (threshold.csv), and the sweep goes on
     try {

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "conforma/geometry.hpp"
+#include "conforma/progress.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma {
@@ -136,6 +137,8 @@ struct ContactLutBuildOptions {
   std::string wheel_profile, rail_profile, track;  // for the header
   double match_distance_m = 3e-3;                  // ContactLutHeader::match_distance_m, > 0
   int threads = 0;                                 // OpenMP threads, 0: the OpenMP default
+  // progress (progress.hpp), one unit per node and side (2 x grid.nodes(), "node <k>"); empty: none
+  ProgressFunction on_progress;
   void validate() const;
 };
 

@@ -24,6 +24,7 @@ struct ContactLutCheckOptions {
   double lateral_creep = 2e-3, curvature_per_m = 1.0 / 200.0, axle_creep = 2e-3;
   WheelContactOptions contact;  // the direct solve's options (the load is set per sample); must match the table
   int threads = 0;              // OpenMP threads, 0: the default
+  ProgressFunction on_progress;  // progress (progress.hpp), one unit per sample ("sample <k>"); empty: none
   void validate() const;
 };
 

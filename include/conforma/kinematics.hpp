@@ -26,6 +26,10 @@ struct TrackClass {
   double speed_m_s = 0.0;
   double share = 1.0;              // weight p_k of the class
   double friction_coefficient = 0.3;
+  // Drive torque per axle in this class, N m (> 0 traction, < 0 braking; docs/physics-reference.md §12.3): the
+  // operating phase of the class (accelerating out of / braking into a station). Added to the torque every class
+  // gets (QuasiStaticOptions::axle_torque_Nm); used by the providers that solve the axle's torque balance.
+  double axle_torque_Nm = 0.0;
 };
 
 // The state of one wheelset at one sample.

@@ -29,6 +29,19 @@ struct NormalAverageResult {
 NormalAverageResult AverageAlongNormals(const Profile& base, const std::vector<Profile>& profiles,
                                         const std::vector<double>& weights = {}, double output_spacing_m = 0.0);
 
+// Material removed from `base` to reach `worn`, measured along the normals of base (the normal-line intersection of
+// AverageAlongNormals): depth t(s_i) > 0 where worn lies inside base, at each node of base (its spacing); removed
+// area = integral of t ds (trapezoid rule, WearDistribution::area_m2). This area is first order in t: the exact
+// area between the two curves differs by the integral of curvature * t^2 / 2 ds. Being linear in t, it makes the
+// area of a normal average the weighted mean of the averaged profiles' areas (up to the refit of the mean profile).
+struct RemovedAlongNormals {
+  WearDistribution depth;                    // t on the node grid of base [m]
+  double area_m2 = 0.0;                      // integral of t ds [m^2]
+  double max_depth_m = 0.0;                  // largest t [m] (0 when nothing is removed)
+  double max_intersection_residual_m = 0.0;  // as NormalAverageResult
+};
+RemovedAlongNormals MeasureRemovedAlongNormals(const Profile& base, const Profile& worn);
+
 struct RailStepOptions {
   bool keep_rail_fixed = false;          // the rail is never updated (paper 003 §7 keeps a measured rail)
   double max_depth_per_step_m = 0.1e-3;  // m, > 0: cap on the mean rail depth of one rail step (our default;
@@ -48,6 +61,7 @@ struct RailStepResult {
   std::string message;                 // names the step and the reason when status != Updated; "" otherwise
   Profile rail;                        // r_{k+1} (r_k when fixed, without wear, or invalid)
   std::vector<Profile> virtual_rails;  // r_k^j, one per wheel profile
+  std::vector<double> weights;         // of the virtual rails in the mean (normalised; equal when none were given)
   // mean depth along the normals of r_k [m] (NoWear without keep_rail_fixed: the unscaled smoothed mean)
   WearDistribution mean_removed_depth;
   double scale_factor = 0.0;           // common factor on the smoothed rail wear (dimensionless)

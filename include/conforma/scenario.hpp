@@ -37,9 +37,12 @@
 //   contact_model: conformal            (hertz | kp | kpec | conformal; the command line may override)
 //   update: { cap_mm: 0.4, smoothing_mm: 5.0, steps: 20, total_km: 0 (0: no limit; the last step is shortened
 //             to land on it), max_curvature_1_m: 1000 }
-//   rail: { fixed: true, steps: 0, cap_mm: 0.1 }  (fixed: paper 003 §7; steps m > 0: paper 003 Fig. 11)
+//   rail: { fixed: true, steps: 0, cap_mm: 0.1, spacing_mm: 0 }  (fixed: paper 003 §7; steps m > 0: paper 003
+//         Fig. 11; spacing_mm: arc-length spacing of the updated rails, 0 = that of the rail before the step)
 //   track_classes: [ { name, radius_m (0 = tangent), cant_mm, speed_kmh, share (fractions or percent; they are
-//                      normalised to sum 1), friction } ... ]
+//                      normalised to sum 1), friction, acceleration_m_s2 | axle_torque_Nm } ... ]
+//                      (acceleration_m_s2: traction > 0 / braking < 0 phase of the class, every axle driven alike:
+//                      axle torque m a r0 with m the carried mass per wheelset; TrackClass::axle_torque_Nm)
 //   track_classes_csv: <file> with columns radius_m,cant_mm,speed_kmh,share_percent ('#' comments); the
 //                      remainder to 100 % becomes a tangent class at tangent_speed_kmh (key of the same map).
 // Relative file paths are resolved against the scenario file's folder; a path starting with $CONFORMA_DATA_DIR/ is
@@ -110,6 +113,11 @@ struct ScenarioRail {
   bool fixed = true;        // the rail is not updated (default; paper 003 §7)
   int steps = 0;            // m rail steps (paper 003 Fig. 11) when not fixed
   double cap_m = 0.1e-3;    // RailStepOptions::max_depth_per_step_m
+  // RailStepOptions::output_spacing_m (virtual and averaged rails), >= 0; 0 = the spacing of the rail before the
+  // step. The refit of a profile on a uniform arc-length grid (natural cubic spline) misplaces the curve by
+  // O(h^2 x curvature jump) between the nodes where the rail's curvature jumps (the arcs of a standard rail): at
+  // 0.1 mm up to ~5e-8 m, at 0.05 mm ~3e-9 m (docs/physics-reference.md §8.8).
+  double output_spacing_m = 0.0;
 };
 
 struct Scenario {

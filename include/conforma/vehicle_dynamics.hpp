@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "conforma/progress.hpp"
 #include "conforma/vehicle_dynamics_model.hpp"
 
 namespace conforma {
@@ -50,6 +51,9 @@ struct DynamicsOptions {
   // one per wheelset for initial_axle_speed_deviation. Empty: 0.
   std::vector<double> initial_positions, initial_velocities, initial_axle_speed_deviation;
   bool record_wheels = true;             // evaluate the wheel forces (Y, Q, Y/Q, T gamma) at every output sample
+  // progress (progress.hpp) at every output sample: done = simulated time, total = duration_s (s), no name; empty:
+  // none
+  ProgressFunction on_progress;
   void validate() const;
 };
 

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "cli_checks.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "progress.hpp"
 #include "conforma/validation/benchmark_cases.hpp"
 #include "conforma/error.hpp"
 
@@ -186,8 +188,13 @@ void RegisterBenchCommand(CLI::App& app) {
     for (const BenchCase& c : all_cases)
       if (std::find(wanted.begin(), wanted.end(), c.family) != wanted.end()) cases.push_back(c);
     std::printf("bench: %zu patches, %zu models x %zu grids\n", cases.size(), options.models.size(), options.grids.size());
+    std::fflush(stdout);  // before the progress lines on stderr
     std::vector<BenchReference> refs;
+    // two units per case: the exact references (in parallel), then the timed models case by case
+    ProgressReporter progress("bench", 2.0 * cases.size(), "", ProgressModeOf(sub), std::cerr);
+    options.on_progress = progress.Function();
     const std::vector<BenchRow> rows = RunBench(cases, options, &refs);
+    progress.Finish();
 
     const std::string csv = *out_dir + "/bench.csv";
     std::ofstream f(csv);

@@ -110,7 +110,7 @@ void RegisterCompareCommand(CLI::App& app) {
   sub->add_option("--steps", a->steps, "wheel steps per model");
   sub->add_option("--python", a->python, kPythonHelp);
   sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
-  sub->callback([a]() {
+  sub->callback([a, sub]() {
     const Scenario sc = LoadScenario(a->scenario);
     // every check before the minutes of computing: models, output folder, plotting interpreter
     const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
@@ -127,7 +127,7 @@ void RegisterCompareCommand(CLI::App& app) {
       o.contact.model = ParseWearModel(m, "--models");
       o.steps = a->steps;
       o.total_km = 0.0;  // compare on the number of steps (each removes the cap)
-      run.result = RunWearWithOutput(sc, o, a->out + "/" + m, m, a->steps, &run.wall_s);
+      run.result = RunWearWithOutput(sc, o, a->out + "/" + m, m, a->steps, &run.wall_s, ProgressModeOf(sub));
       const double km = run.result.steps.empty() ? 0.0 : run.result.steps.back().km;
       std::printf("%s: %zu steps, %.1f km, %.1f s, %s\n", m.c_str(), run.result.steps.size(), km, run.wall_s,
                   to_string(run.result.status));

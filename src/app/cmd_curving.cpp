@@ -4,12 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <vector>
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "conforma/dynamic_kinematics.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kinematics_quasistatic.hpp"
@@ -108,7 +110,7 @@ void RegisterCurvingCommand(CLI::App& app) {
                 "also print the quasi-static solve itself: status and residual per bogie, flange-contact shift");
   sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred, dynamic (default: the scenario's; dynamic prints a summary of "
                                           "the samples per wheelset)");
-  sub->callback([a]() {
+  sub->callback([a, sub]() {
     Scenario sc = LoadScenario(a->scenario);
     const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
     if (!IsWearContactModel(model))
@@ -126,11 +128,16 @@ void RegisterCurvingCommand(CLI::App& app) {
     auto fallbacks = std::make_shared<KinematicsFallbackLog>();
     const ContactModel curving_model = CurvingContactModel(sc, model);
     const KinematicsFunction kin = MakeWearKinematics(sc, curving_model, &SolveWheelContact, fallbacks);
+    // progress: before each class "k/n class, <class being solved>"; erased before its lines on stdout
+    ProgressReporter progress("curving", a->track_class >= 0 ? 1.0 : nc, "class", ProgressModeOf(sub), std::cerr);
+    int done = 0;
     for (int c = 0; c < nc; ++c) {
       if (a->track_class >= 0 && c != a->track_class) continue;
       const TrackClass& tc = sc.classes[c];
+      progress.Update(done, "class " + std::to_string(c) + " " + tc.name);
       const size_t before = fallbacks->size();
       const KinematicsSeries s = kin(g, tc, c);
+      progress.Suspend();
       std::string fell_back;
       for (const KinematicsFallbackLog::Entry& e : fallbacks->since(before))
         fell_back += " (fell back to the " + e.replacement + ": " + e.reason + ")";
@@ -140,7 +147,11 @@ void RegisterCurvingCommand(CLI::App& app) {
       if (a->equilibrium && TrackClassCurvature(tc) != 0.0) PrintEquilibrium(sc, g, tc, curving_model);
       if (sc.kinematics.provider == KinematicsProvider::Dynamic) PrintSampleSummary(s);
       else PrintSamples(sc, g, s, model);
+      std::fflush(stdout);  // the class's lines before the next progress line on stderr
+      ++done;
     }
+    progress.Update(done, "");
+    progress.Finish();
   });
 }
 

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <vector>
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "conforma/contact_lut.hpp"
 #include "conforma/contact_lut_io.hpp"
 #include "exit_status.hpp"
@@ -96,7 +98,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_flag("--eig", a->eig, "print the eigenvalues of the linear model at the speed and its critical speed (no run)");
   sub->add_option("--vmax-kmh", a->v_max_kmh, "--eig: upper end of the critical-speed search, km/h");
   sub->add_option("--out", a->out, "time-history CSV file");
-  sub->callback([a]() {
+  sub->callback([a, sub]() {
     Scenario sc = LoadScenario(a->scenario);
     const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
     if (!IsWearContactModel(model))
@@ -173,8 +175,14 @@ void RegisterDynamicsCommand(CLI::App& app) {
     else throw InputError("--stepper: unknown stepper '" + a->stepper + "' (rosenbrock4, dopri5)");
     o.initial_positions.assign(m.position_count(), 0.0);
     for (int j = 0; j < m.wheelset_count(); ++j) o.initial_positions[m.wheelset_index(j)] = 1e-3 * a->offset_mm;
+    // progress in simulated seconds: a line per 0.1 s, or per 2 % of a run longer than 5 s
+    ProgressReporter progress("dynamics", o.duration_s, "s", ProgressModeOf(sub), std::cerr);
+    progress.SetDecimals(2);
+    progress.SetLineStep(std::max(0.1, o.duration_s / 50.0));
+    o.on_progress = progress.Function();
     const auto start = std::chrono::steady_clock::now();
     const DynamicsResult r = SimulateVehicleDynamics(m, o);
+    progress.Finish();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!a->out.empty()) {
       std::ofstream f(a->out);

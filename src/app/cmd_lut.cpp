@@ -14,6 +14,7 @@
 #include "conforma/contact_lut_io.hpp"
 #include "conforma/error.hpp"
 #include "contact_status.hpp"
+#include "progress.hpp"
 #include "report_json.hpp"
 
 namespace conforma::cli {
@@ -150,7 +151,7 @@ void RegisterLutCommand(CLI::App& app) {
     sub->add_option("--load-kN", b->load_kN, "wheel load axis: min:max:step or a comma list [kN]");
     sub->add_option("--match-mm", b->match_mm, "patches farther apart along the rail are different patches [mm]");
     sub->add_option("--threads", b->threads, "OpenMP threads (0: default)");
-    sub->callback([b]() {
+    sub->callback([b, sub]() {
       const auto geometry = b->args.track.make_geometry();
       ContactLutBuildOptions o;
       o.contact = b->args.options();
@@ -164,7 +165,10 @@ void RegisterLutCommand(CLI::App& app) {
       const TrackArgs& t = b->args.track;
       o.track = "inclination " + (t.inclination.empty() ? std::string("default") : t.inclination) + ", gauge " +
                 std::to_string(t.gauge_mm) + " mm, r0 " + std::to_string(t.nominal_radius_mm) + " mm";
+      ProgressReporter progress("lut build", 0.0, "", ProgressModeOf(sub), std::cerr);
+      o.on_progress = progress.Function();
       const ContactLut table = BuildContactLut(*geometry, o);
+      progress.Finish();
       SaveContactLut(table, b->out);
       const auto bytes = std::filesystem::file_size(b->out);
       char line[256];
@@ -259,14 +263,17 @@ void RegisterLutCommand(CLI::App& app) {
     sub->add_option("--seed", c->o.seed, "random seed");
     sub->add_option("--threads", c->o.threads, "OpenMP threads (0: default)");
     sub->add_flag("--json", c->json, "machine-readable output");
-    sub->callback([c]() {
+    sub->callback([c, sub]() {
       const ContactLut table = LoadContactLut(c->file);
       const auto geometry = c->args.track.make_geometry();
       ContactLutCheckOptions o = c->o;
       o.contact = c->args.options();
       o.speed_m_s = c->args.contact.speed_m_s;
       const auto t0 = std::chrono::steady_clock::now();
+      ProgressReporter progress("lut check", 0.0, "", ProgressModeOf(sub), std::cerr);
+      o.on_progress = progress.Function();
       const ContactLutCheckResult r = CheckContactLut(table, *geometry, o);
+      progress.Finish();
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       auto pj = [](const Percentiles& p) {
         return nlohmann::json{{"count", p.count}, {"p50", p.p50}, {"p90", p.p90}, {"p95", p.p95}, {"p99", p.p99},

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "conforma/validation/validation_manchester.hpp"
 
 namespace conforma::cli {
@@ -17,13 +18,16 @@ void RegisterMbenchCommand(CLI::App& app) {
   sub->add_option("--models", *models, "comma-separated models");
   sub->add_option("--data", *data, kDataHelp);
   sub->add_flag("--kinematic-creepages", *kinematics, "creepages from the kinematics instead of the file's");
-  sub->callback([models, data, kinematics]() {
+  sub->callback([models, data, kinematics, sub]() {
     std::stringstream ss(*models);
     for (std::string name; std::getline(ss, name, ',');) {
       ManchesterOptions o;
       o.model = ParseContactModel(name);
       o.creepages_from_file = !*kinematics;
+      ProgressReporter progress("mbench " + name, 0.0, "", ProgressModeOf(sub), std::cerr);
+      o.on_progress = progress.Function();
       const auto rows = RunManchesterA22(DataDirOr(*data), o);
+      progress.Finish();
       std::printf("\nmodel %s (errors vs CONTACT: relative for Fn, pmax, area; absolute N for Fx, Fs)\n", name.c_str());
       std::printf("case  y_ws  n  y_cp[mm] (ref)    Fn[N]   dFn    pmax (ref)    dpmax   area (ref)   darea"
                   "    Fx (ref)      dFx     Fs (ref)      dFs\n");
@@ -46,6 +50,7 @@ void RegisterMbenchCommand(CLI::App& app) {
                   "Fx and Fs within 20%% or 150 N: %d/%zu cases (Fx %d, Fs %d)\n",
                   name.c_str(), 100 * worst_fn, 100 * worst_p, rows.empty() ? 0.0 : 100 * rows[0].err_pmax, 100 * worst_a,
                   both_ok, rows.size(), fx_ok, fs_ok);
+      std::fflush(stdout);  // this model's table before the next model's progress on stderr (one log for both)
     }
   });
 }

@@ -4,9 +4,12 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "conforma/error.hpp"
 #include "conforma/validation/stress.hpp"
 
@@ -61,7 +64,17 @@ void RegisterStressCommand(CLI::App& app) {
     if (options->cases < 1) throw InputError("option --cases: must be >= 1 (got " + std::to_string(options->cases) + ")");
     if (*determinism_cases < 0) throw InputError("option --determinism-cases: must be >= 0");
     const StressSetup setup = StressSetup::Make(DataDirOr(*data));
-    const StressSummary s = RunStress(setup, *options);
+    const ProgressMode mode = ProgressModeOf(sub);
+    // one reporter per run; its Options copy carries the reporter's function
+    auto run = [&](const std::string& label, StressOptions run_options) {
+      std::fflush(stdout);
+      ProgressReporter progress(label, static_cast<double>(run_options.cases), "", mode, std::cerr);
+      run_options.on_progress = progress.Function();
+      StressSummary summary = RunStress(setup, run_options);
+      progress.Finish();
+      return summary;
+    };
+    const StressSummary s = run("stress", *options);
     Print("stress", s);
     nlohmann::json j = {{"run", SummaryJson(s)}, {"threads", options->threads > 0 ? options->threads : omp_get_max_threads()}};
     bool ok = s.passed();
@@ -69,9 +82,9 @@ void RegisterStressCommand(CLI::App& app) {
       StressOptions d = *options;
       d.cases = std::min(*determinism_cases, options->cases > 0 ? options->cases : *determinism_cases);
       d.threads = 1;
-      const StressSummary one = RunStress(setup, d);
+      const StressSummary one = run("stress determinism, 1 thread", d);
       d.threads = std::max(2, omp_get_max_threads());
-      const StressSummary many = RunStress(setup, d);
+      const StressSummary many = run("stress determinism, " + std::to_string(d.threads) + " threads", d);
       const bool same = one.digest == many.digest;
       std::printf("determinism: %ld cases with 1 thread (%.1f s) and %d threads (%.1f s): digests %016llx / %016llx -> %s\n",
                   d.cases, one.seconds, d.threads, many.seconds, static_cast<unsigned long long>(one.digest),

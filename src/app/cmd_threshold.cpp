@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -12,6 +13,7 @@
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "exit_status.hpp"
+#include "progress.hpp"
 #include "conforma/validation/threshold.hpp"
 
 namespace conforma::cli {
@@ -98,8 +100,13 @@ void RegisterThresholdCommand(CLI::App& app) {
     int failed_situations = 0;
     std::stringstream ss(*sets);
     for (std::string set; std::getline(ss, set, ',');) {
-      const std::vector<ThresholdPoint> points =
-          CompareConformalPlanar(MakeThresholdSituations(set, DataDirOr(*data), set == "worn" ? *worn_load : *load), options);
+      std::fflush(stdout);  // the previous set's lines before this set's progress on stderr
+      ProgressReporter progress("threshold " + set, 0.0, "situation", ProgressModeOf(sub), std::cerr);
+      ThresholdOptions set_options = options;
+      set_options.on_progress = progress.Function();
+      const std::vector<ThresholdPoint> points = CompareConformalPlanar(
+          MakeThresholdSituations(set, DataDirOr(*data), set == "worn" ? *worn_load : *load), set_options);
+      progress.Finish();
       json["sets"][set] = FitJson(points, *tolerance);
       int not_valid = 0, failed = 0;
       for (const ThresholdPoint& p : points) {

@@ -333,7 +333,7 @@ void RegisterValidateCommand(CLI::App& app) {
                 "absolute radius, e.g. MiniProf)");
   sub->add_option("--python", a->python, kPythonHelp);
   sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
-  sub->callback([a]() {
+  sub->callback([a, sub]() {
     const Scenario sc = LoadScenario(a->scenario);
     const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
     if (a->measured.empty() && a->measured_profiles.empty())
@@ -381,7 +381,7 @@ void RegisterValidateCommand(CLI::App& app) {
       o.steps = steps;
       o.total_km = target_km;
       const std::string dir = a->out + "/" + m;
-      run.result = RunWearWithOutput(sc, o, dir, m, steps, &run.wall_s);
+      run.result = RunWearWithOutput(sc, o, dir, m, steps, &run.wall_s, ProgressModeOf(sub));
       const SimulatedDimensionSeries series = DimensionSeriesOf(run.result);
       for (const MeasuredDimensions& f : files) {
         run.dimensions.push_back(CompareDimensions(series, f));

@@ -1,5 +1,8 @@
-// conforma wear --scenario F [--model M] --out DIR: the wear loop of a scenario (wear_simulation.hpp).
+// conforma wear --scenario F [--model M] --out DIR: the wear loop of a scenario (wear_simulation.hpp). With rail
+// steps (scenario rail.fixed: false) also rail_steps.csv, rail_steps.md and the rail plots (rail_step_output.hpp,
+// scripts/plot_rail_steps.py).
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 
@@ -7,6 +10,8 @@
 #include "commands.hpp"
 #include "conforma/scenario.hpp"
 #include "conforma/wear_simulation.hpp"
+#include "exit_status.hpp"
+#include "rail_step_output.hpp"
 #include "wear_output.hpp"
 
 namespace conforma::cli {
@@ -17,6 +22,8 @@ void RegisterWearCommand(CLI::App& app) {
     std::string scenario, model, out = "wear_out";
     int steps = -1;
     double km = -1.0;
+    std::string python;  // empty: PythonOr's default
+    bool plot = true;
   };
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file (scenarios/default_metro.yaml)")->required();
@@ -24,8 +31,13 @@ void RegisterWearCommand(CLI::App& app) {
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--steps", a->steps, "wheel steps (default: the scenario's)");
   sub->add_option("--km", a->km, "stop at this distance (default: the scenario's total_km; 0 = unlimited)");
-  sub->callback([a]() {
+  sub->add_option("--python", a->python, std::string(kPythonHelp) + "; only for the rail plots of rail steps");
+  sub->add_flag("!--no-plot", a->plot, "no rail plots with rail steps (no python needed)");
+  sub->callback([a, sub]() {
     const Scenario sc = LoadScenario(a->scenario);
+    const bool rail_steps = !sc.rail_steps.fixed;
+    const std::string python = PythonOr(a->python);
+    if (rail_steps && a->plot) RequirePlotPython(python, "--python");  // before the minutes of computing
     WearSimulationOptions o;
     o.contact.model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
     EnsureOutputFolder(a->out, "--out");
@@ -34,13 +46,25 @@ void RegisterWearCommand(CLI::App& app) {
     const int total = a->steps >= 0 ? a->steps : sc.update.steps;
     const std::string label = to_string(o.contact.model);
     double wall = 0.0;
-    const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall);
+    const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall, ProgressModeOf(sub));
     const double km = r.steps.empty() ? 0.0 : r.steps.back().km;
     std::printf("%s: model %s, %zu steps, %.1f km, status %s, %.1f s -> %s/steps.csv\n", sc.name.c_str(), label.c_str(),
                 r.steps.size(), km, to_string(r.status), wall, a->out.c_str());
     if (!r.message.empty()) std::printf("  %s\n", r.message.c_str());
     PrintRunWarnings(label, r);
+    bool plots_ok = true;
+    if (rail_steps) {
+      const std::vector<RailStepSummary> rail = WriteRailStepFiles(a->out, r);
+      plots_ok = !a->plot || std::system(("'" + python + "' '" + PlotScript("plot_rail_steps.py") + "' '" + a->out +
+                                          "'").c_str()) == 0;
+      WriteRailStepReport(a->out, sc, rail, label,
+                          !a->plot ? "--no-plot" : plots_ok ? "" : "scripts/plot_rail_steps.py failed");
+      PrintRailStepSummary(rail);
+      std::printf("rail steps: %s/rail_steps.csv, %s/rail_steps.md\n", a->out.c_str(), a->out.c_str());
+    }
     ThrowIfIncomplete({{label, &r}});
+    if (!plots_ok)
+      throw IncompleteResult(ExitCode::PartialResult, "the rail plots were not produced (scripts/plot_rail_steps.py failed)");
   });
 }
 

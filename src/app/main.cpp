@@ -19,7 +19,9 @@ int main(int argc, char** argv) {
   bool allow_partial = false;
   app.add_flag("--allow-partial", allow_partial,
                "exit 0 even when the result is incomplete (the output still says what is missing)");
-  app.fallthrough();  // --allow-partial may follow the subcommand
+  // the progress display of the long commands on stderr (progress.hpp); read by each command (ProgressModeOf)
+  app.add_flag("--quiet", "no progress display on stderr (results on stdout, warnings and errors are unchanged)");
+  app.fallthrough();  // --allow-partial and --quiet may follow the subcommand
   conforma::cli::RegisterContactCommand(app);
   conforma::cli::RegisterSweepCommand(app);
   conforma::cli::RegisterProfileCommand(app);

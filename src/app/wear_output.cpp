@@ -3,13 +3,14 @@
 
 #include "conforma/dynamic_kinematics.hpp"
 
-#include <unistd.h>
-
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
+#include <memory>
 
 #include "conforma/error.hpp"
 #include "exit_status.hpp"
@@ -106,16 +107,26 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
 }
 
 WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
-                                       const std::string& label, int steps_total, double* wall_s) {
+                                       const std::string& label, int steps_total, double* wall_s,
+                                       ProgressMode mode) {
   BeginWearOutput(dir);
-  options.on_step = [dir, label, steps_total](const WearStepRecord& s) {
+  // wheel steps restart at 1 in every rail step: counted over all rail steps
+  const int rail_steps = !scenario.rail_steps.fixed && scenario.rail_steps.steps > 0 ? scenario.rail_steps.steps : 1;
+  auto progress = std::make_shared<ProgressReporter>(label, static_cast<double>(steps_total) * rail_steps, "step",
+                                                     mode, std::cerr);
+  options.on_step = [dir, steps_total, progress](const WearStepRecord& s) {
     WriteWearStep(dir, s);
-    PrintProgress(label, s, steps_total);
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "%s%.0f km, Sd %.2f qR %.2f mm, %.1f s/step",
+                  s.rail_step > 0 ? ("rail step " + std::to_string(s.rail_step) + ", ").c_str() : "", s.km,
+                  s.dimensions.sd_m * 1e3, s.dimensions.qr_m * 1e3, s.wall_s);
+    progress->Update(static_cast<double>(s.rail_step) * std::max(0, steps_total) + s.step, detail);
   };
   // every provider of the scenario, the time-domain `dynamic` one included (dynamic_kinematics.hpp)
   if (!options.kinematics_factory) options.kinematics_factory = &MakeWearKinematics;
   const auto t0 = std::chrono::steady_clock::now();
   WearSimulationResult result = RunWearSimulation(scenario, options);
+  progress->Finish();
   *wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   FinishWearOutput(dir, result);
   return result;
@@ -153,17 +164,6 @@ void ThrowIfIncomplete(const std::vector<std::pair<std::string, const WearSimula
     if (!reason.empty()) what += (what.empty() ? "" : "; ") + label + ": " + reason;
   }
   if (!what.empty()) throw IncompleteResult(ExitCode::PartialResult, what);
-}
-
-void PrintProgress(const std::string& label, const WearStepRecord& s, int steps_total) {
-  if (!isatty(fileno(stderr))) return;
-  const int width = 30;
-  const int done = steps_total > 0 ? std::min(width, width * s.step / steps_total) : width;
-  std::fprintf(stderr, "\r[%s] [%s%s] step %d/%d  %.0f km  Sd %.2f qR %.2f mm  %.1f s/step   ", label.c_str(),
-               std::string(done, '#').c_str(), std::string(width - done, '.').c_str(), s.step, steps_total, s.km,
-               s.dimensions.sd_m * 1e3, s.dimensions.qr_m * 1e3, s.wall_s);
-  if (s.step >= steps_total) std::fprintf(stderr, "\n");
-  std::fflush(stderr);
 }
 
 }  // namespace conforma::cli

@@ -1,12 +1,13 @@
 #pragma once
 // Output of a wear run (conforma wear / conforma compare): steps.csv, profiles of every step (.prw/.prr + CSV),
-// wear distributions, and a one-line progress display on a terminal.
+// wear distributions, and the progress display on stderr (progress.hpp).
 #include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "conforma/wear_simulation.hpp"
+#include "progress.hpp"
 
 namespace conforma::cli {
 
@@ -16,8 +17,6 @@ void BeginWearOutput(const std::string& dir);
 void WriteWearStep(const std::string& dir, const WearStepRecord& step);
 // steps.csv (all steps), the initial profiles (wheel_step_000, rail_{left,right}_000) and the rails of the rail steps.
 void FinishWearOutput(const std::string& dir, const WearSimulationResult& result);
-// "\r[model] step j/n  km ..." on stderr when it is a terminal.
-void PrintProgress(const std::string& label, const WearStepRecord& step, int steps_total);
 // One line per step that lost wheel contacts or used a kinematics fallback ("WARNING: [label] step j: ..."), to
 // stdout, so that a run that lost contacts never reads as a clean one.
 void PrintRunWarnings(const std::string& label, const WearSimulationResult& result);
@@ -27,8 +26,10 @@ void WriteLostContactWarnings(std::ostream& md, const std::string& label, const 
 // Throws IncompleteResult(PartialResult) naming every (label, result) whose IncompleteReason is not empty; call it
 // after all outputs are written.
 void ThrowIfIncomplete(const std::vector<std::pair<std::string, const WearSimulationResult*>>& runs);
-// One run with all of the above in dir (progress labelled `label`, out of steps_total); its wall time in *wall_s.
+// One run with all of the above in dir; its wall time in *wall_s. Progress on stderr in `mode`, labelled `label`,
+// one unit per wheel step out of steps_total per rail step (detail: km, Sd, qR, wall time of the step).
 WearSimulationResult RunWearWithOutput(const Scenario& scenario, WearSimulationOptions options, const std::string& dir,
-                                       const std::string& label, int steps_total, double* wall_s);
+                                       const std::string& label, int steps_total, double* wall_s,
+                                       ProgressMode mode);
 
 }  // namespace conforma::cli

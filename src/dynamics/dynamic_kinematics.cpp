@@ -88,7 +88,7 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
   o.model.gravity_m_s2 = qo.gravity_m_s2;
   o.model.cant_base_m = qo.cant_base_m;
   o.model.free_axle_rotation = qo.free_axle_rotation;
-  o.model.axle_torque_Nm = qo.axle_torque_Nm;
+  o.model.axle_torque_Nm = qo.axle_torque_Nm + tc.axle_torque_Nm;
   o.duration_s = run_s;
   o.output_interval_s = d.sample_interval_s;
   o.stepper = d.stepper == "dopri5" ? DynamicsStepper::Dopri5 : DynamicsStepper::Rosenbrock4;

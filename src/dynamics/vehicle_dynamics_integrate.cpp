@@ -286,6 +286,7 @@ DynamicsResult SimulateVehicleDynamics(const VehicleDynamicsModel& model, const 
         t = t_out;
         record(t);
         ++next_output;
+        if (options.on_progress) options.on_progress(t, t_end, std::string());
       }
     } else {
       ++result.rejected_steps;

@@ -289,8 +289,10 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
   for (auto& v : lut.nodes) v.resize(per_side);
   std::string first_error;  // of the lowest node index (the same message for any thread count)
   long first_error_node = -1;
+  ProgressCounter progress(options.on_progress, 2.0 * static_cast<double>(per_side));
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (long k = 0; k < 2 * per_side; ++k) {
+    const ProgressCounter::Unit counted(progress, "node " + std::to_string(k));
     const Side side = k < per_side ? Side::Left : Side::Right;
     const long n = k % per_side;
     const size_t iq = n % nq, ipsi = (n / nq) % npsi, iy = n / (nq * npsi);

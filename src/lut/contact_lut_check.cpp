@@ -102,8 +102,10 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
   EquilibriumOptions eo;
   eo.max_touching_contact_angle_rad = options.contact.max_touching_contact_angle_rad;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  ProgressCounter progress(options.on_progress, static_cast<double>(samples.size()));
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (long k = 0; k < static_cast<long>(samples.size()); ++k) {
+    const ProgressCounter::Unit counted(progress, "sample " + std::to_string(k));
     const Sample& s = samples[k];
     Outcome& o = out[k];
     WheelContactOptions c = options.contact;

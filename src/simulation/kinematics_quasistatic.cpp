@@ -58,6 +58,7 @@ struct BogieContext {
   std::array<double, 2> Q{{0.0, 0.0}};  // [Left, Right]
   double half_wheelbase = 1.25, kx = 0.0, ky = 0.0, bx = 1.0, k_sec_yaw = 0.0;
   double m_w = 0.0, m_b_plus_c = 0.0, carbody_yaw = 0.0;
+  double axle_torque_Nm = 0.0;  // applied to every axle: options' + the class's (TrackClass::axle_torque_Nm)
   // Admissible wheelset shifts: up to derailment_margin_m beyond the flange-contact shift on either side.
   double y_min = -std::numeric_limits<double>::infinity(), y_max = std::numeric_limits<double>::infinity();
   int contact_evaluations = 0;
@@ -100,7 +101,7 @@ void BogieResiduals(const BogieContext& ctx, const double* p, const WheelsetForc
     r[3 * j] = (f[j].lateral_N + Fy - ctx.m_w * ctx.a_nc) / ctx.Q0;
     r[3 * j + 1] = (f[j].yaw_moment_Nm + Mz) / (ctx.Q0 * ctx.b0);
     r[3 * j + 2] = ctx.options->free_axle_rotation
-                       ? (f[j].axle_torque_Nm - ctx.options->axle_torque_Nm) / (ctx.Q0 * ctx.r0)
+                       ? (f[j].axle_torque_Nm - ctx.axle_torque_Nm) / (ctx.Q0 * ctx.r0)
                        : p[3 * j + 2];
     bogie_lateral -= Fy;
     bogie_yaw -= Mz + x * Fy;
@@ -327,6 +328,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   require_finite(track_class.curve_radius_m, "track class curve_radius_m");
   require_non_negative(track_class.friction_coefficient, "track class friction_coefficient");
   require_finite(track_class.cant_m, "track class cant_m");
+  require_finite(track_class.axle_torque_Nm, "track class axle_torque_Nm");
   if (track_class.curve_radius_m != 0.0 && std::fabs(track_class.curve_radius_m) < 5.0 * vehicle.wheelbase_m)
     throw InputError("track class '" + track_class.name + "': curve radius too small for the bogie wheelbase");
 
@@ -354,6 +356,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   base.r0 = vehicle.nominal_wheel_radius_m;
   base.b0 = vehicle.contact_half_distance_m;
   base.Q0 = vehicle.static_wheel_load_N(g);
+  base.axle_torque_Nm = options.axle_torque_Nm + track_class.axle_torque_Nm;
   // load transfer: the outer wheel (-y side for a_nc > 0) carries more
   const double dQ = vehicle.carried_mass_per_wheelset_kg() * result.unbalanced_acceleration_m_s2 *
                     vehicle.load_transfer_height_m / (2.0 * vehicle.contact_half_distance_m);
@@ -521,7 +524,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   // Axle speed per phase from the torque balance (§12.3): every wheelset of the vehicle has the same pose,
   // velocities and loads at a given phase, so each phase is solved once.
   AxleRollingSpeedOptions rolling;
-  rolling.applied_torque_Nm = options.axle_torque_Nm;
+  rolling.applied_torque_Nm = base.axle_torque_Nm;
   rolling.torque_tolerance_Nm = options.residual_tolerance * base.Q0 * base.r0;
   std::map<int, double> axle_speed;  // phase -> Omega
   for (const WheelsetQuasiStaticReport& w : result.wheelsets) {

@@ -192,8 +192,10 @@ void ParseVehicle(const Reader& r, const YAML::Node& n, VehicleParameters* v) {
   }
 }
 
-TrackClass ParseClass(const Reader& r, const YAML::Node& n, const std::string& where, double friction) {
-  r.check_keys(n, where, {"name", "radius_m", "cant_mm", "speed_kmh", "share", "friction"});
+TrackClass ParseClass(const Reader& r, const YAML::Node& n, const std::string& where, double friction,
+                      const VehicleParameters& vehicle) {
+  r.check_keys(n, where,
+               {"name", "radius_m", "cant_mm", "speed_kmh", "share", "friction", "acceleration_m_s2", "axle_torque_Nm"});
   TrackClass c;
   c.friction_coefficient = friction;
   if (n["name"]) c.name = r.text(n["name"], where + ".name");
@@ -204,6 +206,15 @@ TrackClass ParseClass(const Reader& r, const YAML::Node& n, const std::string& w
   if (!n["share"]) r.fail(where, "missing share");
   c.share = r.number(n["share"], where + ".share");
   if (n["friction"]) c.friction_coefficient = r.number(n["friction"], where + ".friction");
+  if (n["acceleration_m_s2"] && n["axle_torque_Nm"]) r.fail(where, "give acceleration_m_s2 or axle_torque_Nm, not both");
+  if (n["axle_torque_Nm"]) c.axle_torque_Nm = r.number(n["axle_torque_Nm"], where + ".axle_torque_Nm");
+  if (n["acceleration_m_s2"]) {
+    // Every axle driven (braked) alike: the torque that accelerates the mass the axle carries, T = m a r0
+    // (vehicle.hpp carried_mass_per_wheelset_kg, wheelset included; rotating inertia and running resistance
+    // neglected; docs/physics-reference.md §12.3).
+    const double a = r.number(n["acceleration_m_s2"], where + ".acceleration_m_s2");
+    c.axle_torque_Nm = vehicle.carried_mass_per_wheelset_kg() * a * vehicle.nominal_wheel_radius_m;
+  }
   if (c.name.empty()) c.name = c.curve_radius_m == 0.0 ? "tangent" : "R" + std::to_string(int(c.curve_radius_m));
   return c;
 }
@@ -325,6 +336,13 @@ void Scenario::validate() const {
     if (!(c.speed_m_s > 0)) throw InputError(where + "track class " + c.name + ": speed must be > 0");
     if (!(c.share >= 0)) throw InputError(where + "track class " + c.name + ": share must be >= 0");
     if (!(c.friction_coefficient > 0)) throw InputError(where + "track class " + c.name + ": friction must be > 0");
+    if (!std::isfinite(c.axle_torque_Nm)) throw InputError(where + "track class " + c.name + ": axle torque not finite");
+    if (c.axle_torque_Nm != 0.0 && (!kinematics.free_axle_rotation ||
+                                    (kinematics.provider != KinematicsProvider::QuasiStatic &&
+                                     kinematics.provider != KinematicsProvider::Dynamic)))
+      throw InputError(where + "track class " + c.name +
+                       ": a drive torque (acceleration_m_s2 / axle_torque_Nm) needs the quasistatic or dynamic "
+                       "provider with free_axle_rotation (the others impose the axle speed)");
     sum += c.share;
   }
   if (std::abs(sum - 1.0) > 1e-9) throw InputError(where + "track class shares do not sum to 1");
@@ -334,6 +352,8 @@ void Scenario::validate() const {
   if (!(update.total_km >= 0)) throw InputError(where + "update.total_km must be >= 0");
   if (!rail_steps.fixed && rail_steps.steps < 1) throw InputError(where + "rail.steps must be >= 1 when rail.fixed is false");
   if (!(rail_steps.cap_m > 0)) throw InputError(where + "rail.cap_mm must be > 0");
+  if (!(rail_steps.output_spacing_m >= 0 && rail_steps.output_spacing_m <= 1e-3))
+    throw InputError(where + "rail.spacing_mm must be in [0, 1] (0: the spacing of the rail before the step)");
   if (kinematics.tangent_phases < 1) throw InputError(where + "kinematics.tangent_phases must be >= 1");
   if (!(gauge_m > 1.0 && gauge_m < 2.0)) throw InputError(where + "track.gauge_mm out of range");
   if (wheel.empty() || rail.empty()) throw InputError(where + "profiles missing");
@@ -457,16 +477,18 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     if (u["max_curvature_1_m"]) s.update.max_curvature_1_m = r.number(u["max_curvature_1_m"], "update.max_curvature_1_m");
   }
   if (const YAML::Node rs = root["rail"]) {
-    r.check_keys(rs, "rail", {"fixed", "steps", "cap_mm"});
+    r.check_keys(rs, "rail", {"fixed", "steps", "cap_mm", "spacing_mm"});
     if (rs["fixed"]) s.rail_steps.fixed = r.boolean(rs["fixed"], "rail.fixed");
     if (rs["steps"]) s.rail_steps.steps = r.integer(rs["steps"], "rail.steps");
     if (rs["cap_mm"]) s.rail_steps.cap_m = 1e-3 * r.number(rs["cap_mm"], "rail.cap_mm");
+    if (rs["spacing_mm"]) s.rail_steps.output_spacing_m = 1e-3 * r.number(rs["spacing_mm"], "rail.spacing_mm");
   }
   if (root["track_classes"] && root["track_classes_csv"]) r.fail("top level", "give track_classes or track_classes_csv, not both");
   if (const YAML::Node tc = root["track_classes"]) {
     if (!tc.IsSequence()) r.fail("track_classes", "expected a list");
     for (size_t i = 0; i < tc.size(); ++i)
-      s.classes.push_back(ParseClass(r, tc[i], "track_classes[" + std::to_string(i) + "]", s.friction_coefficient));
+      s.classes.push_back(ParseClass(r, tc[i], "track_classes[" + std::to_string(i) + "]", s.friction_coefficient,
+                                      s.vehicle));
   } else if (const YAML::Node csv = root["track_classes_csv"]) {
     s.classes = ClassesFromCsv(r, csv, s.friction_coefficient);
   }

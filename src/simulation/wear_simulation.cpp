@@ -240,6 +240,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       ro.max_depth_per_step_m = scenario.rail_steps.cap_m;
       ro.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
       ro.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
+      ro.output_spacing_m = scenario.rail_steps.output_spacing_m;
       ro.step_index = k;
       std::array<Profile, 2> next = rails;
       for (int side = 0; side < 2; ++side) {

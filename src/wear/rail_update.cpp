@@ -83,6 +83,21 @@ NormalAverageResult AverageAlongNormals(const Profile& base, const std::vector<P
   return r;
 }
 
+RemovedAlongNormals MeasureRemovedAlongNormals(const Profile& base, const Profile& worn) {
+  if (base.empty() || worn.empty()) throw InputError("removed material: empty profile");
+  RemovedAlongNormals r;
+  r.depth = WearDistribution::Zero(base.length(), base.spacing());  // the node grid of AverageAlongNormals
+  for (size_t i = 0; i < r.depth.size(); ++i) {
+    const double s = r.depth.s(i);
+    const auto [t, residual] = distance_along_normal(worn, base.position(s), base.tangent(s), base.normal(s));
+    r.depth.depth_m[i] = t;
+    r.max_intersection_residual_m = std::max(r.max_intersection_residual_m, residual);
+  }
+  r.area_m2 = r.depth.area_m2();
+  r.max_depth_m = std::max(0.0, r.depth.max_depth_m());
+  return r;
+}
+
 RailStepResult UpdateRail(const Profile& rail, const std::vector<WearDistribution>& wear,
                           const std::vector<double>& weights, double passages_represented, const RailStepOptions& o) {
   const std::string step = "rail step " + std::to_string(o.step_index);
@@ -97,6 +112,7 @@ RailStepResult UpdateRail(const Profile& rail, const std::vector<WearDistributio
   require_positive(passages_represented, "passages_represented");
   require_positive(o.max_depth_per_step_m, "rail max_depth_per_step_m");
   const std::vector<double> w = normalised_weights(weights, wear.size(), "rail update");
+  r.weights = w;
   // smoothing of each distribution (mass-conserving, positively homogeneous) and their weighted mean
   std::vector<WearDistribution> smoothed;
   smoothed.reserve(wear.size());

@@ -22,6 +22,7 @@
 #include "conforma/material.hpp"
 #include "conforma/patch.hpp"
 #include "conforma/patch_solver.hpp"
+#include "conforma/progress.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma {
@@ -157,6 +158,9 @@ struct BenchOptions {
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)
   int max_repeats = 201;                     // ... but at most this many (and at least 5)
   double reference_load_tolerance = 1e-8;    // BenchReferenceOptions::load_tolerance of the exact reference
+  // progress (progress.hpp), 2 units per case: its exact reference ("reference <case>"), then its timed models
+  // ("timed <case>"); empty: none
+  ProgressFunction on_progress;
 };
 
 // Runs every model x grid x case (sequential, so that the timings are not disturbed), one exact reference per case.

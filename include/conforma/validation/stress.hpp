@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "conforma/geometry.hpp"
+#include "conforma/progress.hpp"
 
 namespace conforma {
 
@@ -52,6 +53,7 @@ struct StressOptions {
   double continuity_bound_fraction = 0.01;   // bound on |dF| as a fraction of the load (dimensionless), > 0
   double jump_distance_m = 0.1e-3;           // reference-point move along the rail counted as a jump, m, > 0
   int threads = 0;                 // OpenMP threads; 0 = the default
+  ProgressFunction on_progress;    // progress (progress.hpp), one unit per case ("case <index>"); empty: none
   void validate() const;
 };
 

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "conforma/progress.hpp"
 #include "conforma/validation/benchmark_cases.hpp"
 
 namespace conforma {
@@ -65,6 +66,8 @@ struct ThresholdOptions {
   // of paper 003 whose 18 deg threshold is examined (conformal KP vs planar KP). true: KPEC's variable eps on both
   // sides (the pipeline's default conformal model vs KPEC); there the Blanco correction changes p_max far less.
   bool variable_epsilon = false;
+  // progress (progress.hpp) of the situation sweep, one unit per situation (its name); empty: none
+  ProgressFunction on_progress;
   void validate() const;
 };
 

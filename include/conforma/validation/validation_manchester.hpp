@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "conforma/progress.hpp"
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma {
@@ -42,6 +43,7 @@ struct ManchesterOptions {
   ContactModel model = ContactModel::Conformal;  // WheelContactOptions::model
   bool creepages_from_file = true;  // use each case's xi, eta, phi (as the issue asks); else the kinematics
   int fastsim_elements = kDefaultFastsimElements;  // WheelContactOptions::fastsim_elements, >= 2
+  ProgressFunction on_progress;  // progress (progress.hpp), one unit per case ("case <id>"); empty: none
 };
 
 // Runs every case (profiles from the shared data folder `shared_data_dir`); cases are independent and run in
