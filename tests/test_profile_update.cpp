@@ -297,8 +297,8 @@ Profile vertical_face_profile(const std::function<double(double)>& face_y) {
   return Profile::FromPoints(pts, ProfileKind::Wheel, fit, "vertical face");
 }
 
-// Folds are reversals of y beyond fold_tolerance_m (1 um): sub-um wiggles of a vertical face (what the refit after an
-// overhang cut leaves: the Aosta run stopped on 0.45 um peak to peak; here 0.5 um) are not folds, a face leaning back by 5 um is -- although
+// Folds are reversals of y beyond fold_tolerance_m (1 um): sub-um wiggles of a vertical face (what the former smoothing
+// refit after an overhang cut left: the Aosta run stopped on 0.45 um peak to peak; here 0.5 um) are not folds, a face leaning back by 5 um is -- although
 // each of its 0.05 mm segments leans by only 8e-4 of its length (the former per-segment rule, 1e-3, missed it).
 TEST(ProfileUpdate, FoldsAreReversalsOfYBeyondTheTolerance) {
   const Profile base = vertical_face_profile([](double) { return 0.0; });
@@ -317,6 +317,122 @@ TEST(ProfileUpdate, FoldsAreReversalsOfYBeyondTheTolerance) {
   ProfileValidityOptions bad;
   bad.fold_tolerance_m = 0.0;
   EXPECT_THROW(CheckProfileValidity(base, base, bad), InputError);
+}
+
+
+// Signed distance of q from the profile along its outward normal at the closest point (> 0: outside the body) [m].
+double outside_distance(const Profile& profile, const Eigen::Vector2d& q) {
+  const double s = profile.closest_s(q);
+  return (q - profile.position(s)).dot(profile.normal(s));
+}
+
+// Area enclosed between two profiles with the same end points: the polygon old -> new reversed (shoelace) [m^2].
+double area_between(const Profile& before, const Profile& after) {
+  std::vector<Eigen::Vector2d> loop = before.samples();
+  const std::vector<Eigen::Vector2d> a = after.samples();
+  loop.insert(loop.end(), a.rbegin(), a.rend());
+  double twice = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector2d& p = loop[i];
+    const Eigen::Vector2d& q = loop[(i + 1) % loop.size()];
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * std::abs(twice);
+}
+
+// A wheel-like step: tread z = 10 mm (18 mm long), rounded (2 mm, convex) into a 6 mm straight face that leans
+// `lean` from the vertical (y grows downwards), rounded (2 mm, concave) out to a 18 mm flat; built from the heading
+// angle of each 0.05 mm segment, so the face meets both arcs tangentially.
+Profile leaning_face_profile(double lean) {
+  const double h = 0.05e-3, r = 2e-3, turn = 0.5 * kPi - lean;
+  std::vector<Eigen::Vector2d> pts{{-20e-3, 10e-3}};
+  double heading = 0.0;  // of the tangent, from +y
+  auto walk = [&](double length, double curvature) {  // curvature > 0 turns counter-clockwise
+    const int n = static_cast<int>(std::lround(length / h));
+    const double ds = length / n;
+    for (int k = 0; k < n; ++k) {  // exact chord of the arc (or the line)
+      const double mid = heading + 0.5 * curvature * ds;
+      const double chord = curvature == 0.0 ? ds : 2.0 * std::sin(0.5 * curvature * ds) / curvature;
+      pts.push_back(pts.back() + chord * Eigen::Vector2d(std::cos(mid), std::sin(mid)));
+      heading += curvature * ds;
+    }
+  };
+  walk(18e-3, 0.0);
+  walk(r * turn, -1.0 / r);
+  walk(6e-3, 0.0);
+  walk(r * turn, 1.0 / r);
+  walk(18e-3, 0.0);
+  ProfileFitOptions fit;
+  fit.function_of_y = false;
+  return Profile::FromPoints(pts, ProfileKind::Wheel, fit, "leaning face");
+}
+
+// A flange face leaning 5 degrees from the vertical (y grows by tan 5 deg per unit of descent) loses a band around the
+// middle of the face (Gaussian in z, sigma 1.5 mm, 0.4 mm at its centre, no depth smoothing): the band's lateral shift
+// grows downwards by up to 0.16 per unit of descent, more than the face's 0.087, so the face above the band overhangs
+// by up to ~0.1 mm and is cut (a large cut, ~0.2 mm^2). The profile after the update must be single-valued in y at a
+// tolerance 1000x below ProfileValidityOptions::fold_tolerance_m (the rounding of the cut corner must not leave the
+// 1-um wiggles the Aosta run stopped on), lie inside the old profile and inside the profile the removal alone gives
+// (the cut and its rounding remove material only), and the area between the old and the new profile must be the
+// removed area plus the reported cut area.
+TEST(ProfileUpdate, OverhangCutOfAFaceWornPastVerticalIsSingleValuedAndInside) {
+  const Profile wheel = leaning_face_profile(5.0 * kPi / 180.0);
+  const double z_mid = wheel.position(0.5 * wheel.length()).y();  // the middle of the face
+  WearDistribution acc = WearDistribution::ForProfile(wheel, 0.05e-3);
+  for (size_t i = 0; i < acc.size(); ++i) {
+    const Eigen::Vector2d p = wheel.position(acc.s(i));
+    acc.depth_m[i] = 1e-6 * gauss(p.y(), z_mid, 1.5e-3);
+  }
+  ProfileUpdateOptions o;
+  o.smoothing.cutoff_wavelength_m = 0.0;
+  const ProfileUpdateResult r = UpdateProfile(wheel, acc, 1.0, o);
+  ASSERT_EQ(r.status, ProfileUpdateStatus::Updated) << r.message;
+  RecordProperty("overhang_cut_mm2", sci(r.overhang_cut_area_m2 * 1e6));
+  RecordProperty("removed_mm2", sci(r.removed_area_m2 * 1e6));
+  EXPECT_GT(r.overhang_cut_area_m2, 0.1e-6);  // a large cut
+  // single-valued in y at 1 nm
+  ProfileValidityOptions strict;
+  strict.fold_tolerance_m = 1e-9;
+  const ProfileValidity v = CheckProfileValidity(r.profile, wheel, strict);
+  EXPECT_EQ(v.y_folds_after, 0) << v.reason;
+  const std::vector<Eigen::Vector2d> pts = r.profile.samples();
+  double worst_back = 0.0;  // largest step back in y along the samples
+  for (size_t i = 1; i < pts.size(); ++i) worst_back = std::max(worst_back, pts[i - 1].x() - pts[i].x());
+  RecordProperty("worst_y_step_back_m", sci(worst_back));
+  EXPECT_LE(worst_back, 0.0);
+  // material removed only: no sample outside the old profile (1 nm), nor outside the profile the removal alone gives
+  double worst_outside = -1.0;
+  for (const auto& q : pts) worst_outside = std::max(worst_outside, outside_distance(wheel, q));
+  RecordProperty("worst_outside_old_m", sci(worst_outside));
+  EXPECT_LE(worst_outside, 1e-9);
+  const Profile removed_only = RemoveAlongNormal(wheel, r.removed_depth);  // folded: what the cut starts from
+  double worst_outside_removed = -1.0;
+  for (const auto& q : pts) worst_outside_removed = std::max(worst_outside_removed, outside_distance(removed_only, q));
+  RecordProperty("worst_outside_removed_only_m", sci(worst_outside_removed));
+  // (the refit is an interpolating cubic through the rounded samples: next to the ends of the rounding it bulges by
+  // up to ~30 nm, 3e-4 of the 0.1 mm spacing; the former smoothing-spline rounding put the profile 8 um outside)
+  EXPECT_LE(worst_outside_removed, 0.1e-6);
+  // bookkeeping: the area between the profiles is the removed area plus the cut area
+  const double between = area_between(wheel, r.profile);
+  RecordProperty("area_between_mm2", sci(between * 1e6));
+  EXPECT_NEAR(between, r.removed_area_m2 + r.overhang_cut_area_m2, 0.005 * (r.removed_area_m2 + r.overhang_cut_area_m2));
+}
+
+
+// The samples of a profile taken back as nodes (what UpdateProfile does after cutting the refit of an overhang cut)
+// give the same curve: the nodes exactly, the length to the polyline's (chord) error, points between nodes to ~nm.
+TEST(ProfileUpdate, FromArcLengthSamplesKeepsTheNodes) {
+  const Profile arc = circle_arc(0.3, 0.2);
+  const std::vector<Eigen::Vector2d> nodes = arc.samples();
+  const Profile back = Profile::FromArcLengthSamples(nodes, arc.kind(), "samples");
+  const std::vector<Eigen::Vector2d> again = back.samples();
+  ASSERT_EQ(again.size(), nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) EXPECT_EQ(again[i], nodes[i]);
+  // chord vs arc: relative length deficit h^2 / (24 R^2) = 4.6e-9 at h = 0.1 mm, R = 0.3 m
+  EXPECT_NEAR(back.length(), arc.length(), 1e-8 * arc.length());
+  for (double s = 0.5 * back.spacing(); s < back.length(); s += 37.3 * back.spacing())
+    EXPECT_LT((back.position(s) - arc.position(s)).norm(), 1e-9);
+  EXPECT_THROW(Profile::FromArcLengthSamples({nodes[0], nodes[1], nodes[2]}, arc.kind()), InputError);
 }
 
 }  // namespace

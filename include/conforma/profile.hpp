@@ -47,6 +47,12 @@ class Profile {
   // Throws InputError when the points are too few, not finite, or the curve self-intersects.
   static Profile FromPoints(std::vector<Eigen::Vector2d> points_m, ProfileKind kind,
                             const ProfileFitOptions& options = {}, const std::string& source = "points");
+  // Builds the profile from samples taken as they are, as the nodes s_i = i h of the stored splines (no refit, no
+  // resampling; h = polyline length / (n - 1)). Only for samples that are uniform in arc length up to rounding, e.g.
+  // a profile's own samples() moved by far less than its spacing; a refit would not keep a property of the samples
+  // (such as y never decreasing) between its new nodes. Throws InputError for fewer than 4 or non-finite samples.
+  static Profile FromArcLengthSamples(const std::vector<Eigen::Vector2d>& samples, ProfileKind kind,
+                                      const std::string& source = "samples");
 
   ProfileKind kind() const { return kind_; }
   const std::string& source() const { return source_; }

@@ -13,7 +13,10 @@
 //      re-parametrisation by arc length (Profile::FromPoints, input order = arc-length order).
 //   3. Validity checks of the new profile (no self-intersection, no new folds in y, curvature bound). A wheel
 //      whose flange face is worn past vertical (a new fold in y) gets the overhanging lip cut back
-//      (CutOverhangs, ProfileUpdateOptions::cut_overhangs; the cut area is reported) and is checked again.
+//      (CutOverhangs, ProfileUpdateOptions::cut_overhangs), the corner at the top of the cut rounded by an opening
+//      with a 1.25 mm disc (material removed only), refitted, and cut again on the refit's samples, which are kept as
+//      the new profile's nodes (Profile::FromArcLengthSamples): single-valued in y by construction. The area removed
+//      by the cut and its rounding is reported; the profile is checked again.
 #include <limits>
 #include <string>
 
@@ -66,8 +69,8 @@ struct ProfileValidityOptions {
   double max_curvature_1_m = 1.0e3;  // 1/m, > 0
   // Fold criterion: the profile must stay single-valued in y; a reversal of y along the curve counts as a fold once
   // y has moved back by more than this from its running extreme (hysteresis): wiggles of a vertical flange face
-  // below it are rounding, not an overhang. 1 um: below profile-measurement resolution, above the ~0.5 um the
-  // spline refit after an overhang cut leaves on a vertical face.
+  // below it are rounding, not an overhang. 1 um: below profile-measurement resolution. (A profile after an
+  // overhang cut has no reversal at all: UpdateProfile cuts the refitted samples again.)
   double fold_tolerance_m = 1.0e-6;  // m, > 0
 };
 // The checks stop at the first failure (non-finite points, self-intersection, new folds, kink); the fields of the
@@ -93,7 +96,9 @@ struct ProfileUpdateOptions {
   double output_spacing_m = 0.0;  // arc-length spacing of the new profile, m, >= 0; 0 = that of the old one
   // A profile that was single-valued in y (no folds) and folds after the removal (a flange face worn past
   // vertical: the lip above overhangs the worn band below) gets the lip cut back to the vertical through the
-  // band (CutOverhangs): contact would wear it off at once. The cut area is reported; false: invalid instead.
+  // band (CutOverhangs): contact would wear it off at once. The corner at the top of the cut is rounded (radius
+  // 1.25 mm, material removed only) and the result is single-valued in y by construction (see step 3 above). The
+  // area removed by the cut and its rounding is reported; false: invalid instead.
   bool cut_overhangs = true;
   int step_index = 0;             // only for messages ("wear step 3: ...")
 };
@@ -113,7 +118,8 @@ struct ProfileUpdateResult {
   double distance_step_m = 0.0;  // distance the step represents = distance_represented * scale_factor, m
   double max_depth_m = 0.0;      // max of removed_depth, m (= cap unless max_distance_step_m binds)
   double removed_area_m2 = 0.0;  // integral of removed_depth ds, m^2
-  // m^2, extra area removed by cutting overhangs (ProfileUpdateOptions::cut_overhangs); 0 when no cut was made
+  // m^2, extra area removed by cutting overhangs and rounding the cut (ProfileUpdateOptions::cut_overhangs): the area
+  // between the profile after the removal and the final one; 0 when no cut was made
   double overhang_cut_area_m2 = 0.0;
   DepthSmoothingResult smoothing;  // diagnostics of step 1 (before scaling)
   ProfileValidity validity;        // of the new profile (default when NoWear or the removal failed)

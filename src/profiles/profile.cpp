@@ -165,6 +165,37 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
   return out;
 }
 
+Profile Profile::FromArcLengthSamples(const std::vector<Eigen::Vector2d>& samples, ProfileKind kind,
+                                      const std::string& source) {
+  if (samples.size() < 4)
+    throw InputError(source, 0, "a profile needs at least 4 samples, got " + std::to_string(samples.size()));
+  double length = 0.0;
+  for (size_t i = 0; i < samples.size(); ++i) {
+    if (!samples[i].allFinite()) throw InputError(source, 0, "sample " + std::to_string(i + 1) + " is not finite");
+    if (i) length += (samples[i] - samples[i - 1]).norm();
+  }
+  if (!(length > 0.0)) throw InputError(source, 0, "the samples have zero length");
+  const int n = static_cast<int>(samples.size());
+  Profile out;
+  out.kind_ = kind;
+  out.source_ = source;
+  out.length_ = length;
+  out.h_ = length / (n - 1);
+  out.y_.resize(n);
+  out.z_.resize(n);
+  std::vector<double> sgrid(n);
+  for (int i = 0; i < n; ++i) {
+    out.y_[i] = samples[i].x();
+    out.z_[i] = samples[i].y();
+    sgrid[i] = i * out.h_;
+  }
+  out.y2_ = natural_spline_second_derivatives(sgrid, out.y_);
+  out.z2_ = natural_spline_second_derivatives(sgrid, out.z_);
+  out.y_min_ = *std::min_element(out.y_.begin(), out.y_.end());
+  out.y_max_ = *std::max_element(out.y_.begin(), out.y_.end());
+  return out;
+}
+
 void Profile::locate(double s, int& i, double& t) const {
   const int n = static_cast<int>(y_.size());
   const double u = std::clamp(s, 0.0, length_) / h_;

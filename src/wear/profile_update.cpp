@@ -54,8 +54,9 @@ Profile RemoveAlongNormal(const Profile& profile, const WearDistribution& depth,
                                output_spacing_m > 0.0 ? output_spacing_m : profile.spacing(), 0.0, context);
 }
 
-// RMS distance of the spline refitted through a cut profile to the cut points [m]
-constexpr double kOverhangCutRoundingRms = 5e-6;
+// Radius of the rounding of the corners an overhang cut leaves [m]: the profile validity allows |curvature| up to
+// 1/(1 mm) (ProfileValidityOptions::max_curvature_1_m); 1.25 mm keeps the refitted spline clear of it.
+constexpr double kOverhangCutRoundingRadius = 1.25e-3;
 
 double CutOverhangs(std::vector<Eigen::Vector2d>* points) {
   std::vector<Eigen::Vector2d>& p = *points;
@@ -74,10 +75,98 @@ double CutOverhangs(std::vector<Eigen::Vector2d>* points) {
 
 namespace {
 
+// Rounds the convex corners an overhang cut leaves at the top of each cut face, removing material only.
+// `uncut` and `cut` are the same samples before and after CutOverhangs. Around each run of moved samples, from up to
+// 2 R above it (while |dy/dz| <= 1) down to its foot, where z strictly decreases along s (the curve is a graph
+// y = f(z) there, material towards -y), the body {y <= f(z)} is replaced by its morphological opening with a disc of
+// radius R (the union of the discs of radius R inside it; J. Serra, Image Analysis and Mathematical Morphology, 1982). For a hypograph that is the grey-scale opening with the half-disc
+// b(u) = sqrt(R^2 - u^2) - R, |u| <= R (a disc lies under f iff its upper half does):
+//   e(z) = min_|u|<=R [f(z + u) - b(u)],   o(z) = max_|u|<=R [e(z - u) + b(u)]   (over the samples z_j),
+// o <= f at every sample (the rounding only removes material); o = f wherever a disc of radius R touches from inside
+// (the rest of the face, any rounding of radius >= R, whatever its slope), and a convex corner becomes an arc of
+// radius R. A window cut short (by the reach or where z stops decreasing) only drops constraints: o stays <= f and
+// touches f at least where the full opening does. Only the rounding connected to the run is kept.
+void RoundCutCorners(const std::vector<Eigen::Vector2d>& uncut, std::vector<Eigen::Vector2d>* cut, double radius) {
+  std::vector<Eigen::Vector2d>& p = *cut;
+  const size_t n = p.size();
+  const double reach = 2.0 * radius;
+  auto cap = [radius](double u) { return std::sqrt(std::max(0.0, radius * radius - u * u)) - radius; };  // b(u)
+  for (size_t a = 0; a < n;) {
+    if (p[a].x() == uncut[a].x()) {
+      ++a;
+      continue;
+    }
+    size_t b = a;  // run of moved samples [a, b]
+    while (b + 1 < n && p[b + 1].x() != uncut[b + 1].x()) ++b;
+    // window: the face above the run (z strictly decreasing along s, |dy/dz| <= 1, within `reach`) down to the
+    // sample after the run (the foot of the cut face, y equal to the face's). A window ending lower would end on a
+    // boundary maximum of f, which an opening cuts; where the graph is steeper, a disc touches f near the end of its
+    // half-disc, whose slope is unbounded there, and the discrete dilation below would lose accuracy.
+    size_t lo = a, hi = std::min(b + 1, n - 1);
+    while (lo > 0 && p[lo - 1].y() > p[lo].y() && p[lo].x() - p[lo - 1].x() <= p[lo - 1].y() - p[lo].y() &&
+           p[lo - 1].y() - p[a].y() <= reach)
+      --lo;
+    bool graph = true;  // the run itself must be a graph over z (a cut face descending along s)
+    for (size_t i = lo; i < hi && graph; ++i) graph = p[i + 1].y() < p[i].y();
+    if (graph && hi > lo) {
+      // the graph densified (kDense points per segment, linear): a disc touching f between two samples of a steep
+      // stretch is then seen, so the opening of a stretch whose radius is >= R leaves it (to a few nm)
+      constexpr int kDense = 8;
+      const size_t m = (hi - lo) * kDense + 1;
+      std::vector<double> z(m), f(m), e(m);
+      for (size_t k = 0; k < m; ++k) {
+        const size_t i = lo + k / kDense;
+        const double t = static_cast<double>(k % kDense) / kDense;
+        const Eigen::Vector2d q = t == 0.0 ? p[i] : (1.0 - t) * p[i] + t * p[i + 1];
+        z[k] = q.y();
+        f[k] = q.x();
+      }
+      // z decreases with k: the points within R of z[k] are a contiguous range [first, last]
+      size_t first = 0, last = 0;
+      for (size_t k = 0; k < m; ++k) {
+        while (z[first] - z[k] > radius) ++first;
+        while (last + 1 < m && z[k] - z[last + 1] <= radius) ++last;
+        double v = std::numeric_limits<double>::infinity();
+        for (size_t j = first; j <= last; ++j) v = std::min(v, f[j] - cap(z[j] - z[k]));
+        e[k] = v;
+      }
+      std::vector<double> o(hi - lo + 1);
+      first = last = 0;
+      for (size_t i = lo; i <= hi; ++i) {
+        const size_t k = (i - lo) * kDense;
+        while (z[first] - z[k] > radius) ++first;
+        while (last + 1 < m && z[k] - z[last + 1] <= radius) ++last;
+        double v = -std::numeric_limits<double>::infinity();
+        for (size_t j = first; j <= last; ++j) v = std::max(v, e[j] + cap(z[k] - z[j]));
+        o[i - lo] = std::min(v, p[i].x());  // <= f already up to rounding; keep it exact
+      }
+      // keep the rounding of this corner only: from the run up to the first sample above it that the opening leaves
+      // (to 1 nm)
+      size_t top = a;
+      while (top > lo && o[top - 1 - lo] < p[top - 1].x() - 1e-9) --top;
+      for (size_t i = top; i <= hi; ++i) p[i].x() = o[i - lo];
+    }
+    a = b + 1;
+  }
+}
+
+// Area enclosed between two polylines with the same end points, `outer` followed by `inner` reversed (shoelace),
+// positive when `inner` lies towards the material of `outer` (to the right of its direction) [m^2].
+double area_between(const std::vector<Eigen::Vector2d>& outer, const std::vector<Eigen::Vector2d>& inner) {
+  std::vector<Eigen::Vector2d> loop = outer;
+  loop.insert(loop.end(), inner.rbegin(), inner.rend());
+  double twice = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector2d& q = loop[(i + 1) % loop.size()];
+    twice += loop[i].x() * q.y() - q.x() * loop[i].y();
+  }
+  return -0.5 * twice;  // clockwise loop (material to the right of `outer`) has a negative signed area
+}
+
 // Reversals of the lateral coordinate y along the polyline (a profile single-valued in y has none), with
 // hysteresis: a reversal counts only once y has moved back by more than `tolerance` from its running extreme in the
-// current direction. Sub-tolerance wiggles of a vertical face (the spline refit after an overhang cut leaves
-// ~0.5 um) are not folds; a face leaning back by more than the tolerance is, however gently it leans.
+// current direction. Sub-tolerance wiggles of a vertical face (a measured profile's noise, say) are not folds; a face
+// leaning back by more than the tolerance is, however gently it leans.
 int count_y_folds(const std::vector<Eigen::Vector2d>& p, double tolerance) {
   if (p.empty()) return 0;
   int folds = 0, direction = 0;  // +1: y increasing, -1: decreasing, 0: not yet moved beyond the tolerance
@@ -194,10 +283,21 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
   r.validity = CheckProfileValidity(updated, profile, o.validity);
   if (!r.validity.valid && o.cut_overhangs && r.validity.y_folds_before == 0 &&
       r.validity.y_folds_after > r.validity.y_folds_before) {
-    std::vector<Eigen::Vector2d> points = updated.samples();
-    r.overhang_cut_area_m2 = CutOverhangs(&points);
-    try {  // the rounding keeps the corners of the cut from being kinks
-      updated = RefitInArcLengthOrder(std::move(points), profile.kind(), updated.spacing(), kOverhangCutRoundingRms, step);
+    // Cut, round the cut's corners (material removed only), refit (interpolating) at the old spacing, and cut the
+    // refitted samples again: the spline between the nodes of the refit is not monotone where the curvature jumps,
+    // so its samples may step back in y by a little (nm); the second cut moves them by that little only, far below
+    // the spacing, and the samples are kept as the new profile's nodes as they are, single-valued in y by
+    // construction (the Aosta run stopped on 1.2-1.3 um steps back the earlier smoothing-spline rounding left).
+    const std::vector<Eigen::Vector2d> uncut = updated.samples();
+    std::vector<Eigen::Vector2d> points = uncut;
+    CutOverhangs(&points);
+    RoundCutCorners(uncut, &points, kOverhangCutRoundingRadius);
+    try {
+      std::vector<Eigen::Vector2d> refit =
+          RefitInArcLengthOrder(std::move(points), profile.kind(), updated.spacing(), 0.0, step).samples();
+      CutOverhangs(&refit);
+      updated = Profile::FromArcLengthSamples(refit, profile.kind(), step);
+      r.overhang_cut_area_m2 = area_between(uncut, updated.samples());
       r.validity = CheckProfileValidity(updated, profile, o.validity);
     } catch (const InputError& e) {
       r.validity.valid = false;
