@@ -219,6 +219,11 @@ struct WearSimulationResult {
 // (S1002: the flange root lies between y = -26 and -20 mm).
 struct WheelWearDepths {
   double tread_m = 0.0, flange_m = 0.0;  // largest depth (>= 0, m) over the tread / the flange; 0: no wear there
+  // Separate hollows of the tread: local maxima of the depth across the tread (y > flange root) whose topographic
+  // prominence (height above the higher of the lowest depths between it and a deeper point on either side, or the
+  // tread's ends) is at least max(20 um, 10 % of tread_m). A measured worn tread has one; grooves left by a few
+  // sampled contact positions show as several (issue 16, item 5). 0: no tread wear.
+  int tread_hollows = 0;
 };
 WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m = -0.025);
 

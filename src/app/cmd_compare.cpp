@@ -43,8 +43,8 @@ std::vector<PublishedCheck> WriteReport(const std::string& dir, const Scenario& 
   // lost wheel contacts first, where nobody can miss them (issue 13: a run that lost contacts is not "completed")
   for (const ModelRun& r : runs) WriteLostContactWarnings(md, r.name, r.result);
   md << "| model | steps | km | km per step (mean) | run time s | Sd mm | Sh mm | qR mm | tread wear mm | flange wear mm | "
-        "failed contacts | kinematics fallbacks | status |\n";
-  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "tread hollows | failed contacts | kinematics fallbacks | status |\n";
+  md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   char buf[512];
   for (const ModelRun& r : runs) {
     const auto& st = r.result.steps;
@@ -54,10 +54,13 @@ std::vector<PublishedCheck> WriteReport(const std::string& dir, const Scenario& 
     for (const WearStepRecord& s : st) fallbacks += s.kinematics_fallbacks;
     const int lost = LostContacts(r.result);
     const std::string status = std::string(to_string(r.result.status)) + (lost > 0 ? ", contacts lost" : "");
-    std::snprintf(buf, sizeof buf, "| %s | %zu | %.0f | %.0f | %.1f | %.3f | %.3f | %.3f | %.3f | %.3f | %d | %d | %s |\n",
+    // separate hollows of the tread after the last step (WheelWearDepths::tread_hollows; a measured tread has one)
+    const int hollows = st.empty() ? 0 : MeasureWheelWear(r.result.initial_wheel, st.back().wheel).tread_hollows;
+    std::snprintf(buf, sizeof buf,
+                  "| %s | %zu | %.0f | %.0f | %.1f | %.3f | %.3f | %.3f | %.3f | %.3f | %d | %d | %d | %s |\n",
                   r.name.c_str(), st.size(), km, st.empty() ? 0.0 : km / st.size(), r.wall_s, d.sd_m * 1e3, d.sh_m * 1e3,
                   d.qr_m * 1e3, st.empty() ? 0.0 : st.back().tread_wear_m * 1e3,
-                  st.empty() ? 0.0 : st.back().flange_wear_m * 1e3, lost, fallbacks, status.c_str());
+                  st.empty() ? 0.0 : st.back().flange_wear_m * 1e3, hollows, lost, fallbacks, status.c_str());
     md << buf;
   }
   for (const ModelRun& r : runs)

@@ -19,8 +19,31 @@ const char* to_string(WearSimulationStatus status) {
   return "?";
 }
 
+namespace {
+
+// Local maxima of `depth` whose topographic prominence is at least `min_prominence` (WheelWearDepths::tread_hollows).
+int CountProminentMaxima(const std::vector<double>& depth, double min_prominence) {
+  int count = 0;
+  const size_t n = depth.size();
+  for (size_t i = 0; i < n; ++i) {
+    const bool left_lower = i == 0 || depth[i - 1] < depth[i];
+    const bool right_not_higher = i + 1 == n || depth[i + 1] <= depth[i];
+    if (!left_lower || !right_not_higher) continue;  // a plateau counts once, at its left end
+    // lowest depth on each side before a deeper point (or the end)
+    double low_left = depth[i], low_right = depth[i];
+    for (size_t j = i; j-- > 0 && depth[j] <= depth[i];) low_left = std::min(low_left, depth[j]);
+    for (size_t j = i + 1; j < n && depth[j] <= depth[i]; ++j) low_right = std::min(low_right, depth[j]);
+    // a plateau's twin (equal depth further on) is the same hollow: it is not deeper, so the right scan passes it
+    if (depth[i] - std::max(low_left, low_right) >= min_prominence) ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
 WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, double flange_root_y_m) {
   WheelWearDepths d;
+  std::vector<double> tread_depth;  // across the tread, in arc-length order
   const double h = 0.1e-3;
   const std::vector<Eigen::Vector2d> w = worn.sample(h);
   const int n = static_cast<int>(std::floor(initial.length() / h));
@@ -49,9 +72,14 @@ WheelWearDepths MeasureWheelWear(const Profile& initial, const Profile& worn, do
       if ((c - q).squaredNorm() < (p - q).squaredNorm()) p = c;
     }
     const double depth = (q - p).dot(normal);  // > 0: the worn surface lies inside (material removed)
-    if (q[0] > flange_root_y_m) d.tread_m = std::max(d.tread_m, depth);
-    else d.flange_m = std::max(d.flange_m, depth);
+    if (q[0] > flange_root_y_m) {
+      d.tread_m = std::max(d.tread_m, depth);
+      tread_depth.push_back(std::max(depth, 0.0));
+    } else {
+      d.flange_m = std::max(d.flange_m, depth);
+    }
   }
+  if (d.tread_m > 0.0) d.tread_hollows = CountProminentMaxima(tread_depth, std::max(20e-6, 0.1 * d.tread_m));
   return d;
 }
 
