@@ -182,6 +182,7 @@ struct WearStepRecord {
   double max_depth_m = 0.0;          // of the removed depth, m (= cap unless the last step was shortened)
   WheelDimensions dimensions;        // of the new profile
   double tread_wear_m = 0.0, flange_wear_m = 0.0;  // m, against the scenario's initial wheel; see WheelWearDepths
+  int tread_hollows = 0;              // separate hollows of the tread (WheelWearDepths::tread_hollows)
   double wall_s = 0.0;               // wall-clock time of the step, s (not reproducible)
   Profile wheel;                     // the new wheel profile
   // raw (unsmoothed, before the edge taper) wheel wear rate of the step [m/m]

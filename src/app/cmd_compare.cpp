@@ -54,8 +54,8 @@ std::vector<PublishedCheck> WriteReport(const std::string& dir, const Scenario& 
     for (const WearStepRecord& s : st) fallbacks += s.kinematics_fallbacks;
     const int lost = LostContacts(r.result);
     const std::string status = std::string(to_string(r.result.status)) + (lost > 0 ? ", contacts lost" : "");
-    // separate hollows of the tread after the last step (WheelWearDepths::tread_hollows; a measured tread has one)
-    const int hollows = st.empty() ? 0 : MeasureWheelWear(r.result.initial_wheel, st.back().wheel).tread_hollows;
+    // separate hollows of the tread after the last step (a measured worn tread has one)
+    const int hollows = st.empty() ? 0 : st.back().tread_hollows;
     std::snprintf(buf, sizeof buf,
                   "| %s | %zu | %.0f | %.0f | %.1f | %.3f | %.3f | %.3f | %.3f | %.3f | %d | %d | %d | %s |\n",
                   r.name.c_str(), st.size(), km, st.empty() ? 0.0 : km / st.size(), r.wall_s, d.sd_m * 1e3, d.sh_m * 1e3,

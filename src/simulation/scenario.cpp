@@ -381,11 +381,7 @@ void ParsePublished(const Reader& r, const YAML::Node& n, PublishedStudy* p) {
     PublishedModelFigures f;
     f.model = entry.first.as<std::string>();
     const std::string where = "published.models." + f.model;
-    try {
-      ParseContactModel(f.model);
-    } catch (const InputError& e) {
-      r.fail(where, e.what());
-    }
+    ModelFromName(r, f.model, where);  // a model name --models accepts
     const YAML::Node v = entry.second;
     r.check_keys(v, where, {"km", "tread_wear_mm", "flange_wear_mm", "sd", "sh", "qr"});
     const auto positive = [&](const char* key, double scale) {

@@ -254,6 +254,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.dimensions = MeasureWheelDimensions(wheel);
       const WheelWearDepths wd = MeasureWheelWear(scenario.wheel, wheel);
       rec.tread_wear_m = wd.tread_m;
+      rec.tread_hollows = wd.tread_hollows;
       rec.flange_wear_m = wd.flange_m;
       rec.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       result.steps.push_back(rec);
