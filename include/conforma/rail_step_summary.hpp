@@ -40,6 +40,9 @@ struct RailStepSummary {
   std::array<RailSideStepSummary, 2> side;          // [Left, Right]
 };
 
+// r_k, the rail of side (0 left, 1 right) during rail step k (0-based): the initial rail, or the result of step k-1.
+const Profile& RailBeforeStep(const WearSimulationResult& result, size_t k, int side);
+
 // One entry per rail step whose two rails were both computed (empty with a fixed rail).
 std::vector<RailStepSummary> SummariseRailSteps(const WearSimulationResult& result);
 

@@ -56,9 +56,6 @@ std::vector<RailStepSummary> WriteRailStepFiles(const std::string& dir, const We
     out << "\n";
   }
   // depth of every virtual rail and of the averaged rail, along r_k (arc length and position of r_k's nodes)
-  const auto rail_before = [&r](size_t k, int side) -> const Profile& {
-    return k == 0 ? r.initial_rail[side] : r.rails[k - 1][side];
-  };
   for (size_t k = 0; k < rail.size(); ++k) {
     const std::string name = dir + "/rail_step_" + Num3(static_cast<int>(k + 1)) + "_depth.csv";
     std::ofstream d(name);
@@ -78,7 +75,7 @@ std::vector<RailStepSummary> WriteRailStepFiles(const std::string& dir, const We
     d << "\n" << std::setprecision(10);
     for (int side = 0; side < 2; ++side) {
       const RailSideStepSummary& o = rail[k].side[side];
-      const Profile& base = rail_before(k, side);
+      const Profile& base = RailBeforeStep(r, k, side);
       for (size_t i = 0; i < o.removed.depth.size(); ++i) {
         const double s = o.removed.depth.s(i);
         const Eigen::Vector2d q = base.position(s);

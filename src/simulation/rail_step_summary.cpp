@@ -5,6 +5,10 @@
 
 namespace conforma {
 
+const Profile& RailBeforeStep(const WearSimulationResult& r, size_t k, int side) {
+  return k == 0 ? r.initial_rail[side] : r.rails[k - 1][side];
+}
+
 std::vector<RailStepSummary> SummariseRailSteps(const WearSimulationResult& r) {
   std::vector<RailStepSummary> out;
   const size_t n = std::min(r.rails.size(), r.rail_results.size() / 2);
@@ -26,7 +30,7 @@ std::vector<RailStepSummary> SummariseRailSteps(const WearSimulationResult& r) {
     }
     for (int side = 0; side < 2; ++side) {
       const RailStepResult& rr = r.rail_results[2 * k + side];
-      const Profile& before = k == 0 ? r.initial_rail[side] : r.rails[k - 1][side];
+      const Profile& before = RailBeforeStep(r, k, side);
       RailSideStepSummary& o = s.side[side];
       o.status = rr.status;
       o.valid = rr.status == ProfileUpdateStatus::Updated && rr.validity.valid;
