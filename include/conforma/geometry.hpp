@@ -61,6 +61,11 @@ struct TrackSetup {
   double rail_inclination_rad = 0.0;
   std::array<Profile, 2> wheel;              // [Left, Right], each in the right-side convention; wheel profiles
   std::array<Profile, 2> rail;               // [Left, Right], each in the right-side convention; rail profiles
+  // Roller rig (issue 18, paper 000): [Left, Right] nominal radius R_r of the roller that replaces each rail, m;
+  // 0 (default): a rail, straight along x. > 0: the "rail" profile is the roller's profile (same convention and
+  // placement as a rail, its top at z = 0) turned about an axis parallel to the track y axis, R_r below the top, so
+  // the surface drops by about x^2 / (2 R_r(y)) along x, with R_r(y) = R_r + z_r(y) the roller's rolling radius.
+  std::array<double, 2> roller_radius_m{0.0, 0.0};
   void validate() const;                     // throws InputError naming the parameter
 };
 // Same wheel and rail profile on both sides.

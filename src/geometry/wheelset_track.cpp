@@ -28,6 +28,8 @@ void TrackSetup::validate() const {
   require_positive(nominal_radius_m[1], "TrackSetup.nominal_radius_m[right]");
   require_finite(rail_inclination_rad, "TrackSetup.rail_inclination_rad");
   if (std::abs(rail_inclination_rad) > 0.2) throw InputError("TrackSetup.rail_inclination_rad must be within +-0.2 rad");
+  require_non_negative(roller_radius_m[0], "TrackSetup.roller_radius_m[left]");
+  require_non_negative(roller_radius_m[1], "TrackSetup.roller_radius_m[right]");
   for (int k = 0; k < 2; ++k) {
     const char* side = k == 0 ? "left" : "right";
     if (wheel[k].empty()) throw InputError(std::string("TrackSetup.wheel[") + side + "] is empty");
