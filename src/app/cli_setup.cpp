@@ -146,6 +146,7 @@ FrictionLaw ContactArgs::friction_law_from_options() const {
   };
   const double mu = friction;
   std::vector<Parameter> needed;
+  needed.reserve(3);  // (also keeps GCC 12's -Wnonnull false positive on assigning to an empty vector away)
   switch (law->kind) {
     case FrictionLawKind::Constant: break;
     case FrictionLawKind::F1aExponential: needed = {{"--mu-ratio", &mu_ratio}, {"--slip-decay", &slip_decay}}; break;
