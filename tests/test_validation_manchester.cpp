@@ -73,3 +73,25 @@ TEST(ManchesterPipeline, IdenticalResultsForOneAndTwoThreads) {
     EXPECT_EQ(one[i].fs_N, two[i].fs_N);
   }
 }
+
+// The exact model (BEM + Kalker's exact steady rolling, docs/physics-reference.md §14) is CONTACT's method; with the
+// file's creepages applied at CONTACT's own contact reference point (ManchesterCreepageOrigin::ContactReferencePoint)
+// it must reproduce CONTACT's creep forces to the discretisation level. Case 1 (y = 0, two lobes) is left out: there
+// the file's y_cp is not the point CONTACT's creepages refer to (docs/physics-reference.md §14.4).
+TEST(ManchesterPipeline, ExactCreepForcesEqualContactsAtContactsReferencePoint) {
+  ManchesterOptions o;
+  o.model = ContactModel::Exact;
+  o.creepage_origin = ManchesterCreepageOrigin::ContactReferencePoint;
+  const auto rows = RunManchesterA22(CONFORMA_SHARED_DATA, o);
+  ASSERT_EQ(rows.size(), 21u);
+  double worst_x = 0.0, worst_s = 0.0;
+  for (const auto& r : rows) {
+    if (r.reference.id == 1) continue;
+    ASSERT_EQ(r.report.status, WheelContactStatus::Ok) << "case " << r.reference.id;
+    EXPECT_LE(std::fabs(r.err_fx_N), std::max(10.0, 0.01 * std::fabs(r.reference.fx_N))) << "case " << r.reference.id;
+    EXPECT_LE(std::fabs(r.err_fs_N), std::max(10.0, 0.01 * std::fabs(r.reference.fs_N))) << "case " << r.reference.id;
+    worst_x = std::max(worst_x, std::fabs(r.err_fx_N));
+    worst_s = std::max(worst_s, std::fabs(r.err_fs_N));
+  }
+  std::printf("exact at CONTACT's reference point, cases 2-21: max |dFx| %.1f N, max |dFs| %.1f N\n", worst_x, worst_s);
+}

@@ -56,6 +56,16 @@ std::vector<ManchesterReferenceCase> ReadManchesterReference(const std::string& 
   return cases;
 }
 
+namespace {
+// The main patch of a wheel: the largest normal force (nullptr without a patch).
+const PatchReport* MainPatch(const WheelContactReport& report) {
+  const PatchReport* main = nullptr;
+  for (const PatchReport& p : report.patches)
+    if (!main || p.fn_N > main->fn_N) main = &p;
+  return main;
+}
+}  // namespace
+
 std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_data_dir, const ManchesterOptions& options) {
   const std::string examples = shared_data_dir + "/profiles/contact/examples/";
   ProfileReadOptions wheel_read, rail_read;
@@ -89,10 +99,17 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
     o.creepages = {c.xi, c.eta, c.phi_per_mm * 1e3};
     const WheelsetVelocity velocity{2.0, 0.0, 0.0, 2.0 / 0.46};
     r.report = SolveWheelContact(geometry, Side::Left, pose, velocity, o);
+    if (options.creepages_from_file && options.creepage_origin == ManchesterCreepageOrigin::ContactReferencePoint) {
+      // the creepages moved from CONTACT's reference point to ours (validation_manchester.hpp); our reference point
+      // is that of the first solve (xi changes the push-down of the total-force balance only slightly)
+      if (const PatchReport* ours = MainPatch(r.report)) {
+        const double y_cp_ours_m = -ours->y_contact_rail_m;  // CONTACT's rail y (see the frame mapping above)
+        o.creepages.longitudinal = c.xi + o.creepages.spin_per_m * (y_cp_ours_m - c.y_cp_rail_mm * 1e-3);
+        r.report = SolveWheelContact(geometry, Side::Left, pose, velocity, o);
+      }
+    }
     r.patches = static_cast<int>(r.report.patches.size());
-    const PatchReport* main = nullptr;
-    for (const PatchReport& p : r.report.patches)
-      if (!main || p.fn_N > main->fn_N) main = &p;
+    const PatchReport* main = MainPatch(r.report);
     if (!main) continue;
     double fn = 0.0, fx = 0.0, fs = 0.0, area = 0.0;
     for (const PatchReport& p : r.report.patches) fn += p.fn_N, fx += p.fx_N, fs += p.fy_N, area += p.area_m2;

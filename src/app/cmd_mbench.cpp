@@ -14,16 +14,23 @@ void RegisterMbenchCommand(CLI::App& app) {
   auto models = std::make_shared<std::string>("hertz,kp,kpec,conformal");
   auto data = std::make_shared<std::string>();
   auto kinematics = std::make_shared<bool>(false);
+  auto origin = std::make_shared<std::string>("ours");
   CLI::App* sub = app.add_subcommand("mbench", "Manchester benchmark A-2.2 (left wheel) against CONTACT");
   sub->add_option("--models", *models, "comma-separated models");
   sub->add_option("--data", *data, kDataHelp);
   sub->add_flag("--kinematic-creepages", *kinematics, "creepages from the kinematics instead of the file's");
-  sub->callback([models, data, kinematics, sub]() {
+  sub->add_option("--creepage-origin", *origin,
+                  "where the file's creepages apply: ours (at our contact reference point, default) or contact (moved "
+                  "from CONTACT's reference point y_cp to ours, xi' = xi + phi (y_cp,ours - y_cp,CONTACT))")
+      ->check(CLI::IsMember({"ours", "contact"}));
+  sub->callback([models, data, kinematics, origin, sub]() {
     std::stringstream ss(*models);
     for (std::string name; std::getline(ss, name, ',');) {
       ManchesterOptions o;
       o.model = ParseContactModel(name);
       o.creepages_from_file = !*kinematics;
+      o.creepage_origin = *origin == "contact" ? ManchesterCreepageOrigin::ContactReferencePoint
+                                               : ManchesterCreepageOrigin::OurReferencePoint;
       ProgressReporter progress("mbench " + name, 0.0, "", ProgressModeOf(sub), std::cerr);
       o.on_progress = progress.Function();
       const auto rows = RunManchesterA22(DataDirOr(*data), o);

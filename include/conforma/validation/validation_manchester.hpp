@@ -39,9 +39,19 @@ struct ManchesterComparison {
   int patches = 0;                        // patches of the wheel
 };
 
+// Where the file's creepages are applied (with creepages_from_file).
+//   OurReferencePoint: as given, at our patch's contact reference point (the default, the figures of the goldens).
+//   ContactReferencePoint: moved from CONTACT's contact reference point y_cp to ours along the rigid-slip field
+//     w_x(y) = xi - phi y (Kalker; docs/physics-reference.md §14.4): xi' = xi + phi (y_cp,ours - y_cp,CONTACT), both
+//     in the rail-profile y of the file (CONTACT's contact-frame lateral axis of the left wheel points against it:
+//     with the other sign the exact model misses CONTACT's F_x by up to 171 N on cases 2-21, with this one by <= 5 N).
+//     eta and phi are unchanged. The two reference points are up to 2.1 mm apart (case 1), 0.8 mm on case 2.
+enum class ManchesterCreepageOrigin { OurReferencePoint, ContactReferencePoint };
+
 struct ManchesterOptions {
   ContactModel model = ContactModel::Conformal;  // WheelContactOptions::model
   bool creepages_from_file = true;  // use each case's xi, eta, phi (as the issue asks); else the kinematics
+  ManchesterCreepageOrigin creepage_origin = ManchesterCreepageOrigin::OurReferencePoint;  // see above
   int fastsim_elements = kDefaultFastsimElements;  // WheelContactOptions::fastsim_elements, >= 2
   ProgressFunction on_progress;  // progress (progress.hpp), one unit per case ("case <id>"); empty: none
 };
