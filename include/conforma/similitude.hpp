@@ -14,6 +14,7 @@
 
 namespace conforma {
 
+// ContactStress: same speed and contact stresses (force phi^2); Weight: same gravity (force phi^3). See above.
 enum class SimilitudeRule { ContactStress, Weight };
 const char* to_string(SimilitudeRule rule);            // "contact_stress", "weight"
 SimilitudeRule SimilitudeRuleFromName(const std::string& name);  // the names above; InputError otherwise
@@ -38,7 +39,7 @@ const char* to_string(SimilitudeQuantity quantity);
 // validate(): InputError unless 0 < length_factor (finite).
 struct SimilitudeOptions {
   double length_factor = 0.2;                         // phi = model / full, > 0 (1:5 rig: 0.2)
-  SimilitudeRule rule = SimilitudeRule::ContactStress;
+  SimilitudeRule rule = SimilitudeRule::ContactStress;  // which similitude (see SimilitudeRule)
   void validate() const;
 };
 

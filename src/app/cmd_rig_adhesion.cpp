@@ -1,4 +1,5 @@
-// conforma rig-adhesion --out DIR [--table FILE] [--steady-creepage X] [--roller-profile scaled_uic60|...]
+// conforma rig-adhesion --out DIR [--table FILE] [--steady-creepage X] [--max-iterations N]
+//                       [--roller-profile scaled_uic60|track_ellipse_ratio] [--no-sensitivity]
 // The adhesion tests of the 1:5 roller rig of paper 000 (Table 6; roller_rig_adhesion.hpp, _fit.hpp): Kalker's linear
 // slope of each test beside the measured slope, the friction-law fits (one law per condition, and per test) against
 // the measured maximum and steady adhesion coefficients, and the similitude factors of the 1:5 scale
@@ -25,6 +26,7 @@ namespace {
 struct RigAdhesionArgs {
   std::string out, table, roller_profile = "scaled_uic60";
   double steady_creepage = 0.10;
+  int max_iterations = 200;
   bool sensitivity = true;
 };
 
@@ -146,6 +148,7 @@ void Run(const RigAdhesionArgs& a) {
                                : RollerProfileChoice::ScaledUic60;
   RollerRigFitOptions fit;
   fit.steady_creepage = a.steady_creepage;
+  fit.max_iterations = a.max_iterations;
   fit.validate();
   const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
   const RollerRigCurvatures alt = RollerRigCentredCurvatures(alt_rig);
@@ -255,6 +258,7 @@ void RegisterRigAdhesionCommand(CLI::App& app) {
   sub->add_option("--out", a->out, "output folder (report.md and CSV files)")->required();
   sub->add_option("--table", a->table, "Table 6 CSV (default: validation/data/roller_rig_000_table6.csv)");
   sub->add_option("--steady-creepage", a->steady_creepage, "creepage at which the steady coefficient is taken");
+  sub->add_option("--max-iterations", a->max_iterations, "Levenberg-Marquardt iterations per fit");
   sub->add_option("--roller-profile", a->roller_profile, "scaled_uic60 or track_ellipse_ratio (B of the rig ellipse)");
   sub->add_flag("--sensitivity,!--no-sensitivity", a->sensitivity, "run the steady-creepage sensitivity fits (default on)");
   sub->callback([a]() { Run(*a); });

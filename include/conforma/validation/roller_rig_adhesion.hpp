@@ -36,6 +36,7 @@ struct RollerRigAdhesionTest {
 // condition; '#' comment lines). InputError naming file and line for a malformed row or a value out of range.
 std::vector<RollerRigAdhesionTest> ReadRollerRigAdhesionTable(const std::string& path);
 
+// ScaledUic60, TrackEllipseRatio: the two choices of B described at the top of this file.
 enum class RollerProfileChoice { ScaledUic60, TrackEllipseRatio };
 const char* to_string(RollerProfileChoice choice);  // "scaled_uic60", "track_ellipse_ratio"
 
