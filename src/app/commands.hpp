@@ -19,6 +19,7 @@ void RegisterValidateCommand(CLI::App& app);   // conforma validate: wear simula
 void RegisterTrackCommand(CLI::App& app);      // conforma track: track irregularities from a PSD
 void RegisterDynamicsCommand(CLI::App& app);   // conforma dynamics: time-domain lateral vehicle dynamics, eigenvalues
 void RegisterLutCommand(CLI::App& app);        // conforma lut: contact look-up table build / info / eval / check
+void RegisterRigAdhesionCommand(CLI::App& app);  // conforma rig-adhesion: roller-rig adhesion tests (paper 000)
 
 // Run-time files of the commands (conforma/data_paths.hpp), resolved when a command runs, not when it is declared
 // (src/app/run_time_paths.cpp):
