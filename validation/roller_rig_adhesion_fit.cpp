@@ -1,13 +1,16 @@
 // Friction-law identification from paper 000 Table 6 (conforma/validation/roller_rig_adhesion_fit.hpp,
-// docs/physics-reference.md §7.5): Levenberg-Marquardt on transformed parameters (log mu_s, logit A, log B) with
-// forward-difference Jacobians; the creep-curve peak by a log-spaced grid and golden-section refinement.
+// docs/physics-reference.md §7.5): Levenberg-Marquardt (Ceres, central differences) on transformed parameters
+// (log mu_s, logit A, log B); the creep-curve peak by a log-spaced grid and Brent's minimisation (Boost.Math).
 #include "conforma/validation/roller_rig_adhesion_fit.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include <Eigen/Dense>
+#include <boost/math/tools/minima.hpp>
+#include <ceres/ceres.h>
 
 #include "conforma/error.hpp"
 
@@ -32,7 +35,7 @@ struct Curve {
   }
 };
 
-// Peak of the creep curve on (xi_min, xi_max]: grid in log xi, then golden section around the best grid point.
+// Peak of the creep curve on (xi_min, xi_max]: grid in log xi, then Brent's minimisation around the best grid point.
 void CurvePeak(const Curve& curve, const RollerRigFitOptions& fit, double* xi_peak, double* mu_peak) {
   const double lo = std::log(1e-4), hi = std::log(fit.peak_search_max);
   const int n = fit.peak_grid_points;
@@ -46,69 +49,51 @@ void CurvePeak(const Curve& curve, const RollerRigFitOptions& fit, double* xi_pe
     *xi_peak = fit.peak_search_max, *mu_peak = best_mu;
     return;
   }
-  double a = lo + (hi - lo) * std::max(best - 1, 0) / (n - 1), b = lo + (hi - lo) * (best + 1) / (n - 1);
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  double f1 = curve(std::exp(x1)), f2 = curve(std::exp(x2));
-  for (int it = 0; it < 40; ++it) {  // bracket 0.618^40 ~ 4e-9 of a grid cell in log xi
-    if (f1 > f2) {
-      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = curve(std::exp(x1));
-    } else {
-      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = curve(std::exp(x2));
-    }
-  }
-  const double x = 0.5 * (a + b), f = curve(std::exp(x));
+  const double a = lo + (hi - lo) * std::max(best - 1, 0) / (n - 1), b = lo + (hi - lo) * (best + 1) / (n - 1);
+  const auto [x, minus_f] = boost::math::tools::brent_find_minima(
+      [&](double t) { return -curve(std::exp(t)); }, a, b, std::numeric_limits<double>::digits / 2);  // ~1e-8 in log xi
+  const double f = -minus_f;
   *xi_peak = std::exp(x);
   *mu_peak = std::max({f, best_mu});
   if (best_mu > f) *xi_peak = std::exp(lo + (hi - lo) * best / (n - 1));
 }
 
-// Levenberg-Marquardt on unconstrained parameters q: residuals r(q); returns the iteration count.
+// Residuals of a fit as a Ceres cost (numeric central differences; the creep curve is a FASTSIM evaluation).
+struct FitCost {
+  std::function<Eigen::VectorXd(const Eigen::VectorXd&)> residuals;
+  int parameters = 0;
+  bool operator()(double const* const* q, double* r) const {
+    const Eigen::VectorXd out = residuals(Eigen::Map<const Eigen::VectorXd>(q[0], parameters));
+    for (Eigen::Index i = 0; i < out.size(); ++i) r[i] = out[i];
+    return out.allFinite();
+  }
+};
+
+// Levenberg-Marquardt (Ceres) on the unconstrained parameters q; returns the iteration count.
 int LevenbergMarquardt(const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& residuals, Eigen::VectorXd* q,
                        int max_iterations, bool* converged) {
-  Eigen::VectorXd r = residuals(*q);
-  double cost = r.squaredNorm(), lambda = 1e-3;
-  *converged = false;
-  int it = 0;
-  for (; it < max_iterations; ++it) {
-    const int m = static_cast<int>(r.size()), n = static_cast<int>(q->size());
-    Eigen::MatrixXd J(m, n);
-    for (int j = 0; j < n; ++j) {
-      Eigen::VectorXd qj = *q;
-      const double h = 1e-6 * std::max(1.0, std::abs(qj[j]));
-      qj[j] += h;
-      J.col(j) = (residuals(qj) - r) / h;
-    }
-    const Eigen::MatrixXd JtJ = J.transpose() * J;
-    const Eigen::VectorXd g = J.transpose() * r;
-    bool accepted = false;
-    for (int tries = 0; tries < 12 && !accepted; ++tries) {
-      Eigen::MatrixXd M = JtJ;
-      M.diagonal() += lambda * (JtJ.diagonal().array() + 1e-12).matrix();
-      const Eigen::VectorXd step = -M.ldlt().solve(g);
-      const Eigen::VectorXd qn = *q + step;
-      const Eigen::VectorXd rn = residuals(qn);
-      const double cn = rn.squaredNorm();
-      if (std::isfinite(cn) && cn < cost) {
-        const double gain = cost - cn;
-        *q = qn, r = rn;
-        const double old = cost;
-        cost = cn;
-        lambda = std::max(lambda * 0.3, 1e-9);
-        accepted = true;
-        // stop when the step or the relative cost decrease is negligible (the errors are then fixed to ~1e-4 %)
-        if (step.norm() < 1e-7 || gain < 1e-8 * std::max(old, 1e-30)) *converged = true;
-      } else {
-        lambda *= 10.0;
-      }
-    }
-    if (!accepted || cost < 1e-20) {
-      *converged = true;  // no descent left from this point (a minimum to the step tolerance) or an exact fit
-      break;
-    }
-    if (*converged) break;
-  }
-  return it + 1;
+  const int n = static_cast<int>(q->size()), m = static_cast<int>(residuals(*q).size());
+  ceres::NumericDiffOptions diff_options;
+  diff_options.relative_step_size = 1e-6;
+  auto* cost = new ceres::DynamicNumericDiffCostFunction<FitCost, ceres::CENTRAL>(new FitCost{residuals, n},
+                                                                                 ceres::TAKE_OWNERSHIP, diff_options);
+  cost->AddParameterBlock(n);
+  cost->SetNumResiduals(m);
+  std::vector<double> x(q->data(), q->data() + n);
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, x.data());
+  ceres::Solver::Options options;
+  options.max_num_iterations = max_iterations;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.num_threads = 1;
+  options.function_tolerance = 1e-8;  // relative cost decrease: the errors are then fixed to ~1e-4 %
+  options.parameter_tolerance = 1e-10;
+  options.gradient_tolerance = 1e-14;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  *converged = summary.IsSolutionUsable() && summary.termination_type == ceres::CONVERGENCE;
+  if (summary.IsSolutionUsable()) *q = Eigen::Map<const Eigen::VectorXd>(x.data(), n);
+  return static_cast<int>(summary.iterations.size());
 }
 
 void Summarise(RollerRigFit* fit) {
