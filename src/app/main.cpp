@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterTrackCommand(app);
   conforma::cli::RegisterDynamicsCommand(app);
   conforma::cli::RegisterLutCommand(app);
+  conforma::cli::RegisterCampaignCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
