@@ -50,8 +50,10 @@ _PATH_KEYS = [("profiles", "wheel"), ("profiles", "rail"), ("wear_law",), ("rail
 
 
 class _Loader(yaml.SafeLoader):
-    """Numbers as YAML 1.2 (and yaml-cpp, the scenario reader) read them: 1e-6 is a number, 1:20 is text (YAML 1.1,
-    PyYAML's default, reads them the other way round: text and the base-60 integer 80)."""
+    """The campaign file: numbers as YAML 1.2 reads them, 1e-6 is a number and 1:20 is text (YAML 1.1, PyYAML's
+    default, reads them the other way round: text and the base-60 integer 80). The base scenario is NOT read with
+    it but as text (yaml.BaseLoader, every scalar a string): the scenario reader (yaml-cpp) gives a scalar its type
+    by key, and 50E4 is a rail there, not the number 500000."""
 
 
 _INT, _FLOAT = "tag:yaml.org,2002:int", "tag:yaml.org,2002:float"
@@ -181,6 +183,25 @@ def check_parameter_path(scenario, path, where):
             node = node[part]
 
 
+def scalar_text(value):
+    """A parameter's value as the text of a scalar of the scenario file."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return repr(value) if isinstance(value, float) else str(value)
+
+
+class TextDumper(yaml.SafeDumper):
+    """Writes the scenario's text scalars as they were (plain where YAML allows): no resolver makes it quote 0.3
+    or 50E4 as strings that would look like numbers to YAML 1.1."""
+
+
+TextDumper.yaml_implicit_resolvers = {}
+
+
+def dump_scenario(scenario):
+    return yaml.dump(scenario, Dumper=TextDumper, sort_keys=False, default_flow_style=False, allow_unicode=True)
+
+
 def set_parameter(scenario, path, value):
     parts = _split_path(path)
     node = scenario
@@ -229,7 +250,7 @@ def load_campaign(path):
     base = (path.parent / doc["base"]).resolve()
     try:
         base_text = base.read_text()
-        scenario = _load_yaml(base_text)
+        scenario = yaml.load(base_text, Loader=yaml.BaseLoader)
     except OSError as e:
         _fail(f"{where}: base", f"cannot read the base scenario {base} ({e.strerror})")
     if not isinstance(scenario, dict):
@@ -286,7 +307,7 @@ def load_campaign(path):
         assignment = dict(zip(keys, combo))
         generated = copy.deepcopy(scenario)
         for k, v in assignment.items():
-            set_parameter(generated, k, v)
+            set_parameter(generated, k, scalar_text(v))
         for ms in per_case_models:
             record = {"base_sha256": base_sha, "command": command, "models": ms, "steps": steps, "args": args,
                       "params": assignment}

@@ -77,6 +77,19 @@ def result_digest(files):
     return h.hexdigest()
 
 
+def _die_with_parent():
+    """Linux: the conforma process is killed when the worker running it dies (prctl PR_SET_PDEATHSIG), so that a
+    killed worker leaves no orphan computing a case that is rescheduled elsewhere; None elsewhere."""
+    try:
+        import ctypes
+        import signal
+
+        prctl = ctypes.CDLL(None, use_errno=True).prctl  # loaded here, before the fork
+    except (OSError, AttributeError):
+        return None
+    return lambda: prctl(1, signal.SIGKILL)  # 1: PR_SET_PDEATHSIG
+
+
 def run_case(task):
     """task: id, command, cli, scenario_yaml (text), models, steps, args, outputs, threads (OMP threads or None).
     Returns a dict: id, returncode, stdout, stderr, wall_s, host, files (relative name -> bytes), error (None or
@@ -105,7 +118,8 @@ def run_case(task):
             env["OMP_NUM_THREADS"] = str(task["threads"])
         start = time.monotonic()
         try:
-            p = subprocess.run(argv, cwd=tmp, env=env, capture_output=True, text=True)
+            p = subprocess.run(argv, cwd=tmp, env=env, capture_output=True, text=True,
+                               preexec_fn=_die_with_parent())
         except OSError as e:
             out["error"] = f"cannot run {cli}: {e.strerror}"
             return out
