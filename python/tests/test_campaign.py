@@ -205,3 +205,22 @@ def test_cli_campaign_runs_without_the_extension_and_reports(serial, cli, tmp_pa
     p = subprocess.run([cli, "campaign", "run", str(bad), "--out", str(tmp_path / "o")], env=env,
                        capture_output=True, text=True)
     assert p.returncode == 2 and "unknown key 'frictio'" in p.stderr
+
+
+def test_a_failed_case_is_recorded_and_does_not_stop_the_others(tmp_path, cli):
+    """An executable that fails the friction-0.4 case (a wrapper of the real one): the other case completes, the
+    failure is recorded with its error, a rerun skips it, --retry-failed runs it again (with the real one)."""
+    wrapper = tmp_path / "conforma-failing"
+    wrapper.write_text(f"#!/bin/sh\nif [ \"$2\" = wear ] && grep -q '^friction: 0.4$' \"$4\"; then\n"
+                       f"  echo 'injected failure' >&2; exit 3\nfi\nexec '{cli}' \"$@\"\n")
+    wrapper.chmod(0o755)
+    file = write_campaign(tmp_path, "parameters:\n  friction: [0.3, 0.4]\n")
+    out = tmp_path / "out"
+    s = conforma.campaign(file, out, workers=2, cli=str(wrapper))
+    assert (s["ran"], s["ok"], s["failed"]) == (2, 1, 1)
+    (failed,) = [r for r in s["records"].values() if r["status"] == "failed"]
+    assert failed["params"] == {"friction": 0.4} and "injected failure" in failed["error"]
+    assert {r["case_id"]: r["status"] for r in result_rows(out)} == {c: r["status"] for c, r in s["records"].items()}
+    assert conforma.campaign(file, out, cli=cli)["ran"] == 0  # a recorded failure is a complete case
+    again = conforma.campaign(file, out, cli=cli, retry_failed=True)
+    assert (again["ran"], again["ok"], again["failed"]) == (1, 2, 0)
