@@ -94,7 +94,7 @@ def write_report(folder, plots=True):
     numeric = [p for p in params if any(_float(r.get(p)) is not None for r in rows)]
     plotted = [c for c in columns if c in ("sd_mm", "qr_mm")] or [c for c in columns if c != "km"][:2]
     for p in numeric:
-        md += [f"## Against {p}", "", f"mean [min, max] (n cases) of the other parameters' combinations", "",
+        md += [f"## Against {p}", "", "mean [min, max] (n cases) of the other parameters' combinations", "",
                f"| {p} | model | " + " | ".join(plotted) + " |", "|---" * (2 + len(plotted)) + "|"]
         for model in models:
             per_col = {c: spread(rows, p, c, model) for c in plotted}
