@@ -7,7 +7,7 @@ build="${1:-$here/build}"
 packages=(cmake g++ make pkg-config libeigen3-dev libboost-dev libsuitesparse-dev libfftw3-dev libceres-dev libgtest-dev libgmock-dev
           libbenchmark-dev nlohmann-json3-dev libcli11-dev libyaml-cpp-dev python3 python3-matplotlib
           python3-numpy python3-pytest pybind11-dev python3-dev python3-setuptools python3-wheel python3-pip
-          python3-venv ccache libhdf5-dev python3-h5py)
+          python3-venv ccache libhdf5-dev python3-h5py python3-yaml python3-distributed)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

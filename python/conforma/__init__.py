@@ -23,7 +23,9 @@ emits ``conforma.IncompleteResultWarning``, or raises ``conforma.IncompleteResul
 
 Also: ``contact_at_pose`` (one wheel at a given pose and velocities), ``manchester`` (benchmark A-2.2),
 ``wear`` (the wear loop, when built; ``has_wear`` tells), ``share_dir()`` / ``scenario_path()`` (the scenarios and
-standard profile files installed with the package).
+standard profile files installed with the package), ``campaign`` / ``campaign_report`` (many wear runs of generated
+scenarios on a process pool or a Dask cluster; conforma._campaign, which needs no _core: ``conforma campaign``
+runs it without this __init__).
 """
 import os as _os
 import pathlib as _pathlib
@@ -42,6 +44,7 @@ from ._core import (  # noqa: F401
     s1002,
     wheel_dimensions,
 )
+from ._campaign import CampaignError, campaign, campaign_report  # noqa: F401  (pure Python: no _core needed)
 from ._grid import patch_grid
 from ._status import IncompleteResultError, IncompleteResultWarning, wear_problems, wheel_problems
 from ._status import flag as _flag
@@ -142,5 +145,5 @@ def scenario_path(name="default_metro"):
 
 __all__ = sorted(
     [name for name in dir(_core) if not name.startswith("_")]
-    + ["IncompleteResultError", "IncompleteResultWarning", "patch_grid", "scenario_path", "share_dir", "types",
-       "wear_problems", "wheel_problems"])
+    + ["CampaignError", "IncompleteResultError", "IncompleteResultWarning", "campaign", "campaign_report", "patch_grid",
+       "scenario_path", "share_dir", "types", "wear_problems", "wheel_problems"])

@@ -16,6 +16,9 @@ from ._core import profile_from_points as profile_from_points
 from ._core import rail as rail
 from ._core import s1002 as s1002
 from ._core import wheel_dimensions as wheel_dimensions
+from ._campaign import CampaignError as CampaignError
+from ._campaign import campaign as campaign
+from ._campaign import campaign_report as campaign_report
 from ._grid import patch_grid as patch_grid
 from ._status import IncompleteResultError as IncompleteResultError
 from ._status import IncompleteResultWarning as IncompleteResultWarning
