@@ -9,7 +9,8 @@
 // normal = rail normal there. Strips of width ds, uniform in s, cover the region plus a margin on each side.
 // Per strip: gap along the local rail normal (shifted so that its minimum over the patch is 0; the shift is
 // PatchGeometry::rigid_approach_m), A(s) = cos(alpha_w) / (2 r) (alpha_w: wheel profile slope angle at the
-// silhouette point facing the strip; docs/physics-reference.md §1.1), wheel radius r(s), alpha(s) = angle of the
+// silhouette point facing the strip; docs/physics-reference.md §1.1; on a roller + cos(delta) / (2 R_r(s)), §1.7),
+// wheel radius r(s), alpha(s) = angle of the
 // local rail normal from the reference normal (+ towards +s), x_offset(s) = lead of the silhouette point
 // relative to the wheel's vertical diametral plane (geometry.hpp).
 #include <vector>

@@ -34,8 +34,21 @@
 // are the local minima of the vertical separation (found on a coarse scan and refined by Brent's method),
 // each then refined to the minimum of the gap along the local rail normal (exactly the rigid gap; at
 // contact both minima coincide).
+//
+// WHEEL ON ROLLER (TrackSetup::roller_radius_m > 0 on a side; docs/physics-reference.md §1.7): the "rail" is a
+// surface of revolution about an axis parallel to the track y axis at (x = 0, z = -R_r) in the side frame; its
+// meridian profile is the mounted rail profile, so a profile point (eta, z_r) lies at the distance
+// R_r(eta) = R_r + z_r(eta) from the axis (the roller's rolling radius there). The search is the same 2-D search in
+// the roller's MERIDIAN coordinates (eta, zeta), zeta = |P - axis| - R_r (= z on the roller's top line x = 0): the
+// roller is the profile curve zeta = z_r(eta) there, and the wheel silhouette becomes the set of wheel points whose
+// outward normal is orthogonal to the roller's circumferential direction e_phi(P) ~ (z + R_r, 0, -x) (Newton from
+// the rail's closed form). Distances in the meridian half-plane are exact 3-D distances to the roller, so
+// NormalGap is the exact rigid gap; SilhouettePoint, VerticalGapAt, NormalGap and VerticalGapMinima return
+// (x, eta, zeta) for such a side. MinimumVerticalGap stays the vertical lowering that makes the wheel touch (the
+// meridian gap shrinks by dz cos(phi) per dz: iterated to convergence). R_r -> infinity gives the rail.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -68,6 +81,18 @@ struct TrackSetup {
   std::array<double, 2> roller_radius_m{0.0, 0.0};
   void validate() const;                     // throws InputError naming the parameter
 };
+// Half the longitudinal relative curvature, A in h = gap + A x^2 (docs/physics-reference.md §1.1, §1.7): the wheel's
+// rolling curvature in the plane of the contact normal, cos(alpha_w) / r (alpha_w = atan(wheel_slope), r its rolling
+// radius), plus on a roller (roller_rolling_radius_m > 0; 0: a rail, straight along x) the roller's, cos(delta) /
+// R_r(y) (delta = atan(rail_slope), Meusnier), halved. The one place the patch geometry and the Hertz A are built.
+inline double LongitudinalRelativeCurvature(double wheel_slope, double wheel_radius_m, double rail_slope,
+                                            double roller_rolling_radius_m) {
+  double A = std::cos(std::atan(wheel_slope)) / (2.0 * wheel_radius_m);
+  // Johnson (1985) §4.2 eq. 4.1: A = (1/R'_1 + 1/R'_2) / 2 over both bodies' curvatures along x
+  if (roller_rolling_radius_m > 0.0) A += std::cos(std::atan(rail_slope)) / (2.0 * roller_rolling_radius_m);
+  return A;
+}
+
 // Same wheel and rail profile on both sides.
 TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double rail_inclination_rad = 0.0);
 
@@ -106,7 +131,13 @@ struct RigidContactPoint {
   double wheel_theta_rad = 0.0;     // angle about the axle of the silhouette point (+ ahead)
   double wheel_lateral_curvature_per_m = 0.0;  // convex > 0
   double rail_lateral_curvature_per_m = 0.0;   // convex > 0
-  double hertz_A_per_m = 0.0;       // cos(alpha_w) / (2 r)  (alpha_w: wheel profile slope angle)
+  // cos(alpha_w) / (2 r)  (alpha_w: wheel profile slope angle), + cos(delta) / (2 R_r(y)) on a roller (§1.7)
+  double hertz_A_per_m = 0.0;
+  // Roller (roller_radius_m > 0): the roller's rolling radius R_r(y) = R_r + z_r at the contact point (distance of
+  // rail_point_m from the roller axis), m; 0 for a rail. Positions on a roller: wheel_point_m is the wheel's
+  // silhouette point, rail_point_m its nearest point on the roller (in the meridian plane through the wheel point,
+  // so its x is (R_r(y) / |P - axis|) times the wheel point's x); contact_angle_rad is measured in that plane.
+  double roller_rolling_radius_m = 0.0;
   double hertz_B_per_m = 0.0;       // (kappa_wheel + kappa_rail) / 2
 };
 
@@ -162,6 +193,10 @@ class WheelsetTrackGeometry {
   // eta of the mounted rail-profile origin in the side frame.
   double rail_origin_eta_m(Side side) const { return sides_[side_index(side)].rail_origin_eta; }
   double wheel_origin_eta_m() const { return wheel_origin_eta_; }
+  // Roller radius R_r of a side (TrackSetup::roller_radius_m; 0: a rail) and the roller's rolling radius
+  // R_r + z_r(eta) at side-frame eta of its profile (0 for a rail or outside the table).
+  double RollerRadius(Side side) const { return sides_[side_index(side)].roller_radius; }
+  double RollerRollingRadius(Side side, double eta) const;
 
   WheelContactResult RigidContact(Side side, const WheelsetPose& pose) const;
   WheelsetContactResult RigidContacts(const WheelsetPose& pose) const;
@@ -190,8 +225,12 @@ class WheelsetTrackGeometry {
   Frame SideFrame(Side side, const WheelsetPose& pose) const;
   // Silhouette point of the wheel at wheel-profile y_w (side frame); false outside the wheel table or when
   // the silhouette condition has no solution. theta, radius, slope r' optional outputs.
+  // On a roller: the point in meridian coordinates (x, eta, zeta) (WHEEL ON ROLLER above).
   bool SilhouettePoint(Side side, const Frame& frame, double y_w, Eigen::Vector3d* point, double* theta = nullptr,
                        double* radius = nullptr, double* slope = nullptr) const;
+  // The same silhouette point in the side frame (x, eta, z) (identical to SilhouettePoint for a rail).
+  bool SilhouettePointInSideFrame(Side side, const Frame& frame, double y_w, Eigen::Vector3d* point,
+                                  double* theta = nullptr, double* radius = nullptr, double* slope = nullptr) const;
   // Rail height and slope at side-frame eta; false outside the rail table.
   bool RailHeight(Side side, double eta, double* z, double* slope) const;
   // Rigid gap along the local rail normal at side-frame eta of the rail surface: the signed distance from
@@ -233,12 +272,16 @@ class WheelsetTrackGeometry {
   };
 
  private:
+  // One evaluation of the smallest (meridian, on a roller) gap minimum: MinimumVerticalGap on a rail.
+  bool MinimumGapOnce(Side side, const WheelsetPose& pose, double* gap_m, double* track_y_m,
+                      double max_contact_angle_rad) const;
   struct SideData {
     Profile mounted_rail;
     double rail_origin_eta = 0.0;
     GraphTable rail;   // in side-frame eta
     GraphTable wheel;  // in wheel-profile y_w (z = radial height z_w)
     double nominal_radius = 0.46;
+    double roller_radius = 0.0;  // R_r; 0: a rail
   };
   TrackSetup setup_;
   GeometryOptions options_;

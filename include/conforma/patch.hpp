@@ -20,9 +20,13 @@ struct PatchGeometry {
   std::vector<double> s_m;           // strip centres, relative to the reference point
   std::vector<double> gap_m;         // undeformed separation along the local rail normal at the strip's lowest point
   // A(s) in h = gap + A x^2: half the curvature of the wheel surface in the normal section along x at the
-  // strip, cos(delta(s)) / (2 r(s)) for a wheel of rolling radius r at contact angle delta (rail straight).
+  // strip, cos(delta(s)) / (2 r(s)) for a wheel of rolling radius r at contact angle delta (rail straight); on a
+  // roller plus cos(delta(s)) / (2 R_r(s)) (LongitudinalRelativeCurvature, geometry.hpp).
   std::vector<double> longitudinal_curvature_per_m;
   std::vector<double> wheel_radius_m;   // in-situ wheel rolling radius r(s) at the strip
+  // Wheel on roller (geometry.hpp): the roller's rolling radius R_r(s) = R_r + z_r(s) at the strip (its curvature is
+  // included in longitudinal_curvature_per_m); empty for a rail
+  std::vector<double> roller_radius_m;
   std::vector<double> alpha_rad;        // angle of the local rail normal from the reference normal, + towards +s
   std::vector<double> x_offset_m;       // longitudinal position of the strip's lowest gap point (yaw lead)
 

@@ -77,9 +77,12 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
     const double radius = g.setup().nominal_radius_m[side_index(side)] + z_w;
     p.s_m.push_back(s - s_ref);
     p.gap_m.push_back(gap);
-    // docs/physics-reference.md §1.1: rolling curvature of the wheel in the tilted plane, cos(alpha_w) / r
-    p.longitudinal_curvature_per_m.push_back(std::cos(std::atan(slope)) / (2.0 * radius));
+    // docs/physics-reference.md §1.1: rolling curvature of the wheel in the tilted plane, cos(alpha_w) / r; on a
+    // roller plus the roller's, cos(delta(s)) / R_r(s) (§1.7)
+    const double roller_radius = g.RollerRollingRadius(side, eta);
+    p.longitudinal_curvature_per_m.push_back(LongitudinalRelativeCurvature(slope, radius, m_r, roller_radius));
     p.wheel_radius_m.push_back(radius);
+    if (roller_radius > 0.0) p.roller_radius_m.push_back(roller_radius);
     p.alpha_rad.push_back(std::atan2(n_loc.dot(t_ref), n_loc.dot(n_ref)));
     // lead of the silhouette point relative to the wheel's vertical diametral plane (yaw lead)
     const Eigen::Vector3d circle_centre =

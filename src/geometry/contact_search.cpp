@@ -119,9 +119,16 @@ static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const Whe
                       (-2 * t3 + 3 * t2) * rt.z[j + 1] + (t3 - t2) * rt.h * rt.dz[j + 1];
     return z - zr;
   };
+  // on a roller the silhouette needs a Newton solve per point (geometry.hpp WHEEL ON ROLLER): the general path
+  const bool roller = g.RollerRadius(side) > 0.0;
+  auto scan_gap = [&](int i) {
+    if (!roller) return node_gap(i);
+    const size_t k = static_cast<size_t>(i) * stride;
+    return k < wt.size() ? vgap(wt.y0 + static_cast<double>(k) * wt.h, nullptr) : inf;
+  };
   double prev2 = inf, prev1 = inf;
   for (int i = i_lo; i <= i_hi + 1; ++i) {
-    const double cur = (i <= i_hi) ? node_gap(i) : inf;
+    const double cur = (i <= i_hi) ? scan_gap(i) : inf;
     // i-1 is a local minimum when it is finite and not above its neighbours (strictly below the left one)
     if (i - 1 >= i_lo && std::isfinite(prev1) && prev1 < prev2 && prev1 <= cur) {
       coarse.push_back({i - 1, prev1});
@@ -158,6 +165,24 @@ std::vector<WheelsetTrackGeometry::VerticalGapMinimum> WheelsetTrackGeometry::Ve
 
 bool WheelsetTrackGeometry::MinimumVerticalGap(Side side, const WheelsetPose& pose, double* gap_m,
                                                double* track_y_m, double max_contact_angle_rad) const {
+  if (!(RollerRadius(side) > 0.0)) return MinimumGapOnce(side, pose, gap_m, track_y_m, max_contact_angle_rad);
+  // Roller: the smallest meridian gap shrinks by about cos(phi) dz when the wheelset is lowered by dz (phi: the
+  // contact point's angle about the roller axis, ~ lead / R_r), so the lowering that makes the wheel touch is found
+  // by repeated lowering; each step leaves ~ (1 - cos(phi)) of the gap (~1e-5): 2-4 steps to round-off.
+  WheelsetPose p = pose;
+  double lowered = 0.0, gap = 0.0;
+  for (int it = 0; it < 20; ++it) {
+    if (!MinimumGapOnce(side, p, &gap, track_y_m, max_contact_angle_rad)) return false;
+    lowered += gap;
+    p.vertical_m = pose.vertical_m - lowered;
+    if (std::abs(gap) <= 1e-15 + 1e-13 * std::abs(lowered)) break;
+  }
+  *gap_m = lowered;
+  return true;
+}
+
+bool WheelsetTrackGeometry::MinimumGapOnce(Side side, const WheelsetPose& pose, double* gap_m, double* track_y_m,
+                                           double max_contact_angle_rad) const {
   const Frame f = SideFrame(side, pose);
   std::vector<VerticalMinimum> minima;
   const bool elastic_flange = max_contact_angle_rad < kAllContactAngles;

@@ -174,6 +174,7 @@ WheelsetTrackGeometry::WheelsetTrackGeometry(TrackSetup setup, const GeometryOpt
   for (int k = 0; k < 2; ++k) {
     SideData& d = sides_[k];
     d.nominal_radius = setup_.nominal_radius_m[k];
+    d.roller_radius = setup_.roller_radius_m[k];
     d.mounted_rail = mount_rail(setup_.rail[k], setup_.rail_inclination_rad);
     d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
     d.rail = build_table(d.mounted_rail, d.rail_origin_eta, options_.table_spacing_m, options_.max_slope, "rail");
@@ -198,8 +199,60 @@ WheelsetTrackGeometry::Frame WheelsetTrackGeometry::SideFrame(Side side, const W
   return f;
 }
 
+namespace {
+
+// Wheel on roller (geometry.hpp WHEEL ON ROLLER, docs/physics-reference.md §1.7): the wheel point P(theta) =
+// c + R (r sin, b + y_w, -r cos) whose outward normal n = R (sin, -r', -cos) is orthogonal to the roller's
+// circumferential direction at P, e_phi ~ (P_z + R_r, 0, -P_x):
+//   g(theta) = n_x - n_z P_x / (P_z + R_r) = 0,
+// solved by Newton from the rail's solution theta0 (g -> n_x, the rail's condition, for R_r -> infinity), with
+// dP/dtheta = r dn/dtheta, dn/dtheta = R (cos, 0, sin). Returns false when Newton does not converge.
+bool roller_silhouette_theta(const Eigen::Matrix3d& R, const Eigen::Vector3d& c, double r, double r_slope,
+                             double q1, double roller_radius, double* sin_theta, double* cos_theta) {
+  double th = std::atan2(*sin_theta, *cos_theta);
+  for (int it = 0; it < 30; ++it) {
+    const double st = std::sin(th), ct = std::cos(th);
+    const Eigen::Vector3d n = R * Eigen::Vector3d(st, -r_slope, -ct), dn = R * Eigen::Vector3d(ct, 0.0, st);
+    const Eigen::Vector3d P = c + R * Eigen::Vector3d(r * st, q1, -r * ct);
+    const double zc = P(2) + roller_radius;  // distance of P's height from the axis (> 0 near the roller top)
+    if (!(zc > 0.0)) return false;
+    const double g = n(0) - n(2) * P(0) / zc;
+    const double dg = dn(0) - (dn(2) * P(0) + n(2) * r * dn(0)) / zc + n(2) * P(0) * r * dn(2) / (zc * zc);
+    if (!(std::abs(dg) > 1e-12)) return false;
+    const double step = std::clamp(g / dg, -0.1, 0.1);
+    th -= step;
+    if (std::abs(step) < 1e-15) break;
+    if (it == 29) return false;
+  }
+  *sin_theta = std::sin(th);
+  *cos_theta = std::cos(th);
+  return true;
+}
+
+}  // namespace
+
 bool WheelsetTrackGeometry::SilhouettePoint(Side side, const Frame& f, double y_w, Eigen::Vector3d* point,
                                             double* theta, double* radius, double* slope) const {
+  if (!SilhouettePointInSideFrame(side, f, y_w, point, theta, radius, slope)) return false;
+  const double R_r = sides_[side_index(side)].roller_radius;
+  if (R_r > 0.0) {
+    // meridian coordinate zeta = |P - axis| - R_r = z + x^2 / (|P - axis| + z + R_r) (no cancellation for large R_r)
+    Eigen::Vector3d& p = *point;
+    const double zc = p(2) + R_r;
+    p(2) += p(0) * p(0) / (std::hypot(p(0), zc) + zc);
+  }
+  return true;
+}
+
+double WheelsetTrackGeometry::RollerRollingRadius(Side side, double eta) const {
+  const SideData& d = sides_[side_index(side)];
+  double zr;
+  if (!(d.roller_radius > 0.0) || !d.rail.eval(eta, &zr, nullptr)) return 0.0;
+  return d.roller_radius + zr;
+}
+
+bool WheelsetTrackGeometry::SilhouettePointInSideFrame(Side side, const Frame& f, double y_w, Eigen::Vector3d* point,
+                                                       double* theta, double* radius, double* slope) const {
   const SideData& d = sides_[side_index(side)];
   double z_w, r_slope;
   if (!d.wheel.eval(y_w, &z_w, &r_slope)) return false;
@@ -208,8 +261,11 @@ bool WheelsetTrackGeometry::SilhouettePoint(Side side, const Frame& f, double y_
   const double sin_gamma = f.rotation(0, 1) * r_slope / f.rho;
   if (!(std::abs(sin_gamma) < 1.0)) return false;
   const double cos_gamma = std::sqrt(1.0 - sin_gamma * sin_gamma);
-  const double sin_theta = f.sin_beta * cos_gamma + f.cos_beta * sin_gamma;
-  const double cos_theta = f.cos_beta * cos_gamma - f.sin_beta * sin_gamma;
+  double sin_theta = f.sin_beta * cos_gamma + f.cos_beta * sin_gamma;
+  double cos_theta = f.cos_beta * cos_gamma - f.sin_beta * sin_gamma;
+  if (d.roller_radius > 0.0 && !roller_silhouette_theta(f.rotation, f.centre, r, r_slope, wheel_origin_eta_ + y_w,
+                                                        d.roller_radius, &sin_theta, &cos_theta))
+    return false;
   const Eigen::Vector3d q(r * sin_theta, wheel_origin_eta_ + y_w, -r * cos_theta);
   *point = f.centre + f.rotation * q;
   if (theta) *theta = std::atan2(sin_theta, cos_theta);
@@ -313,11 +369,21 @@ RigidContactPoint WheelsetTrackGeometry::MakeContactPoint(Side side, const Frame
   c.vertical_gap_m = vertical_gap_m;
   Eigen::Vector3d pw;
   double theta = 0, radius = d.nominal_radius, slope = 0;
-  SilhouettePoint(side, f, y_w, &pw, &theta, &radius, &slope);
+  SilhouettePointInSideFrame(side, f, y_w, &pw, &theta, &radius, &slope);
   double zr = 0, mr = 0;
   RailHeight(side, eta_rail, &zr, &mr);
   c.wheel_point_m = Eigen::Vector3d(pw(0), sigma * pw(1), pw(2));
   c.rail_point_m = Eigen::Vector3d(pw(0), sigma * eta_rail, zr);
+  if (d.roller_radius > 0.0) {
+    // the roller point in the meridian plane through the wheel point, at R_r(y) = R_r + z_r from the axis:
+    // (R_r(y) sin(phi), eta, R_r(y) cos(phi) - R_r), phi the angle of the wheel point about the axis
+    const double rho = d.roller_radius + zr, zc = pw(2) + d.roller_radius, dist = std::hypot(pw(0), zc);
+    const double sin_phi = pw(0) / dist, cos_phi = zc / dist;
+    c.roller_rolling_radius_m = rho;
+    c.rail_point_m = Eigen::Vector3d(rho * sin_phi, sigma * eta_rail, zr - rho * sin_phi * sin_phi / (1.0 + cos_phi));
+    // the vertical gap: the meridian gap shrinks by cos(phi) per unit of vertical lowering
+    c.vertical_gap_m = vertical_gap_m / cos_phi;
+  }
   c.rail_profile_m = Eigen::Vector2d(eta_rail - d.rail_origin_eta, zr);
   c.rail_s_m = RailArcLength(side, eta_rail);
   double z_w = 0, wslope = 0, wkappa = 0;
@@ -335,8 +401,8 @@ RigidContactPoint WheelsetTrackGeometry::MakeContactPoint(Side side, const Frame
   const double w = u - static_cast<double>(i);
   c.rail_lateral_curvature_per_m = (1 - w) * rt.kappa[i] + w * rt.kappa[i + 1];
   // docs/physics-reference.md §1.1: A = cos(alpha_w) / (2 r) (wheel rolling curvature in the tilted plane; rail
-  // straight), B = (1/R_y^w + 1/R_y^r) / 2 with convex curvatures positive
-  c.hertz_A_per_m = std::cos(std::atan(wslope)) / (2.0 * radius);
+  // straight; on a roller + cos(delta) / (2 R_r(y)), §1.7), B = (1/R_y^w + 1/R_y^r) / 2 with convex curvatures positive
+  c.hertz_A_per_m = LongitudinalRelativeCurvature(wslope, radius, mr, c.roller_rolling_radius_m);
   c.hertz_B_per_m = 0.5 * (c.wheel_lateral_curvature_per_m + c.rail_lateral_curvature_per_m);
   return c;
 }

@@ -451,6 +451,7 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
     p.y_contact_wheel_m = point.wheel_profile_m.x();
     p.reference_s_on_rail_m = hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m;
     p.rolling_radius_m = point.rolling_radius_m;
+    p.roller_rolling_radius_m = point.roller_rolling_radius_m;
     p.lead_m = point.lead_m;
     p.approach_m = hertz ? -point.gap_m : c.patch.rigid_approach_m;
     if (!hertz && s.kp.status != KpStatus::NoContact) p.approach_m = s.kp.approach_m;
