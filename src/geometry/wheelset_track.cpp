@@ -209,7 +209,8 @@ namespace {
 // dP/dtheta = r dn/dtheta, dn/dtheta = R (cos, 0, sin). Returns false when Newton does not converge.
 bool roller_silhouette_theta(const Eigen::Matrix3d& R, const Eigen::Vector3d& c, double r, double r_slope,
                              double q1, double roller_radius, double* sin_theta, double* cos_theta) {
-  double th = std::atan2(*sin_theta, *cos_theta);
+  const double th0 = std::atan2(*sin_theta, *cos_theta);
+  double th = th0;
   for (int it = 0; it < 30; ++it) {
     const double st = std::sin(th), ct = std::cos(th);
     const Eigen::Vector3d n = R * Eigen::Vector3d(st, -r_slope, -ct), dn = R * Eigen::Vector3d(ct, 0.0, st);
@@ -220,12 +221,16 @@ bool roller_silhouette_theta(const Eigen::Matrix3d& R, const Eigen::Vector3d& c,
     const double dg = dn(0) - (dn(2) * P(0) + n(2) * r * dn(0)) / zc + n(2) * P(0) * r * dn(2) / (zc * zc);
     if (!(std::abs(dg) > 1e-12)) return false;
     const double step = std::clamp(g / dg, -0.1, 0.1);
+    // converged: the step is below round-off of theta (not applied, so that R_r -> infinity keeps the rail's theta0
+    // bit for bit)
+    if (std::abs(step) <= 1e-15 * std::max(1.0, std::abs(th))) break;
     th -= step;
-    if (std::abs(step) < 1e-15) break;
     if (it == 29) return false;
   }
-  *sin_theta = std::sin(th);
-  *cos_theta = std::cos(th);
+  if (th != th0) {
+    *sin_theta = std::sin(th);
+    *cos_theta = std::cos(th);
+  }
   return true;
 }
 
