@@ -1,6 +1,6 @@
 // test-links: pipeline  (CMakeLists.txt links the test with this library only; the layers below come with it)
 // Wheel on roller (TrackSetup::roller_radius_m, geometry.hpp WHEEL ON ROLLER, docs/physics-reference.md §1.7):
-// the rail limit R_r -> infinity, the crossed-cylinder Hertz solution (Johnson 1985 §4.2, eqs. 3.70-3.72) and a
+// the rail limit R_r -> infinity, the crossed-cylinder Hertz solution (Johnson 1985 §4.2, elliptical contact) and a
 // brute-force 3-D closest-point check of the rigid search at yaw.
 
 #include <gtest/gtest.h>
@@ -154,8 +154,9 @@ WheelsetTrackGeometry CrownedRig(double r0, double crown_w, double roller_radius
   return WheelsetTrackGeometry(t);
 }
 
-// Johnson (1985) §4.2 with eqs. 3.70-3.72: an elliptical Hertz contact of h = A x^2 + B y^2 (A <= B: the major
-// semi-axis a along x) carries P = (2/3) pi a b p0 with
+// Johnson (1985) §4.2 (the ellipsoidal pressure p0 sqrt(1 - x^2/a^2 - y^2/b^2) and its displacements; a form
+// independent of hertz.cpp's, docs/physics-reference.md §1.2): an elliptical Hertz contact of h = A x^2 + B y^2
+// (A <= B: the major semi-axis a along x) carries P = (2/3) pi a b p0 with
 //   A = (p0 / E*) (b / (e^2 a^2)) (K(e) - E(e)),   B = (p0 / E*) (b / (e^2 a^2)) ((a/b)^2 E(e) - K(e)),
 //   delta = (p0 b / E*) K(e),   e^2 = 1 - (b/a)^2,   E* = E / (2 (1 - nu^2)) for two equal bodies,
 // solved here with std::comp_ellint_1/2 (modulus e): bisection of B/A in b/a, then a^3 from P.
