@@ -7,10 +7,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "conforma/error.hpp"
 #include "conforma/geometry.hpp"
 #include "conforma/hertz.hpp"
 #include "conforma/standard_profiles.hpp"
@@ -337,7 +339,8 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
   TrackSetup prism_setup = g.setup();
   prism_setup.roller_radius_m = {0.0, 0.0};
   const WheelsetTrackGeometry prism(prism_setup);
-  double worst_position = 0.0, worst_gap = 0.0, worst_radius = 0.0, prism_offset = 0.0;
+  double worst_position = 0.0, worst_gap = 0.0, worst_radius = 0.0, prism_offset = 0.0, worst_touch = 0.0;
+  double worst_angle = 0.0, worst_vertical = 0.0;
   struct Case { double y_mm, yaw_mrad, roll_mrad; };
   for (const Case& k : {Case{10.0, 10.0, 0.0}, Case{-8.0, -15.0, 1.0}, Case{5.0, 20.0, -2.0}}) {
     for (Side side : {Side::Left, Side::Right}) {
@@ -348,6 +351,10 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
       double gap = 0.0, y_touch = 0.0;
       ASSERT_TRUE(g.MinimumVerticalGap(side, pose, &gap, &y_touch));
       pose.vertical_m -= gap - lift;  // 0.1 mm above the roller: a well-defined closest pair
+      // touching after MinimumVerticalGap's lowering (the meridian gap shrinks by cos(phi) per unit of it: iterated)
+      WheelsetPose touching = pose;
+      touching.vertical_m -= lift;
+      worst_touch = std::max(worst_touch, std::fabs(g.RigidContact(side, touching).points.front().gap_m));
       const WheelContactResult rc = g.RigidContact(side, pose);
       ASSERT_EQ(rc.status, ContactStatus::Ok);
       const RigidContactPoint& c = rc.points.front();
@@ -363,6 +370,8 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
       worst_position = std::max({worst_position, (Pt - c.wheel_point_m).cwiseAbs().maxCoeff(),
                                  (Qt - c.rail_point_m).cwiseAbs().maxCoeff()});
       worst_gap = std::max(worst_gap, std::fabs((Pw - Qr).norm() - c.gap_m));
+      worst_angle = std::max(worst_angle, std::fabs(std::atan2(Qr(0), Qr(2) + R_r) - c.roller_angle_rad));
+      worst_vertical = std::max(worst_vertical, std::fabs(c.vertical_gap_m - lift));
       worst_radius = std::max({worst_radius, std::fabs(r0 + Crown(crown_w, u(1)) - c.rolling_radius_m),
                                std::fabs(R_r + Crown(crown_r, u(3) - s.rail_eta) - c.roller_rolling_radius_m)});
       // the same pose on a straight rail of the roller's profile: how far the roller moves the contact
@@ -376,9 +385,10 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
                     c.gap_m * 1e6);
     }
   }
-  std::printf("brute force vs search: positions %.2e m, gap %.2e m, rolling radii %.2e m; the straight rail's contact "
-              "point is %.3e m away\n",
-              worst_position, worst_gap, worst_radius, prism_offset);
+  std::printf("brute force vs search: positions %.2e m, gap %.2e m, rolling radii %.2e m, roller angle %.2e rad; the "
+              "straight rail's contact point is %.3e m away\n",
+              worst_position, worst_gap, worst_radius, worst_angle, prism_offset);
+  std::printf("touching pose: gap %.2e m; vertical gap at 0.1 mm lift: %.2e m off\n", worst_touch, worst_vertical);
   // Resolution of the search: Brent to 1e-10 m in y_w, then parabolic steps along the rail until a step is below
   // 1e-9 m (converging fast, so the last error is well below the last step): positions to 1e-9 m. The gap is
   // stationary at the closest pair (error ~ curvature x (1e-9 m)^2 ~ 1e-17 m) and the 0.05 mm-sampled circles are
@@ -387,7 +397,23 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
   EXPECT_LT(worst_position, 1e-9);
   EXPECT_LT(worst_gap, 1e-12);
   EXPECT_LT(worst_radius, 1e-9);
+  EXPECT_LT(worst_angle, 1e-9 / R_r);
+  EXPECT_LT(worst_touch, 1e-14);
+  // RigidContactPoint::vertical_gap_m = meridian gap / cos(phi): exact to first order in the lift (measured 1.5e-12 m
+  // at a 0.1 mm lift), bounded at 1e-6 of the lift
+  EXPECT_LT(worst_vertical, 1e-6 * lift);
   EXPECT_GT(prism_offset, 1e-5);  // the roller matters: tens of um at these yaw angles
+}
+
+TEST(RollerGeometry, RollerSmallerThanItsProfileDepthIsAnInputError) {
+  TrackSetup t = test::PipelineGeometry().setup();
+  t.roller_radius_m = {0.5, 0.01};  // 60E1: the tabulated head reaches deeper than 10 mm
+  try {
+    WheelsetTrackGeometry g(t);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("roller_radius_m[right]"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

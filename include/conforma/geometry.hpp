@@ -139,7 +139,18 @@ struct RigidContactPoint {
   // so its x is (R_r(y) / |P - axis|) times the wheel point's x); contact_angle_rad is measured in that plane.
   double roller_rolling_radius_m = 0.0;
   double hertz_B_per_m = 0.0;       // (kappa_wheel + kappa_rail) / 2
+  // Roller: the angle phi of the contact point about the roller axis from its top line, + ahead (rail_point_m.x =
+  // R_r(y) sin(phi)); the contact normal leans by phi along x. 0 for a rail.
+  double roller_angle_rad = 0.0;
 };
+
+// Cosine of the angle between a contact point's normal and the vertical: cos(delta) on a rail, cos(delta) cos(phi) on a
+// roller (the normal also leans by phi along x). The rigid normal approach per unit of vertical lowering, and the
+// vertical share of a normal force.
+inline double NormalVerticalCosine(const RigidContactPoint& p) {
+  const double c = std::cos(p.contact_angle_rad);
+  return p.roller_rolling_radius_m > 0.0 ? c * std::cos(p.roller_angle_rad) : c;
+}
 
 // The rigid contact of one wheel at a pose (RigidContact).
 struct WheelContactResult {

@@ -72,6 +72,7 @@ struct PatchReport {
   double y_contact_wheel_m = 0.0;            // wheel-profile y at the reference point, m
   double rolling_radius_m = 0.0;             // wheel rolling radius at the reference point, m
   double roller_rolling_radius_m = 0.0;      // wheel on roller: the roller's R_r + z_r there, m (0: a rail)
+  double roller_angle_rad = 0.0;             // wheel on roller: the point's angle about the roller axis (geometry.hpp)
   double lead_m = 0.0;                       // longitudinal position of the reference point (yaw lead), m
   // Creepages at the reference point (xi, eta dimensionless, phi in 1/m): the given ones (creepages_given) or from
   // the wheelset velocities (creepage.hpp)

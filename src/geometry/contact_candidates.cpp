@@ -189,7 +189,7 @@ CandidateResult FindContactCandidatesForLoad(const WheelsetTrackGeometry& g, Sid
     // B <= 0 (conformal): the Hertz estimate of the approach uses a small positive B instead
     const double B = std::max(c.hertz_B_per_m, 1e-3 * c.hertz_A_per_m);
     // (a flange pressed against the rail with the elastic-flange reference: negative vertical gap)
-    pts.push_back({elastic_flange ? c.vertical_gap_m : std::max(0.0, c.vertical_gap_m), std::cos(c.contact_angle_rad),
+    pts.push_back({elastic_flange ? c.vertical_gap_m : std::max(0.0, c.vertical_gap_m), NormalVerticalCosine(c),
                    c.hertz_A_per_m, B});
   }
   // Hertz: N = C_H delta^(3/2) with C_H fixed by A, B and the material (hertz.hpp); one solve per point

@@ -179,6 +179,16 @@ WheelsetTrackGeometry::WheelsetTrackGeometry(TrackSetup setup, const GeometryOpt
     d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
     d.rail = build_table(d.mounted_rail, d.rail_origin_eta, options_.table_spacing_m, options_.max_slope, "rail");
     d.wheel = build_table(setup_.wheel[k], 0.0, options_.table_spacing_m, options_.max_slope, "wheel");
+    if (d.roller_radius > 0.0) {  // every profile point of a roller must lie above its axis: R_r(y) = R_r + z_r > 0
+      const double depth = -*std::min_element(d.rail.z.begin(), d.rail.z.end());
+      if (!(d.roller_radius > depth)) {
+        std::ostringstream m;
+        m << "TrackSetup.roller_radius_m[" << (k == 0 ? "left" : "right") << "] = " << d.roller_radius
+          << " m is not larger than the depth of the roller's profile (" << setup_.rail[k].source() << "), " << depth
+          << " m below its top";
+        throw InputError(m.str());
+      }
+    }
   }
 }
 
@@ -385,6 +395,7 @@ RigidContactPoint WheelsetTrackGeometry::MakeContactPoint(Side side, const Frame
     const double rho = d.roller_radius + zr, zc = pw(2) + d.roller_radius, dist = std::hypot(pw(0), zc);
     const double sin_phi = pw(0) / dist, cos_phi = zc / dist;
     c.roller_rolling_radius_m = rho;
+    c.roller_angle_rad = std::atan2(pw(0), zc);
     c.rail_point_m = Eigen::Vector3d(rho * sin_phi, sigma * eta_rail, zr - rho * sin_phi * sin_phi / (1.0 + cos_phi));
     // the vertical gap: the meridian gap shrinks by cos(phi) per unit of vertical lowering
     c.vertical_gap_m = vertical_gap_m / cos_phi;

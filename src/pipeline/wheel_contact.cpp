@@ -212,7 +212,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       for (const RigidContactPoint& q : points) duplicate |= std::fabs(q.rail_s_m - p.rail_s_m) < 0.05e-3;
       if (duplicate) continue;
       points.push_back(p);
-      points.back().gap_m = p.gap_m - push * std::cos(p.contact_angle_rad);
+      points.back().gap_m = p.gap_m - push * NormalVerticalCosine(p);
     }
     // the region holding a point, or the nearest one
     auto region_of = [&](const RigidContactPoint& p) {
@@ -452,6 +452,7 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
     p.reference_s_on_rail_m = hertz ? point.rail_s_m : c.patch.reference_s_on_rail_m;
     p.rolling_radius_m = point.rolling_radius_m;
     p.roller_rolling_radius_m = point.roller_rolling_radius_m;
+    p.roller_angle_rad = point.roller_angle_rad;
     p.lead_m = point.lead_m;
     p.approach_m = hertz ? -point.gap_m : c.patch.rigid_approach_m;
     if (!hertz && s.kp.status != KpStatus::NoContact) p.approach_m = s.kp.approach_m;
