@@ -405,6 +405,31 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
   EXPECT_GT(prism_offset, 1e-5);  // the roller matters: tens of um at these yaw angles
 }
 
+// Load control on a roller at yaw: the contact lies at phi ~ lead / R_r about the roller axis, its normal leans by phi
+// along x, so the vertical load is carried by fn cos(delta) cos(phi) (not fn cos(delta): 1.3e-4 apart at phi = 16 mrad).
+TEST(RollerGeometry, LoadControlUsesTheNormalTiltedAboutTheRollerAxis) {
+  const WheelsetTrackGeometry g = CrownedRig(0.46, 0.1, 0.5, 0.08);
+  WheelsetPose pose;
+  pose.lateral_m = 5e-3;
+  pose.yaw_rad = 20e-3;
+  for (ContactModel m : {ContactModel::Hertz, ContactModel::Kpec}) {
+    WheelContactOptions o;
+    o.model = m;
+    o.solve_tangential = false;
+    o.vertical_load_N = 10e3;
+    const WheelContactReport r = SolveWheelContact(g, Side::Left, pose, test::Rolling(), o);
+    ASSERT_EQ(r.status, WheelContactStatus::Ok) << to_string(m);
+    ASSERT_EQ(r.patches.size(), 1u) << to_string(m);
+    const PatchReport& p = r.patches.front();
+    EXPECT_GT(std::fabs(p.roller_angle_rad), 0.01) << to_string(m);
+    const double carried = p.fn_N * std::cos(p.contact_angle_rad) * std::cos(p.roller_angle_rad);
+    std::printf("%s at yaw 20 mrad: phi = %.5f rad, fn cos(delta) cos(phi) / load - 1 = %+.2e\n", to_string(m),
+                p.roller_angle_rad, carried / o.vertical_load_N - 1.0);
+    EXPECT_NEAR(carried / o.vertical_load_N, 1.0, 1e-5) << to_string(m);
+    EXPECT_NEAR(r.vertical_force_N / o.vertical_load_N, 1.0, 1e-5) << to_string(m);
+  }
+}
+
 TEST(RollerGeometry, RollerSmallerThanItsProfileDepthIsAnInputError) {
   TrackSetup t = test::PipelineGeometry().setup();
   t.roller_radius_m = {0.5, 0.01};  // 60E1: the tabulated head reaches deeper than 10 mm

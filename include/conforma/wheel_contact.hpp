@@ -15,6 +15,8 @@
 // Frames: each wheel is reported in its side frame (geometry.hpp), i.e. the right wheel as the mirror image of a
 // left wheel; forces are those ON THE WHEEL (Kalker's convention) in the patch's contact frame: fx along the track,
 // fy along the rail profile towards the field side (+s), fn along the outward rail normal (pushing the wheel up).
+// Wheel on roller (geometry.hpp): that frame turned by the contact's angle phi about the roller axis (fx along the
+// roller's surface, fn through its axis; PatchReport::roller_angle_rad), so the side-frame sums include fx sin(phi).
 #include <memory>
 #include <string>
 #include <vector>

@@ -121,7 +121,18 @@ std::vector<ContactCell> CellsOf(const FastsimResult& f, const ProfileMapping& m
 
 struct PatchFrame {  // patch reference frame in the side frame (x, eta, z)
   Eigen::Vector3d normal, tangent;
+  Eigen::Vector3d longitudinal = Eigen::Vector3d::UnitX();  // the rolling direction (fx)
 };
+
+// Wheel on roller (docs/physics-reference.md §1.7): the contact lies at the angle phi about the roller axis, so its
+// frame is the rail's turned by phi about the eta axis (z -> the roller's radial direction (sin, 0, cos phi), x -> its
+// circumferential direction (cos, 0, -sin phi)). phi = 0 (a rail) leaves the frame as it is.
+PatchFrame TiltedByRollerAngle(PatchFrame f, double phi) {
+  if (phi == 0.0) return f;
+  const double c = std::cos(phi), s = std::sin(phi);
+  auto turn = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z()); };
+  return {turn(f.normal), turn(f.tangent), turn(f.longitudinal)};
+}
 
 PatchFrame FrameOf(const PatchGeometry& patch) {
   const Eigen::Vector2d n = patch.reference_normal.normalized();
@@ -262,8 +273,11 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   std::vector<PatchFrame>& frames = stage.frames;
   frames.resize(n);
   for (size_t j = 0; j < n; ++j)
-    frames[j] = patch_model[j] == ContactModel::Hertz ? FrameOfContactAngle(hertz_points[j].contact_angle_rad)
-                                                       : FrameOf(candidates.candidates[j].patch);
+    frames[j] = patch_model[j] == ContactModel::Hertz
+                    ? TiltedByRollerAngle(FrameOfContactAngle(hertz_points[j].contact_angle_rad),
+                                          hertz_points[j].roller_angle_rad)
+                    : TiltedByRollerAngle(FrameOf(candidates.candidates[j].patch),
+                                          candidates.candidates[j].reference.roller_angle_rad);
 
   // 2. Normal problem for a vertical push `dz` beyond the candidates' pose: patch j's approach along its own
   // reference normal grows by dz n0_z.
@@ -273,9 +287,9 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       const ContactCandidate& c = candidates.candidates[j];
       PatchNormalSolution& s = (*out)[j];
       if (patch_model[j] == ContactModel::Hertz) {
-        const double approach = -hertz_points[j].gap_m + dz * std::cos(hertz_points[j].contact_angle_rad);
+        const double approach = -hertz_points[j].gap_m + dz * frames[j].normal.z();  // cos(delta) (cos(phi))
         s = SolvePatchNormal(ContactModel::Hertz, PatchInput{nullptr, &hertz_points[j]}, approach, options);
-        vertical += s.fn_N * std::cos(hertz_points[j].contact_angle_rad);
+        vertical += s.fn_N * frames[j].normal.z();
         continue;
       }
       const double approach = c.patch.rigid_approach_m + dz * frames[j].normal.z();
@@ -317,7 +331,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       for (size_t j = 0; j < n; ++j) {
         const bool hertz = patch_model[j] == ContactModel::Hertz;
         const double rigid = hertz ? -hertz_points[j].gap_m : candidates.candidates[j].patch.rigid_approach_m;
-        const double nz = hertz ? std::cos(hertz_points[j].contact_angle_rad) : frames[j].normal.z();
+        const double nz = frames[j].normal.z();
         if (nz > 0.1 && rigid > 0.0) approach = std::max(approach, rigid / nz + base_push);
       }
       approach = std::max(approach, 1e-7);
@@ -506,12 +520,14 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
       p.tangential_status = "not_solved";
     }
     // resultant on the wheel in the side frame: normal along n0 (+ the KP lateral part along t0), creep force along t0
-    const Eigen::Vector3d force = (p.fn_N) * frames[j].normal + (s.fs_N + p.fy_N) * frames[j].tangent;
+    Eigen::Vector3d force = (p.fn_N) * frames[j].normal + (s.fs_N + p.fy_N) * frames[j].tangent;
+    // on a roller the rolling direction leans by phi: the creep force along it has a vertical part
+    if (frames[j].longitudinal.z() != 0.0) force += p.fx_N * frames[j].longitudinal;
     p.vertical_force_N = force.z();
     p.lateral_force_N = force.y();
     report.vertical_force_N += p.vertical_force_N;
     report.pressure_vertical_force_N +=
-        hertz ? s.fn_N * std::cos(point.contact_angle_rad) : s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
+        hertz ? s.fn_N * frames[j].normal.z() : s.fn_N * frames[j].normal.z() + s.fs_N * frames[j].tangent.z();
     report.lateral_force_N += p.lateral_force_N;
     report.patches.push_back(p);
   }
