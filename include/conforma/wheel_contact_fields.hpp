@@ -80,9 +80,11 @@ void VisitPatchFields(const PatchReport& p, Visitor&& v) {
   v("tangential_residual", p.tangential_residual);
 }
 // PatchReport members that VisitPatchFields leaves out on purpose (not in the JSON or the Python dict): the
-// per-cell fields (`cells`, written by their own code) and reference_s_on_rail_m (internal; the stress runner
-// reads it). tests/test_wheel_contact_fields.cpp checks: members of PatchReport = visited + these.
-constexpr std::size_t kPatchFieldsNotVisited = 2;
+// per-cell fields (`cells`, written by their own code), reference_s_on_rail_m (internal; the stress runner
+// reads it), and the wheel-on-roller roller_rolling_radius_m and roller_angle_rad (for the roller-rig kinematics in
+// C++; 0 on a rail, so left out of the outputs until the rig reports them). tests/test_wheel_contact_fields.cpp
+// checks: members of PatchReport = visited + these.
+constexpr std::size_t kPatchFieldsNotVisited = 4;
 
 // ContactCell (WheelContactOptions::keep_fields): every member with its unit in the name, then the derived wear
 // index; the columns of `conforma contact --fields` (src/app/contact_fields_export.cpp). in_slip is a bool.
