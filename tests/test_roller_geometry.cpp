@@ -430,6 +430,58 @@ TEST(RollerGeometry, LoadControlUsesTheNormalTiltedAboutTheRollerAxis) {
   }
 }
 
+// Without yaw the wheel's silhouette lies in the plane x = 0, the roller's top line: every contact quantity equals the
+// rail's except A, which gains exactly cos(delta) / (2 R_r(y)). S1002 on 60E1 1:40 rollers of 0.5 m (a full-scale rig),
+// from -10 to +10 mm (tread to flange), rigid equilibrium with roll.
+TEST(RollerGeometry, WithoutYawTheRollerTouchesWhereTheRailDoes) {
+  TrackSetup t = test::PipelineGeometry().setup();
+  t.roller_radius_m = {0.5, 0.5};
+  const WheelsetTrackGeometry rig(t);
+  double worst = 0.0, worst_A = 0.0;
+  int flange = 0;
+  for (int y_mm = -10; y_mm <= 10; y_mm += 2) {
+    const EquilibriumResult a = test::PipelineGeometry().SolveRigidEquilibrium(y_mm * 1e-3, 0.0);
+    const EquilibriumResult b = rig.SolveRigidEquilibrium(y_mm * 1e-3, 0.0);
+    ASSERT_EQ(a.status, EquilibriumStatus::Converged);
+    ASSERT_EQ(b.status, EquilibriumStatus::Converged) << y_mm << " mm";
+    worst = std::max({worst, std::fabs(a.pose.vertical_m - b.pose.vertical_m), std::fabs(a.pose.roll_rad - b.pose.roll_rad),
+                      std::fabs(a.rolling_radius_difference_m - b.rolling_radius_difference_m)});
+    for (int s = 0; s < 2; ++s) {
+      const RigidContactPoint &p = a.contact.wheel[s].points.front(), &q = b.contact.wheel[s].points.front();
+      flange += p.contact_angle_rad > 0.5;
+      worst = std::max({worst, (p.wheel_point_m - q.wheel_point_m).cwiseAbs().maxCoeff(),
+                        (p.rail_point_m - q.rail_point_m).cwiseAbs().maxCoeff(), std::fabs(p.gap_m - q.gap_m)});
+      EXPECT_EQ(q.roller_angle_rad, 0.0);
+      const double roller_term = std::cos(q.contact_angle_rad) / (2.0 * (0.5 + q.rail_profile_m.y()));
+      worst_A = std::max(worst_A, std::fabs(q.hertz_A_per_m - p.hertz_A_per_m - roller_term) / p.hertz_A_per_m);
+    }
+  }
+  std::printf("no yaw, rollers of 0.5 m vs rail, -10..10 mm (%d flange contacts): poses and points %.2e m, A - roller term "
+              "%.2e relative\n",
+              flange, worst, worst_A);
+  EXPECT_GT(flange, 0);
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(worst_A, 1e-12);
+}
+
+// With yaw on the same rig the rigid equilibrium converges from tread to flange (Newton of the roller silhouette).
+TEST(RollerGeometry, EquilibriumConvergesWithYawFromTreadToFlange) {
+  TrackSetup t = test::PipelineGeometry().setup();
+  t.roller_radius_m = {0.5, 0.5};
+  const WheelsetTrackGeometry rig(t);
+  for (double yaw : {-10e-3, 10e-3}) {
+    for (int y_mm = -10; y_mm <= 10; y_mm += 2) {
+      const EquilibriumResult b = rig.SolveRigidEquilibrium(y_mm * 1e-3, yaw);
+      ASSERT_EQ(b.status, EquilibriumStatus::Converged) << y_mm << " mm, yaw " << yaw;
+      for (int s = 0; s < 2; ++s) {
+        const RigidContactPoint& q = b.contact.wheel[s].points.front();
+        EXPECT_NEAR(q.gap_m, 0.0, 1e-9) << y_mm << " mm, yaw " << yaw;
+        EXPECT_NEAR(std::hypot(q.rail_point_m.x(), q.rail_point_m.z() + 0.5), q.roller_rolling_radius_m, 1e-12);
+      }
+    }
+  }
+}
+
 TEST(RollerGeometry, RollerSmallerThanItsProfileDepthIsAnInputError) {
   TrackSetup t = test::PipelineGeometry().setup();
   t.roller_radius_m = {0.5, 0.01};  // 60E1: the tabulated head reaches deeper than 10 mm

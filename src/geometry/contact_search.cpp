@@ -173,9 +173,11 @@ bool WheelsetTrackGeometry::MinimumVerticalGap(Side side, const WheelsetPose& po
   double lowered = 0.0, gap = 0.0;
   for (int it = 0; it < 20; ++it) {
     if (!MinimumGapOnce(side, p, &gap, track_y_m, max_contact_angle_rad)) return false;
+    // a remaining gap below round-off is not added (contact on the roller's top line, phi = 0: the first lowering is
+    // exact, and the result is the rail's bit for bit)
+    if (it > 0 && std::abs(gap) <= 1e-15 + 1e-13 * std::abs(lowered)) break;
     lowered += gap;
     p.vertical_m = pose.vertical_m - lowered;
-    if (std::abs(gap) <= 1e-15 + 1e-13 * std::abs(lowered)) break;
   }
   *gap_m = lowered;
   return true;
