@@ -52,7 +52,6 @@ double Diff(double roller, double rail, double floor) {
 
 TEST(RollerGeometry, HugeRollerReproducesTheRailContactPoints) {
   double worst = 0.0;
-  auto track = [](double d, const char*) { return d; };
   for (const PoseCase& pc : kPoses) {
     const WheelsetPose pose = test::Pose(pc.y_mm, pc.yaw_mrad);
     const WheelsetContactResult rail = test::PipelineGeometry().RigidContacts(pose);
@@ -63,14 +62,13 @@ TEST(RollerGeometry, HugeRollerReproducesTheRailContactPoints) {
       ASSERT_EQ(a.size(), b.size()) << pc.y_mm << " mm, side " << s;
       for (size_t k = 0; k < a.size(); ++k) {
         for (int i = 0; i < 3; ++i) {
-          worst = std::max(worst, track(Diff(b[k].wheel_point_m(i), a[k].wheel_point_m(i), 1e-3), "wp"));
-          worst = std::max(worst, track(Diff(b[k].rail_point_m(i), a[k].rail_point_m(i), 1e-3), "rp"));
+          worst = std::max(worst, Diff(b[k].wheel_point_m(i), a[k].wheel_point_m(i), 1e-3));
+          worst = std::max(worst, Diff(b[k].rail_point_m(i), a[k].rail_point_m(i), 1e-3));
         }
-        worst = std::max({worst, track(Diff(b[k].rolling_radius_m, a[k].rolling_radius_m, 1e-3), "r"),
-                          track(Diff(b[k].lead_m, a[k].lead_m, 1e-3), "lead"), track(Diff(b[k].gap_m, a[k].gap_m, 1e-3), "gap"),
-                          track(Diff(b[k].contact_angle_rad, a[k].contact_angle_rad, 1e-3), "delta"),
-                          track(Diff(b[k].hertz_A_per_m, a[k].hertz_A_per_m, 1e-3), "A"),
-                          track(Diff(b[k].hertz_B_per_m, a[k].hertz_B_per_m, 1e-3), "B")});
+        worst = std::max(
+            {worst, Diff(b[k].rolling_radius_m, a[k].rolling_radius_m, 1e-3), Diff(b[k].lead_m, a[k].lead_m, 1e-3),
+             Diff(b[k].gap_m, a[k].gap_m, 1e-3), Diff(b[k].contact_angle_rad, a[k].contact_angle_rad, 1e-3),
+             Diff(b[k].hertz_A_per_m, a[k].hertz_A_per_m, 1e-3), Diff(b[k].hertz_B_per_m, a[k].hertz_B_per_m, 1e-3)});
         EXPECT_EQ(a[k].roller_rolling_radius_m, 0.0);
         EXPECT_NEAR(b[k].roller_rolling_radius_m, 1e15 + b[k].rail_profile_m.y(), 1.0);
       }
@@ -175,7 +173,8 @@ AnalyticHertz JohnsonEllipse(double A, double B, double P, const Material& mat) 
   double lo = 1e-3, hi = 1.0 - 1e-12;  // B/A decreases from large values to 1 as k -> 1
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
-    if (ratio(mid) > B / A) lo = mid; else hi = mid;
+    if (ratio(mid) > B / A) lo = mid;
+    else hi = mid;
   }
   const double k = 0.5 * (lo + hi), e2 = 1.0 - k * k, e = std::sqrt(e2);
   const double K = std::comp_ellint_1(e), E = std::comp_ellint_2(e);
@@ -226,10 +225,11 @@ TEST(RollerGeometry, CrossedCylindersGiveTheHertzSolution) {
   const double approach = pose.vertical_m - h.pose.vertical_m;
   std::printf("crossed cylinders, Johnson: a = %.6f mm, b = %.6f mm, p0 = %.6f MPa, delta = %.6f um\n", ref.a * 1e3,
               ref.b * 1e3, ref.p0 * 1e-6, ref.delta * 1e6);
-  std::printf("  hertz model: fn = %.3f N, a %+.2e, b %+.2e, p_max %+.2e, approach (pose) %+.2e, approach (hertz.hpp "
-              "at the geometry's A, B) %+.2e (relative errors)\n",
-              hp.fn_N, hp.a_m / ref.a - 1, hp.b_m / ref.b - 1, hp.pmax_Pa / ref.p0 - 1, approach / ref.delta - 1,
-              hz.approach_m / ref.delta - 1);
+  std::printf(
+      "  hertz model: fn = %.3f N, a %+.2e, b %+.2e, p_max %+.2e, approach (pose) %+.2e, approach (hertz.hpp "
+      "at the geometry's A, B) %+.2e (relative errors)\n",
+      hp.fn_N, hp.a_m / ref.a - 1, hp.b_m / ref.b - 1, hp.pmax_Pa / ref.p0 - 1, approach / ref.delta - 1,
+      hz.approach_m / ref.delta - 1);
   EXPECT_NEAR(hp.fn_N / P, 1.0, 1e-5);
   EXPECT_NEAR(hp.roller_rolling_radius_m, R_r, 1e-9);  // exposed per patch for the rig kinematics
   EXPECT_NEAR(hp.a_m / ref.a, 1.0, 1e-3);
@@ -256,19 +256,20 @@ TEST(RollerGeometry, CrossedCylindersGiveTheHertzSolution) {
     ASSERT_EQ(k.patches.size(), 1u) << to_string(m);
     ASSERT_EQ(e.patches.size(), 1u) << to_string(m);
     const PatchReport &kp = k.patches.front(), &ep = e.patches.front();
-    std::printf("  %s model: fn = %.3f N, p_max %+.2e, length/2a %+.2e, width/2b %+.2e, area/(pi a b) %+.2e "
-                "(relative to Johnson); against the equivalent wheel on a rail: p_max %+.2e, length %+.2e, width "
-                "%+.2e\n",
-                to_string(m), kp.fn_N, kp.pmax_Pa / ref.p0 - 1, kp.length_m / (2 * ref.a) - 1,
-                kp.width_m / (2 * ref.b) - 1, kp.area_m2 / (M_PI * ref.a * ref.b) - 1, kp.pmax_Pa / ep.pmax_Pa - 1,
-                kp.length_m / ep.length_m - 1, kp.width_m / ep.width_m - 1);
+    std::printf(
+        "  %s model: fn = %.3f N, p_max %+.2e, length/2a %+.2e, width/2b %+.2e, area/(pi a b) %+.2e "
+        "(relative to Johnson); against the equivalent wheel on a rail: p_max %+.2e, length %+.2e, width "
+        "%+.2e\n",
+        to_string(m), kp.fn_N, kp.pmax_Pa / ref.p0 - 1, kp.length_m / (2 * ref.a) - 1, kp.width_m / (2 * ref.b) - 1,
+        kp.area_m2 / (M_PI * ref.a * ref.b) - 1, kp.pmax_Pa / ep.pmax_Pa - 1, kp.length_m / ep.length_m - 1,
+        kp.width_m / ep.width_m - 1);
     // the roller's curvature enters the strips exactly as a smaller wheel radius would (measured: < 1e-6)
     EXPECT_NEAR(kp.pmax_Pa / ep.pmax_Pa, 1.0, 1e-5) << to_string(m);
     EXPECT_NEAR(kp.length_m / ep.length_m, 1.0, 1e-5) << to_string(m);
     EXPECT_NEAR(kp.width_m / ep.width_m, 1.0, 1e-5) << to_string(m);
-    // against Johnson: KPEC's accuracy on Hertzian gaps (0.5 %, tests/test_kp_hertz.cpp); the conformal model (strip
-    // collocation, physics-reference §5.3) gives the same figures on the straight rail, so its -1.2 % in the width
-    // is the model's, not the roller's: bounded at 2 % here
+    // against Johnson: KPEC's accuracy on Hertzian gaps (0.5 %, tests/test_kp_hertz.cpp); the conformal model
+    // (strip collocation, docs/physics-reference.md §5.3) gives the same figures on the straight rail, so its -1.2 %
+    // in the width is the model's, not the roller's: bounded at 2 % here
     if (m == ContactModel::Exact) {  // BEM on 0.2 mm elements: extents to within one element
       EXPECT_NEAR(kp.pmax_Pa / ref.p0, 1.0, 0.01);
       EXPECT_NEAR(kp.length_m, 2 * ref.a, o.exact_element_size_m);
@@ -341,7 +342,9 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
   const WheelsetTrackGeometry prism(prism_setup);
   double worst_position = 0.0, worst_gap = 0.0, worst_radius = 0.0, prism_offset = 0.0, worst_touch = 0.0;
   double worst_angle = 0.0, worst_vertical = 0.0;
-  struct Case { double y_mm, yaw_mrad, roll_mrad; };
+  struct Case {
+    double y_mm, yaw_mrad, roll_mrad;
+  };
   for (const Case& k : {Case{10.0, 10.0, 0.0}, Case{-8.0, -15.0, 1.0}, Case{5.0, 20.0, -2.0}}) {
     for (Side side : {Side::Left, Side::Right}) {
       WheelsetPose pose;
@@ -367,8 +370,8 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
       const Eigen::Vector3d Pw = s.P(u(0), u(1)), Qr = s.Q(u(2), u(3));
       const Eigen::Vector3d mirror(1.0, sigma, 1.0);
       const Eigen::Vector3d Pt = Pw.cwiseProduct(mirror), Qt = Qr.cwiseProduct(mirror);  // track frame
-      worst_position = std::max({worst_position, (Pt - c.wheel_point_m).cwiseAbs().maxCoeff(),
-                                 (Qt - c.rail_point_m).cwiseAbs().maxCoeff()});
+      worst_position = std::max(
+          {worst_position, (Pt - c.wheel_point_m).cwiseAbs().maxCoeff(), (Qt - c.rail_point_m).cwiseAbs().maxCoeff()});
       worst_gap = std::max(worst_gap, std::fabs((Pw - Qr).norm() - c.gap_m));
       worst_angle = std::max(worst_angle, std::fabs(std::atan2(Qr(0), Qr(2) + R_r) - c.roller_angle_rad));
       worst_vertical = std::max(worst_vertical, std::fabs(c.vertical_gap_m - lift));
@@ -379,15 +382,16 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
       ASSERT_EQ(pc.status, ContactStatus::Ok);
       prism_offset = std::max(prism_offset, (pc.points.front().wheel_point_m - Pt).cwiseAbs().maxCoeff());
       if (side == Side::Left)
-        std::printf("y %+.0f mm, yaw %+.0f mrad: contact x = %+.4f mm on the wheel, %+.4f mm on the roller, "
-                    "delta = %.4f rad, gap %.6f um\n",
-                    k.y_mm, k.yaw_mrad, c.wheel_point_m(0) * 1e3, c.rail_point_m(0) * 1e3, c.contact_angle_rad,
-                    c.gap_m * 1e6);
+        std::printf(
+            "y %+.0f mm, yaw %+.0f mrad: contact x = %+.4f mm on the wheel, %+.4f mm on the roller, "
+            "delta = %.4f rad, gap %.6f um\n",
+            k.y_mm, k.yaw_mrad, c.wheel_point_m(0) * 1e3, c.rail_point_m(0) * 1e3, c.contact_angle_rad, c.gap_m * 1e6);
     }
   }
-  std::printf("brute force vs search: positions %.2e m, gap %.2e m, rolling radii %.2e m, roller angle %.2e rad; the "
-              "straight rail's contact point is %.3e m away\n",
-              worst_position, worst_gap, worst_radius, worst_angle, prism_offset);
+  std::printf(
+      "brute force vs search: positions %.2e m, gap %.2e m, rolling radii %.2e m, roller angle %.2e rad; the "
+      "straight rail's contact point is %.3e m away\n",
+      worst_position, worst_gap, worst_radius, worst_angle, prism_offset);
   std::printf("touching pose: gap %.2e m; vertical gap at 0.1 mm lift: %.2e m off\n", worst_touch, worst_vertical);
   // Resolution of the search: Brent to 1e-10 m in y_w, then parabolic steps along the rail until a step is below
   // 1e-9 m (converging fast, so the last error is well below the last step): positions to 1e-9 m. The gap is
@@ -406,7 +410,8 @@ TEST(RollerGeometry, SearchFindsTheClosestPointsOfTheSurfacesAtYaw) {
 }
 
 // Load control on a roller at yaw: the contact lies at phi ~ lead / R_r about the roller axis, its normal leans by phi
-// along x, so the vertical load is carried by fn cos(delta) cos(phi) (not fn cos(delta): 1.3e-4 apart at phi = 16 mrad).
+// along x, so the vertical load is carried by fn cos(delta) cos(phi) (not fn cos(delta): 1.3e-4 apart at phi = 16
+// mrad).
 TEST(RollerGeometry, LoadControlUsesTheNormalTiltedAboutTheRollerAxis) {
   const WheelsetTrackGeometry g = CrownedRig(0.46, 0.1, 0.5, 0.08);
   WheelsetPose pose;
@@ -444,8 +449,9 @@ TEST(RollerGeometry, WithoutYawTheRollerTouchesWhereTheRailDoes) {
     const EquilibriumResult b = rig.SolveRigidEquilibrium(y_mm * 1e-3, 0.0);
     ASSERT_EQ(a.status, EquilibriumStatus::Converged);
     ASSERT_EQ(b.status, EquilibriumStatus::Converged) << y_mm << " mm";
-    worst = std::max({worst, std::fabs(a.pose.vertical_m - b.pose.vertical_m), std::fabs(a.pose.roll_rad - b.pose.roll_rad),
-                      std::fabs(a.rolling_radius_difference_m - b.rolling_radius_difference_m)});
+    worst =
+        std::max({worst, std::fabs(a.pose.vertical_m - b.pose.vertical_m), std::fabs(a.pose.roll_rad - b.pose.roll_rad),
+                  std::fabs(a.rolling_radius_difference_m - b.rolling_radius_difference_m)});
     for (int s = 0; s < 2; ++s) {
       const RigidContactPoint &p = a.contact.wheel[s].points.front(), &q = b.contact.wheel[s].points.front();
       flange += p.contact_angle_rad > 0.5;
@@ -456,9 +462,10 @@ TEST(RollerGeometry, WithoutYawTheRollerTouchesWhereTheRailDoes) {
       worst_A = std::max(worst_A, std::fabs(q.hertz_A_per_m - p.hertz_A_per_m - roller_term) / p.hertz_A_per_m);
     }
   }
-  std::printf("no yaw, rollers of 0.5 m vs rail, -10..10 mm (%d flange contacts): poses and points %.2e m, A - roller term "
-              "%.2e relative\n",
-              flange, worst, worst_A);
+  std::printf(
+      "no yaw, rollers of 0.5 m vs rail, -10..10 mm (%d flange contacts): poses and points %.2e m, A - roller term "
+      "%.2e relative\n",
+      flange, worst, worst_A);
   EXPECT_GT(flange, 0);
   EXPECT_LT(worst, 1e-12);
   EXPECT_LT(worst_A, 1e-12);

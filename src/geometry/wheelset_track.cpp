@@ -217,8 +217,8 @@ namespace {
 //   g(theta) = n_x - n_z P_x / (P_z + R_r) = 0,
 // solved by Newton from the rail's solution theta0 (g -> n_x, the rail's condition, for R_r -> infinity), with
 // dP/dtheta = r dn/dtheta, dn/dtheta = R (cos, 0, sin). Returns false when Newton does not converge.
-bool roller_silhouette_theta(const Eigen::Matrix3d& R, const Eigen::Vector3d& c, double r, double r_slope,
-                             double q1, double roller_radius, double* sin_theta, double* cos_theta) {
+bool roller_silhouette_theta(const Eigen::Matrix3d& R, const Eigen::Vector3d& c, double r, double r_slope, double q1,
+                             double roller_radius, double* sin_theta, double* cos_theta) {
   const double th0 = std::atan2(*sin_theta, *cos_theta);
   double th = th0;
   for (int it = 0; it < 30; ++it) {

@@ -130,7 +130,9 @@ struct PatchFrame {  // patch reference frame in the side frame (x, eta, z)
 PatchFrame TiltedByRollerAngle(PatchFrame f, double phi) {
   if (phi == 0.0) return f;
   const double c = std::cos(phi), s = std::sin(phi);
-  auto turn = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z()); };
+  auto turn = [&](const Eigen::Vector3d& v) {
+    return Eigen::Vector3d(c * v.x() + s * v.z(), v.y(), -s * v.x() + c * v.z());
+  };
   return {turn(f.normal), turn(f.tangent), turn(f.longitudinal)};
 }
 
