@@ -13,8 +13,8 @@
 //          omega_3 = 2 / (r_1 / (omega_1 R_1) + r_2 / (omega_2 R_2))
 //   Solution: the wheelset turns freely, so the moment of the two longitudinal contact forces about the axle balances
 //   the applied axle torque (0 for the free wheelset): g(omega_3) = r_1 F_x1 + r_2 F_x2 + T_axle = 0, a 1-D root
-//   (root_finding.hpp, Illinois on the bracket omega_3 in [min V_i/r_i, max V_i/r_i], where both creepages have one
-//   sign at each end). The longitudinal springs of the two axle boxes (stiffness k each, at +-b_s) then carry the net
+//   (Boost's TOMS 748 bracketing solver, started from the eq. 2 value inside the bracket omega_3 in
+//   [min V_i/r_i, max V_i/r_i], where both creepages have one sign at each end). The longitudinal springs of the two axle boxes (stiffness k each, at +-b_s) then carry the net
 //   longitudinal force and the yaw moment of the contact forces (quasi-static):
 //          F_sL + F_sR + F_x1 + F_x2 = 0,   b_s (F_sR - F_sL) + y_1 F_x1 ... (moment about z, see the .cpp)
 //   with spring deflections u = -F_s / k and the yaw deflection psi_s = (u_R - u_L) / (2 b_s).
@@ -51,7 +51,10 @@ struct RollerRigKinematicsInput {
 // validate() throws InputError for a value outside the ranges given.
 struct RollerRigKinematicsOptions {
   WheelContactOptions contact;        // every contact solve (RollerRigContactOptions gives the rig defaults)
-  double balance_tolerance = 1e-10;   // |g| <= this x (r_1 |F_x1| + r_2 |F_x2|) at the root, > 0
+  // |g| <= this x (r_1 |F_x1| + r_2 |F_x2|) at the root, > 0. In full sliding at both contacts (constant mu) g is
+  // flat (~1e-7 of the scale, from the spin) over the whole range between the saturation creepages, and the first
+  // approximation (eq. 2, opposite creepages) is accepted: the balance does not determine omega_3 better there.
+  double balance_tolerance = 1e-7;
   int max_evaluations = 60;           // contact-pair evaluations of the root find, >= 2
   void validate() const;
 };

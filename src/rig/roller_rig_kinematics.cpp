@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
+
+#include <boost/math/tools/roots.hpp>
+#include <boost/math/tools/toms748_solve.hpp>
 
 #include "conforma/error.hpp"
-#include "conforma/root_finding.hpp"
 
 namespace conforma {
 
@@ -150,8 +153,10 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
   std::array<WheelContactReport, 2> last;
   std::array<double, 2> last_fx{0.0, 0.0}, last_m{0.0, 0.0};
   bool contact_failed = false;
+  double last_w3 = 0.0;
   auto evaluate = [&](double w3) {
     ++res.evaluations;
+    last_w3 = w3;
     double g = in.axle_torque_Nm;
     for (Side side : {Side::Left, Side::Right}) {
       const int k = side_index(side);
@@ -204,16 +209,27 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
       res.message = "no bracket of the wheelset speed (axle torque beyond the creep-force capacity?)";
       w3 = res.eq2_wheelset_speed_rad_s, g = evaluate(w3);
     } else {
-      // first approximation (eq. 2) narrows the bracket, then Illinois (root_finding.hpp)
+      // first approximation (eq. 2) narrows the bracket, then TOMS 748
       const double w0 = std::clamp(res.eq2_wheelset_speed_rad_s, lo, hi);
       const double g0 = evaluate(w0);
       if (std::abs(g0) <= tol) {
         w3 = w0, g = g0;
       } else {
         if (g0 < 0.0) lo = w0, f_lo = g0; else hi = w0, f_hi = g0;
-        int it = 0;
-        std::function<double(double)> f = [&](double x) { return evaluate(x); };
-        w3 = SolveIncreasingRoot(f, lo, hi, f_lo, f_hi, tol, &it, &g);
+        // Brent-type bracketing (Boost TOMS 748): robust where g is nearly flat (both contacts sliding) or steps
+        // (a contact point jumping between patches); stops when |g| meets the tolerance or the bracket collapses.
+        double last_g = g0;
+        auto f = [&](double x) { return last_g = evaluate(x); };
+        auto done = [&](double a, double b) { return std::abs(last_g) <= tol || std::abs(b - a) <= 1e-13 * std::abs(b); };
+        boost::uintmax_t max_iter = static_cast<boost::uintmax_t>(std::max(1, options.max_evaluations - res.evaluations));
+        const std::pair<double, double> br = boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, done, max_iter);
+        // converged: the last evaluation is the root (its contacts are reported); else the collapsed bracket's middle
+        if (std::abs(last_g) <= tol) {
+          w3 = last_w3;
+        } else {
+          w3 = 0.5 * (br.first + br.second);
+          f(w3);
+        }
         g = last_m[0] + last_m[1] + in.axle_torque_Nm;
       }
       res.status = std::abs(g) <= tol && !contact_failed && res.evaluations <= options.max_evaluations
