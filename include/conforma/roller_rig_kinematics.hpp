@@ -56,6 +56,10 @@ struct RollerRigKinematicsOptions {
   // approximation (eq. 2, opposite creepages) is accepted: the balance does not determine omega_3 better there.
   double balance_tolerance = 1e-7;
   int max_evaluations = 60;           // contact-pair evaluations of the root find, >= 2
+  // true: omega_3 is eq. 2's first approximation (opposite creepages at the loaded radii), no balance is solved (a
+  // test plan that prescribes the creepage of each contact, paper 000 Table 5); false: the moment balance. A measured
+  // omega_3 (RollerRigKinematicsInput) takes precedence over both.
+  bool eq2_wheelset_speed = false;
   void validate() const;
 };
 // The rig's contact options: model hertz, FASTSIM 20 x 20 (paper 000 §3.4), strip width 0.1 mm x phi, patch
@@ -79,7 +83,8 @@ struct RollerRigContactResult {
   double contact_y_m = 0.0;           // track-frame lateral position of the rigid contact point, m
 };
 
-// Converged: omega_3 solved (|g| within tolerance); Measured: omega_3 given (no balance solved); NotConverged: the
+// Converged: omega_3 solved (|g| within tolerance); Measured: omega_3 given (measured, or eq. 2 with
+// eq2_wheelset_speed; no balance solved); NotConverged: the
 // root find stopped at max_evaluations or lost its bracket (last iterate reported); NoContact: a wheel has no contact
 // (zero load, or the wheel does not face its roller) - nothing is balanced.
 enum class RollerRigKinematicsStatus { Converged, Measured, NotConverged, NoContact };

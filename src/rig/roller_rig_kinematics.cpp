@@ -175,8 +175,8 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
   };
 
   double w3 = 0.0, g = 0.0;
-  if (measured) {
-    w3 = in.wheelset_speed_rad_s;
+  if (measured || options.eq2_wheelset_speed) {
+    w3 = measured ? in.wheelset_speed_rad_s : res.eq2_wheelset_speed_rad_s;
     g = evaluate(w3);
     res.status = RollerRigKinematicsStatus::Measured;
   } else {
