@@ -51,6 +51,7 @@ conforma::RollerRigSampleOptions OptionsOf(const conforma_rig_params& p) {
   o.update_profiles = p.update_profiles == 1;
   o.filter_every_steps = p.filter_every_steps;
   o.filter_window_m = p.filter_window_m;
+  o.profile_update_every_steps = p.profile_update_every_steps;
   if (p.eq2_wheelset_speed != 0 && p.eq2_wheelset_speed != 1)
     throw conforma::InputError("conforma_rig_params.eq2_wheelset_speed must be 0 or 1");
   o.kinematics.eq2_wheelset_speed = p.eq2_wheelset_speed == 1;
@@ -113,6 +114,7 @@ void conforma_default_rig_params(conforma_rig_params* p) {
   p->update_profiles = 1;
   p->filter_every_steps = o.filter_every_steps;
   p->filter_window_m = o.filter_window_m;
+  p->profile_update_every_steps = o.profile_update_every_steps;
   p->eq2_wheelset_speed = 0;
 }
 

@@ -56,6 +56,10 @@ struct RollerRigKinematicsOptions {
   // approximation (eq. 2, opposite creepages) is accepted: the balance does not determine omega_3 better there.
   double balance_tolerance = 1e-7;
   int max_evaluations = 60;           // contact-pair evaluations of the root find, >= 2
+  // A contact whose load control stopped short (WheelContactStatus::NotConverged with patches, e.g. the contact point
+  // jumping between the shoulders of a worn groove) is accepted when its carried vertical force is within this
+  // fraction of the load (as the wear loop's load_acceptance, wear_simulation.hpp), >= 0; default 2 %.
+  double load_acceptance = 0.02;
   // true: omega_3 is eq. 2's first approximation (opposite creepages at the loaded radii), no balance is solved (a
   // test plan that prescribes the creepage of each contact, paper 000 Table 5); false: the moment balance. A measured
   // omega_3 (RollerRigKinematicsInput) takes precedence over both.

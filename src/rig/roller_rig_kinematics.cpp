@@ -47,6 +47,7 @@ double RollerRigEq2WheelsetSpeed(const std::array<double, 2>& w, const std::arra
 void RollerRigKinematicsOptions::validate() const {
   contact.validate();
   require_positive(balance_tolerance, "RollerRigKinematicsOptions.balance_tolerance");
+  require_non_negative(load_acceptance, "RollerRigKinematicsOptions.load_acceptance");
   if (max_evaluations < 2) throw InputError("RollerRigKinematicsOptions.max_evaluations must be >= 2");
 }
 
@@ -64,6 +65,13 @@ WheelContactOptions RollerRigContactOptions(const RollerRigSetup& setup) {
 }
 
 namespace {
+
+// Ok, or load control stopped short within the acceptance of the load (see RollerRigKinematicsOptions).
+bool Usable(const WheelContactReport& r, const WheelContactOptions& o, double acceptance) {
+  if (r.status == WheelContactStatus::Ok) return true;
+  return r.status == WheelContactStatus::NotConverged && !r.patches.empty() &&
+         std::abs(BalancedVerticalForce(r, o) - o.vertical_load_N) <= acceptance * o.vertical_load_N;
+}
 
 struct SideState {
   double R = 0.0, r = 0.0, V = 0.0, y = 0.0, load = 0.0;
@@ -137,7 +145,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
     v.forward_speed_m_s = st[k].V;
     v.axle_angular_velocity_rad_s = st[k].V / st[k].r;
     const WheelContactReport rep = SolveWheelContactCached(geometry, side, pose, v, o, cache);
-    if (rep.status != WheelContactStatus::Ok || rep.patches.empty()) {
+    if (!Usable(rep, o, options.load_acceptance) || rep.patches.empty()) {
       res.status = RollerRigKinematicsStatus::NoContact;
       res.message = std::string("the ") + to_string(side) + " wheel's normal contact failed: " + to_string(rep.status);
       return res;
@@ -167,7 +175,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
       WheelContactOptions o = options.contact;
       o.vertical_load_N = st[k].load;
       last[k] = SolveWheelContactCached(geometry, side, pose, v, o, cache);
-      if (last[k].status != WheelContactStatus::Ok) contact_failed = true;
+      if (!Usable(last[k], o, options.load_acceptance)) contact_failed = true;
       last_fx[k] = SumFx(last[k], &last_m[k]);
       g += last_m[k];
     }

@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+#include <vector>
 
 #include "conforma/error.hpp"
 #include "conforma/profile_update.hpp"
@@ -37,6 +41,7 @@ void RollerRigSampleOptions::validate() const {
   kinematics.validate();
   require_positive(wear_grid_spacing_m, "RollerRigSampleOptions.wear_grid_spacing_m");
   if (filter_every_steps < 1) throw InputError("RollerRigSampleOptions.filter_every_steps must be >= 1");
+  if (profile_update_every_steps < 1) throw InputError("RollerRigSampleOptions.profile_update_every_steps must be >= 1");
   require_non_negative(filter_window_m, "RollerRigSampleOptions.filter_window_m");
 }
 
@@ -73,6 +78,35 @@ WearModel RigWearModel(const RollerRigSampleOptions& o) {
   m.rail_material = o.setup.roller_material;
   return m;
 }
+
+// Paper 000 eqs. 19-21 on the stored samples of the reference profile: each sample moved by the depth along its
+// outward normal. The samples stay uniform in arc length up to the depth (nm to um per step, far below the 0.02 mm
+// spacing), so they are taken as the new profile's nodes without a refit (Profile::FromArcLengthSamples): the
+// refit of RemoveAlongNormal runs at the filter steps only.
+Profile RemoveRaw(const Profile& reference, const WearDistribution& depth) {
+  std::vector<Eigen::Vector2d> pts = reference.samples();
+  const double h = reference.spacing();
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const double si = std::min(h * static_cast<double>(i), reference.length());
+    pts[i] -= depth.at(si) * reference.normal(si);
+  }
+  return Profile::FromArcLengthSamples(pts, reference.kind(), reference.source());
+}
+
+// Arc length on a profile of a lateral position; the cells of one strip share it, so answers are kept per value.
+class ArcLengthOf {
+ public:
+  explicit ArcLengthOf(const Profile& p) : p_(p) {}
+  std::optional<double> operator()(double y) {
+    const auto it = known_.find(y);
+    if (it != known_.end()) return it->second;
+    return known_[y] = p_.s_at(y);
+  }
+
+ private:
+  const Profile& p_;
+  std::unordered_map<double, std::optional<double>> known_;
+};
 
 }  // namespace
 
@@ -152,15 +186,14 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
     WearPatch patch;
     patch.rolling_speed_m_s = c.roller_surface_speed_m_s;
     patch.wheel_radius_m = c.wheel_rolling_radius_m;
-    const Profile& wref = state->wheel_reference[k];
-    const Profile& rref = state->roller_reference[k];
+    ArcLengthOf wheel_s(state->wheel_reference[k]), roller_s(state->roller_reference[k]);
     for (const PatchReport& p : c.report.patches) {
       for (const ContactCell& cell : p.cells) {
         if (cell.slip_x == 0.0 && cell.slip_s == 0.0) continue;  // adhesion: Archard and USFD remove nothing
         const double sv = std::hypot(cell.slip_x, cell.slip_s) * c.roller_surface_speed_m_s;
         res.max_slip_velocity_m_s[k] = std::max(res.max_slip_velocity_m_s[k], sv);
-        const std::optional<double> s_w = wref.s_at(cell.wheel_y_m);
-        const std::optional<double> s_r = rref.s_at(mounted.position(cell.rail_s_m).x() + mounted_to_profile_y);
+        const std::optional<double> s_w = wheel_s(cell.wheel_y_m);
+        const std::optional<double> s_r = roller_s(mounted.position(cell.rail_s_m).x() + mounted_to_profile_y);
         if (!s_w || !s_r) continue;  // outside a profile (not expected on the tread); counted by none
         WearCell wc;
         wc.traction_Pa = Eigen::Vector2d(cell.traction_x_Pa, cell.traction_s_Pa);
@@ -214,16 +247,15 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
           next.roller[k] = next.roller_reference[k];
           next.wheel_pending[k] = WearDistribution::ForProfile(next.wheel_reference[k], options.wear_grid_spacing_m);
           next.roller_pending[k] = WearDistribution::ForProfile(next.roller_reference[k], options.wear_grid_spacing_m);
-        } else if (any_wear) {
+        } else if (any_wear && next.step % options.profile_update_every_steps == 0) {
           // eqs. 19-21: the raw depth since the last filter along the normal of the reference profile
-          if (next.wheel_pending[k].max_depth_m() > 0.0)
-            next.wheel[k] = RemoveAlongNormal(state->wheel_reference[k], next.wheel_pending[k], 0.0, "rig wheel wear");
+          if (next.wheel_pending[k].max_depth_m() > 0.0) next.wheel[k] = RemoveRaw(state->wheel_reference[k], next.wheel_pending[k]);
           if (next.roller_pending[k].max_depth_m() > 0.0)
-            next.roller[k] = RemoveAlongNormal(state->roller_reference[k], next.roller_pending[k], 0.0, "rig roller wear");
+            next.roller[k] = RemoveRaw(state->roller_reference[k], next.roller_pending[k]);
         }
       }
       res.filtered = filter_now;
-      res.profiles_updated = filter_now || any_wear;
+      res.profiles_updated = filter_now || (any_wear && next.step % options.profile_update_every_steps == 0);
       if (res.profiles_updated) next.geometry = BuildGeometry(options.setup, next.wheel, next.roller);
     } catch (const InputError& e) {
       res.status = RollerRigSampleStatus::ProfileUpdateFailed;
