@@ -14,7 +14,7 @@
 //   roller "uic60_1in20": 60E1 canted 1:20 scaled by the length factor (the paper's rollers; its undisclosed
 //                     modification for the a/b ratio is left out, as in docs/physics-reference.md §7.5);
 //          else a profile file, taken as it is (canted, at rig scale).
-// The shared roller profiles of ../shared/data/profiles/contact/ are of other rigs (docs/physics-reference.md §7.5)
+// The shared roller profiles (profiles/contact/ of the shared data, docs/data.md) are of other rigs (§7.5 there)
 // and are not the default.
 #include <array>
 #include <string>
