@@ -240,7 +240,7 @@ typedef struct conforma_rig_params {
   int wear_law;                    /* 0: Archard, paper 000 Table 3 (default); 1: USFD T-gamma wear index */
   int update_profiles;             /* 1 (default): remove the wear from the profiles every sample; 0: report only */
   int filter_every_steps;          /* 10: sliding-mean filter every N samples (paper 000 §3.5) */
-  double filter_window_m;          /* 0.5e-3: width of the sliding mean, m */
+  double filter_window_m;          /* 1e-3: width of the sliding mean, m */
   int profile_update_every_steps;  /* 1 (default): the profiles in contact take the wear every sample; N: every N */
   int eq2_wheelset_speed;          /* 0 (default): wheelset speed from the moment balance; 1: eq. 2 (opposite creepages) */
 } conforma_rig_params;

@@ -111,6 +111,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
   pose.lateral_m = in.lateral_m;
   pose.yaw_rad = in.yaw_rad;
   std::array<SideState, 2> st;
+  std::array<WheelsetPose, 2> side_pose;
   for (Side side : {Side::Left, Side::Right}) {
     const int k = side_index(side);
     if (!(in.wheel_load_N[k] > 0.0)) {
@@ -118,7 +119,12 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
       res.message = std::string("no load on the ") + to_string(side) + " wheel";
       return res;
     }
-    const WheelContactResult rc = geometry.RigidContact(side, pose);
+    // each wheel starts its load control touching its roller (worn profiles: the mounted roller keeps its highest,
+    // unworn point at z = 0 while the contact sinks into the groove)
+    double gap = 0.0, gap_y = 0.0;
+    side_pose[k] = pose;
+    if (geometry.MinimumVerticalGap(side, pose, &gap, &gap_y)) side_pose[k].vertical_m -= gap;
+    const WheelContactResult rc = geometry.RigidContact(side, side_pose[k]);
     if (rc.status != ContactStatus::Ok || rc.points.empty()) {
       res.status = RollerRigKinematicsStatus::NoContact;
       res.message = std::string("the ") + to_string(side) + " wheel does not face its roller";
@@ -144,7 +150,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
     WheelsetVelocity v;
     v.forward_speed_m_s = st[k].V;
     v.axle_angular_velocity_rad_s = st[k].V / st[k].r;
-    const WheelContactReport rep = SolveWheelContactCached(geometry, side, pose, v, o, cache);
+    const WheelContactReport rep = SolveWheelContactCached(geometry, side, side_pose[k], v, o, cache);
     if (!Usable(rep, o, options.load_acceptance) || rep.patches.empty()) {
       res.status = RollerRigKinematicsStatus::NoContact;
       res.message = std::string("the ") + to_string(side) + " wheel's normal contact failed: " + to_string(rep.status);
@@ -174,7 +180,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
       v.axle_angular_velocity_rad_s = w3;
       WheelContactOptions o = options.contact;
       o.vertical_load_N = st[k].load;
-      last[k] = SolveWheelContactCached(geometry, side, pose, v, o, cache);
+      last[k] = SolveWheelContactCached(geometry, side, side_pose[k], v, o, cache);
       if (!Usable(last[k], o, options.load_acceptance)) contact_failed = true;
       last_fx[k] = SumFx(last[k], &last_m[k]);
       g += last_m[k];

@@ -50,7 +50,7 @@ RollerRigSampleOptions RollerRigSampleOptions::Defaults(const RollerRigSetup& se
   o.setup = setup;
   o.kinematics.contact = RollerRigContactOptions(setup);
   o.wear_grid_spacing_m = 0.1e-3 * setup.length_factor;
-  o.filter_window_m = 2.5e-3 * setup.length_factor;
+  o.filter_window_m = 5.0e-3 * setup.length_factor;
   return o;
 }
 
