@@ -43,6 +43,10 @@ struct RollerRigSampleOptions {
   // every step, as paper 000 §3.5. A larger N (at most filter_every_steps) saves the geometry rebuild (~0.7 ms at
   // 1:5) on the steps in between; the wear is still computed and accumulated every step.
   int profile_update_every_steps = 1;
+  // At a filter step the smoothed depth is removed by moving the reference profile's samples along their normals
+  // (no refit) while the depth so moved since the last refit stays below this fraction of the sample spacing; beyond
+  // it RemoveAlongNormal refits and checks the profile (profile_update.hpp). >= 0; 0: refit at every filter.
+  double refit_depth_fraction = 0.1;
   // Width of the sliding mean along the arc length, m, >= 0 (0: no filter). Default 1 mm: ~4 % of the rig wheel's
   // 26 mm profile (paper 001's sliding mean spans 1-5 % of the profile points), about the contact width 2b. Narrower
   // windows (0.5 mm) leave ripples of the strip-wise depth that the Hertz model reads as many sharp contact points
@@ -78,6 +82,8 @@ struct RollerRigState {
   std::array<WearDistribution, 2> wheel_pending;   // raw depth since the last filter, on the reference wheel grids, m
   std::array<WearDistribution, 2> roller_pending;  // on the reference roller grids, m
   std::shared_ptr<const WheelsetTrackGeometry> geometry;  // of wheel / roller
+  std::array<double, 2> wheel_unrefit_m{0.0, 0.0};   // depth moved without refit since the last refit, m
+  std::array<double, 2> roller_unrefit_m{0.0, 0.0};  // m
   long step = 0;                        // samples processed with wear
   double time_s = 0.0;                  // sum of the processed samples' durations, s
   std::array<double, 2> roller_distance_m{0.0, 0.0};  // rolled distance of each roller surface, m

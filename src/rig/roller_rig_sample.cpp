@@ -42,6 +42,7 @@ void RollerRigSampleOptions::validate() const {
   require_positive(wear_grid_spacing_m, "RollerRigSampleOptions.wear_grid_spacing_m");
   if (filter_every_steps < 1) throw InputError("RollerRigSampleOptions.filter_every_steps must be >= 1");
   if (profile_update_every_steps < 1) throw InputError("RollerRigSampleOptions.profile_update_every_steps must be >= 1");
+  require_non_negative(refit_depth_fraction, "RollerRigSampleOptions.refit_depth_fraction");
   require_non_negative(filter_window_m, "RollerRigSampleOptions.filter_window_m");
 }
 
@@ -239,10 +240,21 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
           // sliding mean of the wear since the last filter, removed from the reference profiles for good
           const WearDistribution fw = SlidingMean(next.wheel_pending[k], options.filter_window_m);
           const WearDistribution fr = SlidingMean(next.roller_pending[k], options.filter_window_m);
+          // removal without refit while the depth moved since the last refit stays below refit_depth_fraction of
+          // the sample spacing; then RemoveAlongNormal (refit, arc-length reparametrisation, validity checks)
+          auto remove = [&](const Profile& ref, const WearDistribution& d, double* unrefit, const char* what) {
+            if (*unrefit + d.max_depth_m() < options.refit_depth_fraction * ref.spacing()) {
+              *unrefit += d.max_depth_m();
+              return RemoveRaw(ref, d);
+            }
+            *unrefit = 0.0;
+            return RemoveAlongNormal(ref, d, 0.0, what);
+          };
           if (fw.max_depth_m() > 0.0)
-            next.wheel_reference[k] = RemoveAlongNormal(state->wheel_reference[k], fw, 0.0, "rig wheel filter");
+            next.wheel_reference[k] = remove(state->wheel_reference[k], fw, &next.wheel_unrefit_m[k], "rig wheel filter");
           if (fr.max_depth_m() > 0.0)
-            next.roller_reference[k] = RemoveAlongNormal(state->roller_reference[k], fr, 0.0, "rig roller filter");
+            next.roller_reference[k] =
+                remove(state->roller_reference[k], fr, &next.roller_unrefit_m[k], "rig roller filter");
           next.wheel[k] = next.wheel_reference[k];
           next.roller[k] = next.roller_reference[k];
           next.wheel_pending[k] = WearDistribution::ForProfile(next.wheel_reference[k], options.wear_grid_spacing_m);
