@@ -218,6 +218,88 @@ CONFORMA_C_EXPORT conforma_status conforma_evaluate(const conforma_model* model,
 /* Copies the most recent error text of any call on this handle ("" if none) into buffer; returns its full length. */
 CONFORMA_C_EXPORT size_t conforma_model_last_error(const conforma_model* model, char* buffer, size_t buffer_size);
 
+/* ---------------------------------------------------------------- roller rig (issue 18, paper 000)
+ * One 20 ms sample of a wheelset on two driven rollers (include/conforma/roller_rig_sample.hpp): measured y, yaw,
+ * roller speeds (optionally the wheelset speed) and wheel loads -> both contacts' forces and creepages (Hertz +
+ * FASTSIM by default), the Archard wear of wheel and roller (paper 000 Table 3) and the profile update with the
+ * sliding-mean filter every filter_every_steps samples. The handle HOLDS THE RIG STATE (the worn profiles): one
+ * handle per rig, used by one thread at a time (not thread-safe on the same handle; separate handles are
+ * independent). Cost: tests/bench/bench_rig_sample.cpp (conforma_bench --benchmark_filter=RigSample). */
+typedef struct conforma_rig_params {
+  const char* wheel_profile;       /* "conical" (default: 0.036 rad cone, paper 000 §4), "s1002" (scaled) or a file */
+  const char* roller_profile;      /* "uic60_1in20" (default: 60E1 canted 1:20, scaled) or a file (rig scale) */
+  double roller_radius_m;          /* 0.185 (Table 1) */
+  double wheel_radius_m;           /* 0.0944 (Table 1) */
+  double length_factor;            /* 0.2: 1:5 rig (profiles and track dimensions scaled) */
+  double wheel_conicity_rad;       /* 0.036: the "conical" wheel */
+  double longitudinal_stiffness_N_per_m;  /* 2e6 per axle box (an assumption; roller_rig.hpp) */
+  double spring_half_spacing_m;    /* 0.2 (an assumption) */
+  const char* model;               /* "hertz" (default), "kp", "kpec", "conformal", "auto" */
+  double friction_coefficient;     /* 0.3 */
+  int fastsim_elements;            /* 20 (paper 000 §3.4) */
+  int wear_law;                    /* 0: Archard, paper 000 Table 3 (default); 1: USFD T-gamma wear index */
+  int update_profiles;             /* 1 (default): remove the wear from the profiles every sample; 0: report only */
+  int filter_every_steps;          /* 10: sliding-mean filter every N samples (paper 000 §3.5) */
+  double filter_window_m;          /* 1e-3: width of the sliding mean, m */
+  int profile_update_every_steps;  /* 1 (default): the profiles in contact take the wear every sample; N: every N */
+  int eq2_wheelset_speed;          /* 0 (default): wheelset speed from the moment balance; 1: eq. 2 (opposite creepages) */
+} conforma_rig_params;
+
+typedef struct conforma_rig_sample {
+  double time_s;                   /* time stamp, s (reported only) */
+  double duration_s;               /* step the sample stands for, s, > 0 (0.02 on the rig) */
+  double lateral_m, yaw_rad;       /* measured wheelset lateral shift (m, + towards roller 1 / left) and yaw (rad) */
+  double lateral_velocity_m_s;     /* dy/dt, m/s */
+  double roller_speed_rad_s[2];    /* omega_1 (left wheel's roller), omega_2, rad/s, > 0 */
+  double wheel_load_N[2];          /* vertical load per wheel [left, right], N, > 0 */
+  double wheelset_speed_rad_s;     /* measured omega_3, rad/s; <= 0: solved (moment balance or eq. 2) */
+} conforma_rig_sample;
+
+typedef struct conforma_rig_contact_result {
+  int patch_count;                 /* contact patches of this wheel */
+  double normal_force_N;           /* sum over the patches */
+  double longitudinal_force_N;     /* creep force on the wheel along the rolling direction, N */
+  double lateral_force_N;          /* creep force on the wheel along the roller profile (+ field side), N */
+  double creepage_longitudinal;    /* xi of the largest patch (paper 000 eq. 2 at the loaded radii) */
+  double creepage_lateral;         /* eta of the largest patch */
+  double creepage_spin_per_m;      /* phi of the largest patch, 1/m */
+  double roller_rolling_radius_m;  /* R_i at the contact */
+  double wheel_rolling_radius_m;   /* effective r_i (r - approach) */
+  double roller_surface_speed_m_s; /* V_i = omega_i R_i */
+  double wheel_wear_max_depth_m;   /* depth added to the wheel in this sample, m */
+  double wheel_wear_area_m2;       /* its integral over the arc length, m^2 */
+  double roller_wear_max_depth_m;  /* depth added to the roller, m */
+  double roller_wear_area_m2;      /* m^2 */
+  double spring_force_N;           /* longitudinal spring force of this side's axle box on the wheelset, N */
+} conforma_rig_contact_result;
+
+typedef struct conforma_rig_result {
+  int status;                      /* 0 ok, 1 contact failed (kinematics_status says why), 2 profile update failed */
+  int kinematics_status;           /* 0 converged, 1 measured/eq. 2, 2 not converged, 3 no contact */
+  double wheelset_speed_rad_s;     /* omega_3 used */
+  double eq2_wheelset_speed_rad_s; /* eq. 2 first approximation */
+  double axle_moment_residual_Nm;  /* r_1 F_x1 + r_2 F_x2 at the result */
+  double yaw_deflection_rad;       /* of the longitudinal springs */
+  int profiles_updated;            /* 1 when the profiles changed in this sample */
+  int filtered;                    /* 1 when the sliding-mean filter ran */
+  long step;                       /* samples processed so far by this handle */
+  conforma_rig_contact_result contact[2];  /* [left wheel / roller 1, right wheel / roller 2] */
+  char error_message[CONFORMA_ERROR_TEXT];  /* "" on success; the reason of a non-ok status or an error */
+} conforma_rig_result;
+
+typedef struct conforma_rig conforma_rig;  /* opaque handle: rig options and the evolving profiles */
+
+CONFORMA_C_EXPORT void conforma_default_rig_params(conforma_rig_params* params);
+/* Builds the rig (profiles, geometry). On failure *rig is NULL and error_text receives the message. */
+CONFORMA_C_EXPORT conforma_status conforma_rig_create(const conforma_rig_params* params, conforma_rig** rig,
+                                                      char* error_text, size_t error_text_size);
+/* Processes one sample on the rig's state (ProcessRigSample). CONFORMA_OK also when result->status is not 0 (a
+ * failed contact or profile update is a status, with its message); CONFORMA_ERROR_INPUT for bad sample values. */
+CONFORMA_C_EXPORT conforma_status conforma_rig_process_sample(conforma_rig* rig, const conforma_rig_sample* sample,
+                                                              conforma_rig_result* result);
+/* Frees the rig (NULL is ignored). */
+CONFORMA_C_EXPORT void conforma_rig_destroy(conforma_rig* rig);
+
 CONFORMA_C_EXPORT int conforma_api_version(void);
 
 #ifdef __cplusplus

@@ -20,6 +20,7 @@ void RegisterTrackCommand(CLI::App& app);      // conforma track: track irregula
 void RegisterDynamicsCommand(CLI::App& app);   // conforma dynamics: time-domain lateral vehicle dynamics, eigenvalues
 void RegisterLutCommand(CLI::App& app);        // conforma lut: contact look-up table build / info / eval / check
 void RegisterRigAdhesionCommand(CLI::App& app);  // conforma rig-adhesion: roller-rig adhesion tests (paper 000)
+void RegisterRigCommand(CLI::App& app);        // conforma rig run|replay: roller-rig wear test plan, replay (paper 000)
 void RegisterCampaignCommand(CLI::App& app);   // conforma campaign: many runs of generated scenarios (Python, Dask)
 
 // Run-time files of the commands (conforma/data_paths.hpp), resolved when a command runs, not when it is declared

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   conforma::cli::RegisterDynamicsCommand(app);
   conforma::cli::RegisterLutCommand(app);
   conforma::cli::RegisterRigAdhesionCommand(app);
+  conforma::cli::RegisterRigCommand(app);
   conforma::cli::RegisterCampaignCommand(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,284 @@
+// One roller-rig sample: kinematics and contacts, wear of wheel and roller, profile update with the sliding-mean
+// filter (roller_rig_sample.hpp; paper 000 §3.4 eqs. 7-17, §3.5 eqs. 18-21).
+#include "conforma/roller_rig_sample.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <unordered_map>
+#include <vector>
+
+#include "conforma/error.hpp"
+#include "conforma/profile_update.hpp"
+#include "conforma/wear_law.hpp"
+
+namespace conforma {
+
+namespace {
+constexpr double kTwoPi = 6.283185307179586476925;
+}
+
+const char* to_string(RollerRigWearLaw law) { return law == RollerRigWearLaw::Archard ? "archard" : "wear_index"; }
+
+RollerRigWearLaw RollerRigWearLawFromName(const std::string& name) {
+  if (name == "archard") return RollerRigWearLaw::Archard;
+  if (name == "wear_index" || name == "tgamma" || name == "usfd") return RollerRigWearLaw::WearIndex;
+  throw InputError("unknown rig wear law '" + name + "' (archard, wear_index)");
+}
+
+const char* to_string(RollerRigSampleStatus status) {
+  switch (status) {
+    case RollerRigSampleStatus::Ok: return "ok";
+    case RollerRigSampleStatus::ContactFailed: return "contact_failed";
+    case RollerRigSampleStatus::ProfileUpdateFailed: return "profile_update_failed";
+  }
+  return "unknown";
+}
+
+void RollerRigSampleOptions::validate() const {
+  setup.validate();
+  kinematics.validate();
+  require_positive(wear_grid_spacing_m, "RollerRigSampleOptions.wear_grid_spacing_m");
+  if (filter_every_steps < 1) throw InputError("RollerRigSampleOptions.filter_every_steps must be >= 1");
+  if (profile_update_every_steps < 1) throw InputError("RollerRigSampleOptions.profile_update_every_steps must be >= 1");
+  require_non_negative(refit_depth_fraction, "RollerRigSampleOptions.refit_depth_fraction");
+  require_non_negative(filter_window_m, "RollerRigSampleOptions.filter_window_m");
+}
+
+RollerRigSampleOptions RollerRigSampleOptions::Defaults(const RollerRigSetup& setup) {
+  RollerRigSampleOptions o;
+  o.setup = setup;
+  o.kinematics.contact = RollerRigContactOptions(setup);
+  o.wear_grid_spacing_m = 0.1e-3 * setup.length_factor;
+  o.filter_window_m = 5.0e-3 * setup.length_factor;
+  return o;
+}
+
+int RollerRigFilterSteps(double step_s) {
+  require_positive(step_s, "rig step");
+  return std::max(1, static_cast<int>(std::lround(0.2 / step_s)));  // paper 000 §3.5: every 10 steps of 20 ms
+}
+
+namespace {
+
+std::shared_ptr<const WheelsetTrackGeometry> BuildGeometry(const RollerRigSetup& setup, const std::array<Profile, 2>& w,
+                                                           const std::array<Profile, 2>& r) {
+  return std::make_shared<const WheelsetTrackGeometry>(MakeRollerRigTrack(setup, w, r), RollerRigGeometryOptions(setup));
+}
+
+WearModel RigWearModel(const RollerRigSampleOptions& o) {
+  WearModel m;
+  if (o.wear_law == RollerRigWearLaw::Archard) {
+    m.wheel_law.kind = WearLawKind::Archard;
+    m.wheel_law.archard = ArchardMap::Paper000Wheel();
+    m.rail_law.kind = WearLawKind::Archard;
+    m.rail_law.archard = ArchardMap::Paper000Roller();
+  }  // else: the default WearLaw, the USFD wear-index table, for both bodies
+  m.wheel_material = o.setup.wheel_material;
+  m.rail_material = o.setup.roller_material;
+  return m;
+}
+
+// Paper 000 eqs. 19-21 on the stored samples of the reference profile: each sample moved by the depth along its
+// outward normal. The samples stay uniform in arc length up to the depth (nm to um per step, far below the 0.02 mm
+// spacing), so they are taken as the new profile's nodes without a refit (Profile::FromArcLengthSamples): the
+// refit of RemoveAlongNormal runs at the filter steps only.
+Profile RemoveRaw(const Profile& reference, const WearDistribution& depth) {
+  std::vector<Eigen::Vector2d> pts = reference.samples();
+  const double h = reference.spacing();
+  for (size_t i = 0; i < pts.size(); ++i) {
+    const double si = std::min(h * static_cast<double>(i), reference.length());
+    pts[i] -= depth.at(si) * reference.normal(si);
+  }
+  return Profile::FromArcLengthSamples(pts, reference.kind(), reference.source());
+}
+
+// Arc length on a profile of a lateral position; the cells of one strip share it, so answers are kept per value.
+class ArcLengthOf {
+ public:
+  explicit ArcLengthOf(const Profile& p) : p_(p) {}
+  std::optional<double> operator()(double y) {
+    const auto it = known_.find(y);
+    if (it != known_.end()) return it->second;
+    return known_[y] = p_.s_at(y);
+  }
+
+ private:
+  const Profile& p_;
+  std::unordered_map<double, std::optional<double>> known_;
+};
+
+}  // namespace
+
+WearDistribution SlidingMean(const WearDistribution& depth, double window_m) {
+  require_non_negative(window_m, "sliding-mean window");
+  const long n = static_cast<long>(depth.size());
+  const long m = depth.spacing_m > 0.0 ? static_cast<long>(std::floor(0.5 * window_m / depth.spacing_m + 1e-9)) : 0;
+  if (m < 1 || n < 3) return depth;
+  WearDistribution out = depth;
+  std::vector<double> prefix(n + 1, 0.0);
+  for (long i = 0; i < n; ++i) prefix[i + 1] = prefix[i] + depth.depth_m[i];
+  for (long i = 0; i < n; ++i) {
+    const long h = std::min({m, i, n - 1 - i});  // symmetric window, shrinking at the ends
+    out.depth_m[i] = (prefix[i + h + 1] - prefix[i - h]) / static_cast<double>(2 * h + 1);
+  }
+  return out;
+}
+
+RollerRigState MakeRollerRigState(const RollerRigSampleOptions& options, const std::array<Profile, 2>& wheel,
+                                  const std::array<Profile, 2>& roller) {
+  options.validate();
+  RollerRigState s;
+  s.wheel = s.wheel_reference = wheel;
+  s.roller = s.roller_reference = roller;
+  for (int k = 0; k < 2; ++k) {
+    s.wheel_pending[k] = WearDistribution::ForProfile(wheel[k], options.wear_grid_spacing_m);
+    s.roller_pending[k] = WearDistribution::ForProfile(roller[k], options.wear_grid_spacing_m);
+  }
+  s.geometry = BuildGeometry(options.setup, wheel, roller);
+  return s;
+}
+
+RollerRigState MakeRollerRigState(const RollerRigSampleOptions& options) {
+  const Profile w = MakeRollerRigWheelProfile(options.setup), r = MakeRollerRigRollerProfile(options.setup);
+  return MakeRollerRigState(options, {w, w}, {r, r});
+}
+
+RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, RollerRigState* state,
+                                       const RollerRigSample& sample) {
+  options.validate();
+  if (state == nullptr || !state->geometry) throw InputError("ProcessRigSample: no rig state (MakeRollerRigState)");
+  require_positive(sample.duration_s, "rig sample duration_s");
+  require_finite(sample.time_s, "rig sample time_s");
+  RollerRigSampleResult res;
+  RollerRigKinematicsInput in;
+  in.lateral_m = sample.lateral_m;
+  in.yaw_rad = sample.yaw_rad;
+  in.lateral_velocity_m_s = sample.lateral_velocity_m_s;
+  in.roller_speed_rad_s = sample.roller_speed_rad_s;
+  in.wheel_load_N = sample.wheel_load_N;
+  in.wheelset_speed_rad_s = sample.wheelset_speed_rad_s;
+  RollerRigKinematicsOptions ko = options.kinematics;
+  ko.contact.keep_fields = true;
+  ko.contact.solve_tangential = true;
+  const WheelsetTrackGeometry& geometry = *state->geometry;
+  res.kinematics = SolveRollerRigKinematics(geometry, options.setup, in, ko);
+  res.step = state->step;
+  if (res.kinematics.status != RollerRigKinematicsStatus::Converged &&
+      res.kinematics.status != RollerRigKinematicsStatus::Measured) {
+    res.status = RollerRigSampleStatus::ContactFailed;
+    res.message = std::string("rig kinematics ") + to_string(res.kinematics.status) + ": " + res.kinematics.message;
+    return res;
+  }
+
+  // ---- wear of this step (paper 000 eqs. 7-17)
+  const WearModel model = RigWearModel(options);
+  const double dt = sample.duration_s;
+  const double w3 = res.kinematics.wheelset_speed_rad_s;
+  std::array<WearDistribution, 2> wheel_add, roller_add;
+  bool any_wear = false;
+  for (Side side : {Side::Left, Side::Right}) {
+    const int k = side_index(side);
+    const RollerRigContactResult& c = res.kinematics.contact[k];
+    const Profile& mounted = geometry.mounted_rail(side);
+    // the mounted roller is the current profile translated (inclination 0): the same material point starts both
+    const double mounted_to_profile_y = state->roller[k].position(0.0).x() - mounted.position(0.0).x();
+    WearPatch patch;
+    patch.rolling_speed_m_s = c.roller_surface_speed_m_s;
+    patch.wheel_radius_m = c.wheel_rolling_radius_m;
+    ArcLengthOf wheel_s(state->wheel_reference[k]), roller_s(state->roller_reference[k]);
+    for (const PatchReport& p : c.report.patches) {
+      for (const ContactCell& cell : p.cells) {
+        if (cell.slip_x == 0.0 && cell.slip_s == 0.0) continue;  // adhesion: Archard and USFD remove nothing
+        const double sv = std::hypot(cell.slip_x, cell.slip_s) * c.roller_surface_speed_m_s;
+        res.max_slip_velocity_m_s[k] = std::max(res.max_slip_velocity_m_s[k], sv);
+        const std::optional<double> s_w = wheel_s(cell.wheel_y_m);
+        const std::optional<double> s_r = roller_s(mounted.position(cell.rail_s_m).x() + mounted_to_profile_y);
+        if (!s_w || !s_r) continue;  // outside a profile (not expected on the tread); counted by none
+        WearCell wc;
+        wc.traction_Pa = Eigen::Vector2d(cell.traction_x_Pa, cell.traction_s_Pa);
+        wc.slip = Eigen::Vector2d(cell.slip_x, cell.slip_s);
+        wc.pressure_Pa = cell.pressure_Pa;
+        wc.area_m2 = cell.area_m2;
+        wc.length_x_m = cell.length_x_m;
+        wc.wheel_s_m = *s_w;
+        wc.rail_s_m = *s_r;
+        patch.cells.push_back(wc);
+      }
+    }
+    wheel_add[k] = WearDistribution::Zero(state->wheel_pending[k].length_m(), state->wheel_pending[k].spacing_m);
+    roller_add[k] = WearDistribution::Zero(state->roller_pending[k].length_m(), state->roller_pending[k].spacing_m);
+    if (patch.cells.empty()) continue;
+    const PatchWear pw = ComputePatchWear(patch, model, state->wheel_pending[k], state->roller_pending[k]);
+    // paper 000 eq. 17: passages in dt, omega dt / (2 pi), for the wheel ring and the roller ring
+    wheel_add[k].add(pw.wheel_depth_per_passage, w3 * dt / kTwoPi);
+    roller_add[k].add(pw.rail_depth_per_passage, sample.roller_speed_rad_s[k] * dt / kTwoPi);
+    res.wheel_wear_max_depth_m[k] = wheel_add[k].max_depth_m();
+    res.roller_wear_max_depth_m[k] = roller_add[k].max_depth_m();
+    res.wheel_wear_area_m2[k] = wheel_add[k].area_m2();
+    res.roller_wear_area_m2[k] = roller_add[k].area_m2();
+    res.wheel_wear_volume_m3[k] = res.wheel_wear_area_m2[k] * kTwoPi * c.wheel_rolling_radius_m;
+    res.roller_wear_volume_m3[k] = res.roller_wear_area_m2[k] * kTwoPi * c.roller_rolling_radius_m;
+    any_wear = any_wear || res.wheel_wear_area_m2[k] > 0.0 || res.roller_wear_area_m2[k] > 0.0;
+  }
+
+  // ---- profile update (paper 000 §3.5)
+  RollerRigState next = *state;
+  for (int k = 0; k < 2; ++k) {
+    next.wheel_pending[k].add(wheel_add[k], 1.0);
+    next.roller_pending[k].add(roller_add[k], 1.0);
+  }
+  next.step = state->step + 1;
+  next.time_s = state->time_s + dt;
+  for (int k = 0; k < 2; ++k) next.roller_distance_m[k] += sample.roller_speed_rad_s[k] * dt * res.kinematics.contact[k].roller_rolling_radius_m;
+  if (options.update_profiles) {
+    try {
+      const bool filter_now = next.step % options.filter_every_steps == 0;
+      for (int k = 0; k < 2; ++k) {
+        if (filter_now) {
+          // sliding mean of the wear since the last filter, removed from the reference profiles for good
+          const WearDistribution fw = SlidingMean(next.wheel_pending[k], options.filter_window_m);
+          const WearDistribution fr = SlidingMean(next.roller_pending[k], options.filter_window_m);
+          // removal without refit while the depth moved since the last refit stays below refit_depth_fraction of
+          // the sample spacing; then RemoveAlongNormal (refit, arc-length reparametrisation, validity checks)
+          auto remove = [&](const Profile& ref, const WearDistribution& d, double* unrefit, const char* what) {
+            if (*unrefit + d.max_depth_m() < options.refit_depth_fraction * ref.spacing()) {
+              *unrefit += d.max_depth_m();
+              return RemoveRaw(ref, d);
+            }
+            *unrefit = 0.0;
+            return RemoveAlongNormal(ref, d, 0.0, what);
+          };
+          if (fw.max_depth_m() > 0.0)
+            next.wheel_reference[k] = remove(state->wheel_reference[k], fw, &next.wheel_unrefit_m[k], "rig wheel filter");
+          if (fr.max_depth_m() > 0.0)
+            next.roller_reference[k] =
+                remove(state->roller_reference[k], fr, &next.roller_unrefit_m[k], "rig roller filter");
+          next.wheel[k] = next.wheel_reference[k];
+          next.roller[k] = next.roller_reference[k];
+          next.wheel_pending[k] = WearDistribution::ForProfile(next.wheel_reference[k], options.wear_grid_spacing_m);
+          next.roller_pending[k] = WearDistribution::ForProfile(next.roller_reference[k], options.wear_grid_spacing_m);
+        } else if (any_wear && next.step % options.profile_update_every_steps == 0) {
+          // eqs. 19-21: the raw depth since the last filter along the normal of the reference profile
+          if (next.wheel_pending[k].max_depth_m() > 0.0) next.wheel[k] = RemoveRaw(state->wheel_reference[k], next.wheel_pending[k]);
+          if (next.roller_pending[k].max_depth_m() > 0.0)
+            next.roller[k] = RemoveRaw(state->roller_reference[k], next.roller_pending[k]);
+        }
+      }
+      res.filtered = filter_now;
+      res.profiles_updated = filter_now || (any_wear && next.step % options.profile_update_every_steps == 0);
+      if (res.profiles_updated) next.geometry = BuildGeometry(options.setup, next.wheel, next.roller);
+    } catch (const InputError& e) {
+      res.status = RollerRigSampleStatus::ProfileUpdateFailed;
+      res.message = e.what();
+      res.profiles_updated = res.filtered = false;
+      return res;  // the state keeps its previous profiles
+    }
+  }
+  *state = std::move(next);
+  res.step = state->step;
+  return res;
+}
+
+}  // namespace conforma
