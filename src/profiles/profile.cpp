@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include "conforma/error.hpp"
@@ -160,8 +161,7 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
   for (int i = 0; i < n; ++i) sgrid[i] = i * out.h_;
   out.y2_ = natural_spline_second_derivatives(sgrid, out.y_);
   out.z2_ = natural_spline_second_derivatives(sgrid, out.z_);
-  out.y_min_ = *std::min_element(out.y_.begin(), out.y_.end());
-  out.y_max_ = *std::max_element(out.y_.begin(), out.y_.end());
+  out.set_y_range();
   return out;
 }
 
@@ -191,8 +191,7 @@ Profile Profile::FromArcLengthSamples(const std::vector<Eigen::Vector2d>& sample
   }
   out.y2_ = natural_spline_second_derivatives(sgrid, out.y_);
   out.z2_ = natural_spline_second_derivatives(sgrid, out.z_);
-  out.y_min_ = *std::min_element(out.y_.begin(), out.y_.end());
-  out.y_max_ = *std::max_element(out.y_.begin(), out.y_.end());
+  out.set_y_range();
   return out;
 }
 
@@ -242,10 +241,29 @@ double Profile::slope_angle(double s) const {
   return std::atan2(t.y(), t.x());
 }
 
+void Profile::set_y_range() {
+  y_min_ = *std::min_element(y_.begin(), y_.end());
+  y_max_ = *std::max_element(y_.begin(), y_.end());
+  bool increasing = true, decreasing = true;
+  for (size_t i = 0; i + 1 < y_.size(); ++i) {
+    increasing = increasing && y_[i + 1] > y_[i];
+    decreasing = decreasing && y_[i + 1] < y_[i];
+  }
+  y_order_ = increasing ? 1 : (decreasing ? -1 : 0);
+}
+
 std::optional<double> Profile::s_at(double y) const {
   if (y < y_min_ || y > y_max_) return std::nullopt;
   const int n = static_cast<int>(y_.size());
-  for (int i = 0; i + 1 < n; ++i) {
+  // monotonic samples: the first segment [y_i, y_i+1] that contains y is the one before the first sample >= y
+  // (increasing) or <= y (decreasing), the same one the scan below finds
+  int first = 0;
+  if (y_order_ > 0)
+    first = std::max(0, static_cast<int>(std::lower_bound(y_.begin(), y_.end(), y) - y_.begin()) - 1);
+  else if (y_order_ < 0)
+    first = std::max(0, static_cast<int>(std::lower_bound(y_.begin(), y_.end(), y, std::greater<double>()) -
+                                         y_.begin()) - 1);
+  for (int i = first; i + 1 < n; ++i) {
     const double y0 = y_[i], y1 = y_[i + 1];
     if ((y0 <= y && y <= y1 && y1 > y0) || (y1 <= y && y <= y0 && y0 > y1)) {
       // refine by Newton/bisection on the cubic segment
