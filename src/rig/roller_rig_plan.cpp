@@ -210,8 +210,9 @@ std::vector<RollerRigTestResult> RunRollerRigPlan(const RollerRigScenario& sc, c
           po.adaptive_substeps ? AdaptiveStep(o, &state, s, po, &r) : ProcessRigSample(o, &state, s);
       if (!po.adaptive_substeps) {
         ++r.substeps;
-        if (res.stability_rule_violated) ++r.stability_violations;
-        r.max_depth_per_approach = std::max(r.max_depth_per_approach, res.depth_per_approach);
+        if (res.status == RollerRigSampleStatus::Ok && res.stability_rule_violated) ++r.stability_violations;
+        if (res.status == RollerRigSampleStatus::Ok)
+          r.max_depth_per_approach = std::max(r.max_depth_per_approach, res.depth_per_approach);
       }
       ++r.samples;
       r.simulated_time_s += s.duration_s;
