@@ -54,6 +54,12 @@ struct RollerRigPlanOptions {
   double step_s = 0.0;            // overrides the scenario's step when > 0, s
   double distance_fraction = 1.0; // run this fraction of each test's distance (a shorter check), in (0, 1]
   int max_tests = 0;              // run only the first N tests when > 0
+  // true: a step whose wear breaks the stability rule (RollerRigSampleOptions::max_depth_per_approach) is repeated in
+  // halved sub-steps, down to min_substep_s, s (> 0); false (default): every step as it is (the rule is counted only).
+  // Not the default: with the hertz model and Table 3 the sub-steps do not make the plan's result step-independent
+  // nor stop the groove runaway (docs/physics-reference.md §18.6).
+  bool adaptive_substeps = false;
+  double min_substep_s = 1e-4;
   // Called after every sample: (test index, sample index, samples of the test); may be empty.
   std::function<void(int, long, long)> progress;
 };
@@ -76,6 +82,11 @@ struct RollerRigTestResult {
   std::string first_failure;                       // message of the first failed sample; "" when none
   long samples = 0;                                // samples processed
   long failed_samples = 0;                         // samples whose status was not ok
+  long substeps = 0;                               // accepted sub-steps (= samples without adaptive sub-steps)
+  long rejected_substeps = 0;                      // sub-steps repeated shorter (stability rule)
+  long stability_violations = 0;                   // accepted sub-steps that still break the rule (at min_substep_s)
+  double min_substep_s = 0.0;                      // shortest accepted sub-step, s
+  double max_depth_per_approach = 0.0;             // largest depth per step / elastic approach accepted
   double simulated_time_s = 0.0;                   // sum of the sample durations, s
   double distance_m = 0.0;                         // reference roller surface distance simulated, m
   double run_time_s = 0.0;                         // wall-clock time of the test, s

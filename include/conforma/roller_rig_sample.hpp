@@ -52,6 +52,13 @@ struct RollerRigSampleOptions {
   // windows (0.5 mm) leave ripples of the strip-wise depth that the Hertz model reads as many sharp contact points
   // (p_max of several GPa, the severe Archard coefficient): the groove runs away within the second test of Table 5.
   double filter_window_m = 1.0e-3;
+  // Stability rule of the explicit wear update (docs/physics-reference.md §18.3): the depth one step adds to wheel +
+  // roller on a side should stay below this fraction of that contact's elastic approach (the approach of its most
+  // loaded patch). Wear opens the gap where it acts; an update comparable to the approach moves the whole load within
+  // one step (explicit Euler on a relaxation whose time constant is approach / wear rate), overshoots and runs away.
+  // The sample reports the ratio and whether the rule holds (the real-time path keeps its step); the plan runner
+  // repeats a step that breaks it in smaller sub-steps (RollerRigPlanOptions::adaptive_substeps). > 0; default 0.1.
+  double max_depth_per_approach = 0.1;
   void validate() const;
   // The rig defaults: kinematics.contact = RollerRigContactOptions(setup).
   static RollerRigSampleOptions Defaults(const RollerRigSetup& setup = {});
@@ -110,6 +117,12 @@ struct RollerRigSampleResult {
   std::array<double, 2> wheel_wear_volume_m3{0.0, 0.0};     // area x 2 pi r_i (ring volume), m^3
   std::array<double, 2> roller_wear_volume_m3{0.0, 0.0};    // area x 2 pi R_i, m^3
   std::array<double, 2> max_slip_velocity_m_s{0.0, 0.0};    // largest |s| V_i over the cells, m/s
+  // Elastic approach of each side's most loaded patch, m (the scale of the stability rule)
+  std::array<double, 2> elastic_approach_m{0.0, 0.0};
+  // max over the sides of (wheel + roller largest depth added this step) / elastic approach; +inf when wear was
+  // added to a side without a positive approach
+  double depth_per_approach = 0.0;
+  bool stability_rule_violated = false;    // depth_per_approach > options.max_depth_per_approach
   bool profiles_updated = false;           // the profiles in contact changed this step
   bool filtered = false;                   // the sliding-mean filter ran this step
   long step = 0;                           // the state's step count after this sample

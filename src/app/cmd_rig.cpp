@@ -13,6 +13,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "conforma/contact_model.hpp"
 #include "conforma/error.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/roller_rig_plan.hpp"
@@ -25,8 +26,10 @@ namespace {
 
 struct RigArgs {
   std::string scenario, out, input, wear_law;
-  double step_s = 0.0, distance_fraction = 1.0;
+  double step_s = 0.0, distance_fraction = 1.0, max_depth_per_approach = 0.0;
   int max_tests = 0;
+  bool adaptive_substeps = false;
+  std::string model;
 };
 
 std::string Fmt(const char* format, double v) {
@@ -38,6 +41,8 @@ std::string Fmt(const char* format, double v) {
 RollerRigScenario Scenario(const RigArgs& a) {
   RollerRigScenario sc = LoadRollerRigScenario(a.scenario);
   if (!a.wear_law.empty()) sc.options.wear_law = RollerRigWearLawFromName(a.wear_law);
+  if (!a.model.empty()) sc.options.kinematics.contact.model = ParseContactModel(a.model);
+  if (a.max_depth_per_approach > 0.0) sc.options.max_depth_per_approach = a.max_depth_per_approach;
   return sc;
 }
 
@@ -56,6 +61,7 @@ void RunPlan(const RigArgs& a) {
   po.step_s = a.step_s;
   po.distance_fraction = a.distance_fraction;
   po.max_tests = a.max_tests;
+  po.adaptive_substeps = a.adaptive_substeps;
   int last_percent = -1;
   po.progress = [&](int test, long k, long n) {
     const int percent = static_cast<int>(100 * (k + 1) / n);
@@ -70,18 +76,22 @@ void RunPlan(const RigArgs& a) {
          "samples,failed_samples,mean_omega3_rad_s,mean_xi_1,mean_xi_2,mean_fx_left_N,mean_fx_right_N,"
          "wheel_left_max_depth_mm,wheel_left_area_mm2,wheel_right_max_depth_mm,wheel_right_area_mm2,"
          "roller_1_max_depth_mm,roller_1_area_mm2,roller_2_max_depth_mm,roller_2_area_mm2,"
-         "wheel_left_total_max_depth_mm,roller_1_total_max_depth_mm,run_time_s,status\n";
+         "wheel_left_total_max_depth_mm,roller_1_total_max_depth_mm,substeps,rejected_substeps,stability_violations,"
+         "min_substep_s,max_depth_per_approach,run_time_s,status\n";
   std::ofstream md(a.out + "/report.md");
   md << "# Roller-rig wear test plan (paper 000 Table 5)\n\nScenario: `" << a.scenario << "`; time step " << step
      << " s, sliding-mean filter every " << std::max(1, static_cast<int>(std::lround(sc.filter_interval_s / step)))
-     << " step(s) (" << sc.filter_interval_s << " s), window " << sc.options.filter_window_m * 1e3
-     << " mm; wear law " << to_string(sc.options.wear_law) << "; contact model "
-     << to_string(sc.options.kinematics.contact.model) << ", mu = " << sc.options.kinematics.contact.friction_coefficient
-     << "; distance fraction " << a.distance_fraction << ".\n\n"
-     << "Wear per test = vertical (wheel: radial) difference between the profiles at the start and the end of the test.\n\n"
+     << " step(s) (" << sc.filter_interval_s << " s), window " << sc.options.filter_window_m * 1e3 << " mm; wear law "
+     << to_string(sc.options.wear_law) << "; contact model " << to_string(sc.options.kinematics.contact.model)
+     << ", mu = " << sc.options.kinematics.contact.friction_coefficient << "; distance fraction " << a.distance_fraction
+     << "; " << (a.adaptive_substeps ? "adaptive sub-steps" : "fixed steps")
+     << ", depth per step <= " << sc.options.max_depth_per_approach << " x elastic approach.\n\n"
+     << "Wear per test = vertical (wheel: radial) difference between the profiles at the start and the end of the "
+        "test.\n\n"
      << "| test | creep | rpm | load [kg] | distance [km] | sim. time [min] (plan) | mean xi_1 / xi_2 | "
         "wheel L max [um] | wheel L area [mm^2] | wheel R max [um] | roller 1 max [um] | roller 1 area [mm^2] | "
-        "roller 2 max [um] | run time [s] | status |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "roller 2 max [um] | sub-steps (rejected) | run time [s] | status |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   long failed = 0;
   double run_time = 0.0;
   for (const RollerRigTestResult& r : results) {
@@ -96,16 +106,19 @@ void RunPlan(const RigArgs& a) {
     for (const auto* w : {&r.wheel_wear[0], &r.wheel_wear[1], &r.roller_wear[0], &r.roller_wear[1]})
       csv << "," << Fmt("%.6g", w->max_depth_m * 1e3) << "," << Fmt("%.6g", w->area_m2 * 1e6);
     csv << "," << Fmt("%.6g", r.wheel_wear_total[0].max_depth_m * 1e3) << ","
-        << Fmt("%.6g", r.roller_wear_total[0].max_depth_m * 1e3) << "," << Fmt("%.4g", r.run_time_s) << ","
-        << to_string(r.status) << "\n";
+        << Fmt("%.6g", r.roller_wear_total[0].max_depth_m * 1e3) << "," << r.substeps << "," << r.rejected_substeps
+        << "," << r.stability_violations << "," << Fmt("%.4g", r.min_substep_s) << ","
+        << Fmt("%.4g", r.max_depth_per_approach) << "," << Fmt("%.4g", r.run_time_s) << "," << to_string(r.status)
+        << "\n";
     md << "| " << t.test << " | " << t.creep << " | " << t.reference_speed_rpm << " | " << t.wheel_load_kg << " | "
        << Fmt("%.3f", r.distance_m * 1e-3) << " | " << Fmt("%.1f", r.simulated_time_s / 60.0) << " (" << t.time_min
        << ") | " << Fmt("%.4f", r.mean_creepage[0]) << " / " << Fmt("%.4f", r.mean_creepage[1]) << " | "
-       << Fmt("%.2f", r.wheel_wear[0].max_depth_m * 1e6) << " | " << Fmt("%.5f", r.wheel_wear[0].area_m2 * 1e6)
-       << " | " << Fmt("%.2f", r.wheel_wear[1].max_depth_m * 1e6) << " | "
-       << Fmt("%.2f", r.roller_wear[0].max_depth_m * 1e6) << " | " << Fmt("%.5f", r.roller_wear[0].area_m2 * 1e6)
-       << " | " << Fmt("%.2f", r.roller_wear[1].max_depth_m * 1e6) << " | " << Fmt("%.1f", r.run_time_s) << " | "
-       << to_string(r.status) << (r.first_failure.empty() ? "" : " (" + r.first_failure + ")") << " |\n";
+       << Fmt("%.2f", r.wheel_wear[0].max_depth_m * 1e6) << " | " << Fmt("%.5f", r.wheel_wear[0].area_m2 * 1e6) << " | "
+       << Fmt("%.2f", r.wheel_wear[1].max_depth_m * 1e6) << " | " << Fmt("%.2f", r.roller_wear[0].max_depth_m * 1e6)
+       << " | " << Fmt("%.5f", r.roller_wear[0].area_m2 * 1e6) << " | "
+       << Fmt("%.2f", r.roller_wear[1].max_depth_m * 1e6) << " | " << r.substeps << " (" << r.rejected_substeps
+       << ") | " << Fmt("%.1f", r.run_time_s) << " | " << to_string(r.status)
+       << (r.first_failure.empty() ? "" : " (" + r.first_failure + ")") << " |\n";
     SaveProfiles(a.out + "/profiles", "test" + std::to_string(t.test) + "_", r.wheel, r.roller,
                  0.1e-3 * sc.options.setup.length_factor);
   }
@@ -168,6 +181,11 @@ void RegisterRigCommand(CLI::App& app) {
     sub->add_option("--distance-fraction", a->distance_fraction, "run this fraction of each test's distance (0, 1]");
     sub->add_option("--max-tests", a->max_tests, "run only the first N tests");
     sub->add_option("--wear-law", a->wear_law, "archard (paper 000 Table 3) or wear_index (USFD T-gamma)");
+    sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+    sub->add_option("--max-depth-per-approach", a->max_depth_per_approach,
+                    "stability rule: depth per step / elastic approach (default: 0.1)");
+    sub->add_flag("--adaptive-substeps", a->adaptive_substeps,
+                  "repeat a step that breaks the stability rule in halved sub-steps (default: counted only)");
     sub->callback([a]() { RunPlan(*a); });
   }
   {

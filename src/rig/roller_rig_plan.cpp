@@ -35,6 +35,39 @@ std::string ResolveFile(const std::string& name, const std::string& scenario) {
   return (std::filesystem::path(scenario).parent_path() / p).string();
 }
 
+// One plan step of duration sample.duration_s in sub-steps that keep the stability rule of the explicit wear update
+// (RollerRigSampleOptions::max_depth_per_approach): a sub-step that breaks it is discarded and repeated at half the
+// length, down to options.min_substep_s (accepted there and counted as a violation); after an accepted sub-step the
+// next one may double, up to what is left of the step. Returns the last sub-step's result (failed: that one).
+RollerRigSampleResult AdaptiveStep(const RollerRigSampleOptions& o, RollerRigState* state,
+                                   const RollerRigSample& sample, const RollerRigPlanOptions& po,
+                                   RollerRigTestResult* r) {
+  double left = sample.duration_s, h = sample.duration_s;
+  RollerRigSampleResult res;
+  while (left > 1e-12 * sample.duration_s) {
+    h = std::min(h, left);
+    RollerRigSample sub = sample;
+    sub.duration_s = h;
+    sub.time_s = state->time_s;
+    RollerRigState trial = *state;
+    res = ProcessRigSample(o, &trial, sub);
+    if (res.status != RollerRigSampleStatus::Ok) return res;  // the state keeps what was accepted so far
+    if (res.stability_rule_violated && h > po.min_substep_s) {
+      ++r->rejected_substeps;
+      h = std::max(0.5 * h, po.min_substep_s);
+      continue;
+    }
+    if (res.stability_rule_violated) ++r->stability_violations;
+    r->max_depth_per_approach = std::max(r->max_depth_per_approach, res.depth_per_approach);
+    r->min_substep_s = r->substeps == 0 ? h : std::min(r->min_substep_s, h);
+    ++r->substeps;
+    *state = std::move(trial);
+    left -= h;
+    h *= 2.0;
+  }
+  return res;
+}
+
 }  // namespace
 
 const char* to_string(RollerRigTestStatus status) {
@@ -148,6 +181,7 @@ ProfileWearSummary CompareProfiles(const Profile& before, const Profile& after) 
 std::vector<RollerRigTestResult> RunRollerRigPlan(const RollerRigScenario& sc, const RollerRigPlanOptions& po) {
   if (!(po.distance_fraction > 0.0 && po.distance_fraction <= 1.0))
     throw InputError("RollerRigPlanOptions.distance_fraction must be in (0, 1]");
+  require_positive(po.min_substep_s, "RollerRigPlanOptions.min_substep_s");
   const double step = po.step_s > 0.0 ? po.step_s : sc.step_s;
   require_positive(step, "rig plan step_s");
   RollerRigSampleOptions o = sc.options;
@@ -172,7 +206,14 @@ std::vector<RollerRigTestResult> RunRollerRigPlan(const RollerRigScenario& sc, c
       s.duration_s = std::min(step, duration - k * step);
       if (!(s.duration_s > 0.0)) break;
       s.time_s = state.time_s;
-      const RollerRigSampleResult res = ProcessRigSample(o, &state, s);
+      const RollerRigSampleResult res =
+          po.adaptive_substeps ? AdaptiveStep(o, &state, s, po, &r) : ProcessRigSample(o, &state, s);
+      if (!po.adaptive_substeps) {
+        ++r.substeps;
+        if (res.status == RollerRigSampleStatus::Ok && res.stability_rule_violated) ++r.stability_violations;
+        if (res.status == RollerRigSampleStatus::Ok)
+          r.max_depth_per_approach = std::max(r.max_depth_per_approach, res.depth_per_approach);
+      }
       ++r.samples;
       r.simulated_time_s += s.duration_s;
       r.distance_m += w_ref * o.setup.roller_radius_m * s.duration_s;

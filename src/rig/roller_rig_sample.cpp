@@ -44,6 +44,7 @@ void RollerRigSampleOptions::validate() const {
   if (profile_update_every_steps < 1) throw InputError("RollerRigSampleOptions.profile_update_every_steps must be >= 1");
   require_non_negative(refit_depth_fraction, "RollerRigSampleOptions.refit_depth_fraction");
   require_non_negative(filter_window_m, "RollerRigSampleOptions.filter_window_m");
+  require_positive(max_depth_per_approach, "RollerRigSampleOptions.max_depth_per_approach");
 }
 
 RollerRigSampleOptions RollerRigSampleOptions::Defaults(const RollerRigSetup& setup) {
@@ -222,6 +223,19 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
     res.roller_wear_volume_m3[k] = res.roller_wear_area_m2[k] * kTwoPi * c.roller_rolling_radius_m;
     any_wear = any_wear || res.wheel_wear_area_m2[k] > 0.0 || res.roller_wear_area_m2[k] > 0.0;
   }
+  // stability rule of the explicit update (options.max_depth_per_approach): depth added per step against the
+  // elastic approach of the side's most loaded patch
+  for (int k = 0; k < 2; ++k) {
+    double load = -1.0;
+    for (const PatchReport& p : res.kinematics.contact[k].report.patches)
+      if (p.fn_N > load) load = p.fn_N, res.elastic_approach_m[k] = p.approach_m;
+    const double added = res.wheel_wear_max_depth_m[k] + res.roller_wear_max_depth_m[k];
+    if (added <= 0.0) continue;
+    const double ratio =
+        res.elastic_approach_m[k] > 0.0 ? added / res.elastic_approach_m[k] : std::numeric_limits<double>::infinity();
+    res.depth_per_approach = std::max(res.depth_per_approach, ratio);
+  }
+  res.stability_rule_violated = res.depth_per_approach > options.max_depth_per_approach;
 
   // ---- profile update (paper 000 §3.5)
   RollerRigState next = *state;
