@@ -12,6 +12,7 @@
 #include "conforma/error.hpp"
 #include "conforma/profile_update.hpp"
 #include "conforma/wear_law.hpp"
+#include "conforma/wear_simulation.hpp"
 
 namespace conforma {
 
@@ -197,14 +198,8 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
         const std::optional<double> s_w = wheel_s(cell.wheel_y_m);
         const std::optional<double> s_r = roller_s(mounted.position(cell.rail_s_m).x() + mounted_to_profile_y);
         if (!s_w || !s_r) continue;  // outside a profile (not expected on the tread); counted by none
-        WearCell wc;
-        wc.traction_Pa = Eigen::Vector2d(cell.traction_x_Pa, cell.traction_s_Pa);
-        wc.slip = Eigen::Vector2d(cell.slip_x, cell.slip_s);
-        wc.pressure_Pa = cell.pressure_Pa;
-        wc.area_m2 = cell.area_m2;
-        wc.length_x_m = cell.length_x_m;
-        wc.wheel_s_m = *s_w;
-        wc.rail_s_m = *s_r;
+        WearCell wc = WearCellOf(cell, *s_w);
+        wc.rail_s_m = *s_r;  // on the roller's own profile (the cell's rail_s_m is on the mounted roller)
         patch.cells.push_back(wc);
       }
     }
