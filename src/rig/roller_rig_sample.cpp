@@ -232,23 +232,26 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
   }
   res.stability_rule_violated = res.depth_per_approach > options.max_depth_per_approach;
 
-  // ---- profile update (paper 000 §3.5)
-  RollerRigState next = *state;
+  // ---- profile update (paper 000 §3.5). The new values are built aside and committed together, so that a failed
+  // update leaves the state as it was; profiles are copied only where they change (not the whole state every step).
+  std::array<WearDistribution, 2> wheel_pending = state->wheel_pending, roller_pending = state->roller_pending;
   for (int k = 0; k < 2; ++k) {
-    next.wheel_pending[k].add(wheel_add[k], 1.0);
-    next.roller_pending[k].add(roller_add[k], 1.0);
+    wheel_pending[k].add(wheel_add[k], 1.0);
+    roller_pending[k].add(roller_add[k], 1.0);
   }
-  next.step = state->step + 1;
-  next.time_s = state->time_s + dt;
-  for (int k = 0; k < 2; ++k) next.roller_distance_m[k] += sample.roller_speed_rad_s[k] * dt * res.kinematics.contact[k].roller_rolling_radius_m;
+  const long step = state->step + 1;
+  std::array<double, 2> wheel_unrefit = state->wheel_unrefit_m, roller_unrefit = state->roller_unrefit_m;
+  std::array<std::optional<Profile>, 2> wheel_reference, roller_reference, wheel_now, roller_now;
+  std::shared_ptr<const WheelsetTrackGeometry> next_geometry = state->geometry;
   if (options.update_profiles) {
     try {
-      const bool filter_now = next.step % options.filter_every_steps == 0;
+      const bool filter_now = step % options.filter_every_steps == 0;
+      const bool raw_now = !filter_now && any_wear && step % options.profile_update_every_steps == 0;
       for (int k = 0; k < 2; ++k) {
         if (filter_now) {
           // sliding mean of the wear since the last filter, removed from the reference profiles for good
-          const WearDistribution fw = SlidingMean(next.wheel_pending[k], options.filter_window_m);
-          const WearDistribution fr = SlidingMean(next.roller_pending[k], options.filter_window_m);
+          const WearDistribution fw = SlidingMean(wheel_pending[k], options.filter_window_m);
+          const WearDistribution fr = SlidingMean(roller_pending[k], options.filter_window_m);
           // removal without refit while the depth moved since the last refit stays below refit_depth_fraction of
           // the sample spacing; then RemoveAlongNormal (refit, arc-length reparametrisation, validity checks)
           auto remove = [&](const Profile& ref, const WearDistribution& d, double* unrefit, const char* what) {
@@ -260,24 +263,29 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
             return RemoveAlongNormal(ref, d, 0.0, what);
           };
           if (fw.max_depth_m() > 0.0)
-            next.wheel_reference[k] = remove(state->wheel_reference[k], fw, &next.wheel_unrefit_m[k], "rig wheel filter");
+            wheel_reference[k] = remove(state->wheel_reference[k], fw, &wheel_unrefit[k], "rig wheel filter");
           if (fr.max_depth_m() > 0.0)
-            next.roller_reference[k] =
-                remove(state->roller_reference[k], fr, &next.roller_unrefit_m[k], "rig roller filter");
-          next.wheel[k] = next.wheel_reference[k];
-          next.roller[k] = next.roller_reference[k];
-          next.wheel_pending[k] = WearDistribution::ForProfile(next.wheel_reference[k], options.wear_grid_spacing_m);
-          next.roller_pending[k] = WearDistribution::ForProfile(next.roller_reference[k], options.wear_grid_spacing_m);
-        } else if (any_wear && next.step % options.profile_update_every_steps == 0) {
+            roller_reference[k] = remove(state->roller_reference[k], fr, &roller_unrefit[k], "rig roller filter");
+          const Profile& w = wheel_reference[k] ? *wheel_reference[k] : state->wheel_reference[k];
+          const Profile& r = roller_reference[k] ? *roller_reference[k] : state->roller_reference[k];
+          wheel_now[k] = w;
+          roller_now[k] = r;
+          wheel_pending[k] = WearDistribution::ForProfile(w, options.wear_grid_spacing_m);
+          roller_pending[k] = WearDistribution::ForProfile(r, options.wear_grid_spacing_m);
+        } else if (raw_now) {
           // eqs. 19-21: the raw depth since the last filter along the normal of the reference profile
-          if (next.wheel_pending[k].max_depth_m() > 0.0) next.wheel[k] = RemoveRaw(state->wheel_reference[k], next.wheel_pending[k]);
-          if (next.roller_pending[k].max_depth_m() > 0.0)
-            next.roller[k] = RemoveRaw(state->roller_reference[k], next.roller_pending[k]);
+          if (wheel_pending[k].max_depth_m() > 0.0) wheel_now[k] = RemoveRaw(state->wheel_reference[k], wheel_pending[k]);
+          if (roller_pending[k].max_depth_m() > 0.0)
+            roller_now[k] = RemoveRaw(state->roller_reference[k], roller_pending[k]);
         }
       }
       res.filtered = filter_now;
-      res.profiles_updated = filter_now || (any_wear && next.step % options.profile_update_every_steps == 0);
-      if (res.profiles_updated) next.geometry = BuildGeometry(options.setup, next.wheel, next.roller);
+      res.profiles_updated = filter_now || raw_now;
+      if (res.profiles_updated) {
+        auto now = [](const std::optional<Profile>& p, const Profile& old) -> const Profile& { return p ? *p : old; };
+        next_geometry = BuildGeometry(options.setup, {now(wheel_now[0], state->wheel[0]), now(wheel_now[1], state->wheel[1])},
+                                 {now(roller_now[0], state->roller[0]), now(roller_now[1], state->roller[1])});
+      }
     } catch (const InputError& e) {
       res.status = RollerRigSampleStatus::ProfileUpdateFailed;
       res.message = e.what();
@@ -285,7 +293,21 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
       return res;  // the state keeps its previous profiles
     }
   }
-  *state = std::move(next);
+  for (int k = 0; k < 2; ++k) {
+    if (wheel_reference[k]) state->wheel_reference[k] = std::move(*wheel_reference[k]);
+    if (roller_reference[k]) state->roller_reference[k] = std::move(*roller_reference[k]);
+    if (wheel_now[k]) state->wheel[k] = std::move(*wheel_now[k]);
+    if (roller_now[k]) state->roller[k] = std::move(*roller_now[k]);
+    state->roller_distance_m[k] +=
+        sample.roller_speed_rad_s[k] * dt * res.kinematics.contact[k].roller_rolling_radius_m;
+  }
+  state->wheel_pending = std::move(wheel_pending);
+  state->roller_pending = std::move(roller_pending);
+  state->wheel_unrefit_m = wheel_unrefit;
+  state->roller_unrefit_m = roller_unrefit;
+  state->geometry = std::move(next_geometry);
+  state->step = step;
+  state->time_s += dt;
   res.step = state->step;
   return res;
 }
