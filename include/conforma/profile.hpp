@@ -88,11 +88,15 @@ class Profile {
   double h_ = 0.0, length_ = 0.0, y_min_ = 0.0, y_max_ = 0.0;
   // Natural cubic splines y(s), z(s) on the uniform grid s_i = i h: values and second derivatives.
   std::vector<double> y_, z_, y2_, z2_;
-  // +1: the samples' y strictly increase along s, -1: strictly decrease, 0: neither (an overhang); s_at then finds
-  // the segment by binary search instead of a scan (the same segment: the first that contains y)
-  int y_order_ = 0;
+  // Maximal runs of consecutive segments [y_i, y_i+1] along which y strictly increases (direction +1) or decreases
+  // (-1), in order of s: s_at finds the first segment that contains y by a binary search per run instead of a scan
+  // over all samples (the same segment the scan finds).
+  struct MonotonicRun {
+    int first_segment, last_segment, direction;
+  };
+  std::vector<MonotonicRun> y_runs_;
   void locate(double s, int& i, double& t) const;
-  void set_y_range();  // y_min_, y_max_, y_order_ from y_
+  void set_y_range();  // y_min_, y_max_, y_runs_ from y_
 };
 
 // First pair (i, j), j >= i + 2, of polyline segments [p_i, p_i+1] and [p_j, p_j+1] that properly cross.

@@ -244,37 +244,37 @@ double Profile::slope_angle(double s) const {
 void Profile::set_y_range() {
   y_min_ = *std::min_element(y_.begin(), y_.end());
   y_max_ = *std::max_element(y_.begin(), y_.end());
-  bool increasing = true, decreasing = true;
-  for (size_t i = 0; i + 1 < y_.size(); ++i) {
-    increasing = increasing && y_[i + 1] > y_[i];
-    decreasing = decreasing && y_[i + 1] < y_[i];
+  y_runs_.clear();
+  for (int i = 0; i + 1 < static_cast<int>(y_.size()); ++i) {
+    const int direction = y_[i + 1] > y_[i] ? 1 : (y_[i + 1] < y_[i] ? -1 : 0);
+    if (direction == 0) continue;  // a segment of constant y contains no y strictly inside its direction: never found
+    if (!y_runs_.empty() && y_runs_.back().direction == direction && y_runs_.back().last_segment == i - 1)
+      y_runs_.back().last_segment = i;
+    else
+      y_runs_.push_back({i, i, direction});
   }
-  y_order_ = increasing ? 1 : (decreasing ? -1 : 0);
 }
 
 std::optional<double> Profile::s_at(double y) const {
   if (y < y_min_ || y > y_max_) return std::nullopt;
-  const int n = static_cast<int>(y_.size());
-  // monotonic samples: the first segment [y_i, y_i+1] that contains y is the one before the first sample >= y
-  // (increasing) or <= y (decreasing), the same one the scan below finds
-  int first = 0;
-  if (y_order_ > 0)
-    first = std::max(0, static_cast<int>(std::lower_bound(y_.begin(), y_.end(), y) - y_.begin()) - 1);
-  else if (y_order_ < 0)
-    first = std::max(0, static_cast<int>(std::lower_bound(y_.begin(), y_.end(), y, std::greater<double>()) -
-                                         y_.begin()) - 1);
-  for (int i = first; i + 1 < n; ++i) {
+  // the first segment i (in s) with y between y_i and y_i+1: in the first run whose y range holds y, the segment
+  // before the run's first sample >= y (increasing) or <= y (decreasing), or the run's first segment
+  for (const MonotonicRun& run : y_runs_) {
+    const auto begin = y_.begin() + run.first_segment, end = y_.begin() + run.last_segment + 2;
+    const double lo_y = run.direction > 0 ? *begin : *(end - 1), hi_y = run.direction > 0 ? *(end - 1) : *begin;
+    if (y < lo_y || y > hi_y) continue;
+    const auto at =
+        run.direction > 0 ? std::lower_bound(begin, end, y) : std::lower_bound(begin, end, y, std::greater<double>());
+    const int i = std::max(run.first_segment, static_cast<int>(at - y_.begin()) - 1);
     const double y0 = y_[i], y1 = y_[i + 1];
-    if ((y0 <= y && y <= y1 && y1 > y0) || (y1 <= y && y <= y0 && y0 > y1)) {
-      // refine by Newton/bisection on the cubic segment
-      double lo = i * h_, hi = (i + 1) * h_;
-      for (int it = 0; it < 40; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        const double ym = position(mid).x();
-        if ((ym < y) == (y1 > y0)) lo = mid; else hi = mid;
-      }
-      return 0.5 * (lo + hi);
+    // refine by bisection on the cubic segment
+    double lo = i * h_, hi = (i + 1) * h_;
+    for (int it = 0; it < 40; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      const double ym = position(mid).x();
+      if ((ym < y) == (y1 > y0)) lo = mid; else hi = mid;
     }
+    return 0.5 * (lo + hi);
   }
   return std::nullopt;
 }
