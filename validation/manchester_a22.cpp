@@ -56,16 +56,6 @@ std::vector<ManchesterReferenceCase> ReadManchesterReference(const std::string& 
   return cases;
 }
 
-namespace {
-// The main patch of a wheel: the largest normal force (nullptr without a patch).
-const PatchReport* MainPatch(const WheelContactReport& report) {
-  const PatchReport* main = nullptr;
-  for (const PatchReport& p : report.patches)
-    if (!main || p.fn_N > main->fn_N) main = &p;
-  return main;
-}
-}  // namespace
-
 std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_data_dir, const ManchesterOptions& options) {
   const std::string examples = shared_data_dir + "/profiles/contact/examples/";
   ProfileReadOptions wheel_read, rail_read;

@@ -126,6 +126,9 @@ struct WheelContactReport {
 bool BalancesTotalVerticalForce(const WheelContactOptions& options);
 double BalancedVerticalForce(const WheelContactReport& report, const WheelContactOptions& options);
 
+// The wheel's main patch: the largest normal force, the first of equal ones (nullptr without a patch).
+const PatchReport* MainPatch(const WheelContactReport& report);
+
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
 // mode. Throws InputError for bad options or velocities; no contact is a status.
 WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,

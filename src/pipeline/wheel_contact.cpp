@@ -24,6 +24,13 @@ bool BalancesTotalVerticalForce(const WheelContactOptions& options) {
   return options.load_balance == LoadBalance::Total && options.vertical_load_N > 0.0 && options.solve_tangential;
 }
 
+const PatchReport* MainPatch(const WheelContactReport& report) {
+  const PatchReport* main = nullptr;
+  for (const PatchReport& p : report.patches)
+    if (!main || p.fn_N > main->fn_N) main = &p;
+  return main;
+}
+
 double BalancedVerticalForce(const WheelContactReport& report, const WheelContactOptions& options) {
   return BalancesTotalVerticalForce(options) ? report.vertical_force_N : report.pressure_vertical_force_N;
 }

@@ -131,7 +131,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
       return res;
     }
     const RigidContactPoint& p = rc.points.front();
-    st[k].R = setup.roller_radius_m + p.rail_profile_m.y();  // roller rolling radius: R_r + roller profile height
+    st[k].R = p.roller_rolling_radius_m;                    // R_r + roller profile height (geometry §1.7)
     st[k].r = p.rolling_radius_m;
     st[k].V = in.roller_speed_rad_s[k] * st[k].R;           // paper 000 eq. 13
     st[k].y = p.wheel_point_m.y();
@@ -156,9 +156,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
       res.message = std::string("the ") + to_string(side) + " wheel's normal contact failed: " + to_string(rep.status);
       return res;
     }
-    const PatchReport* big = &rep.patches.front();
-    for (const PatchReport& p : rep.patches)
-      if (p.fn_N > big->fn_N) big = &p;
+    const PatchReport* big = MainPatch(rep);
     st[k].R = setup.roller_radius_m + big->z_contact_rail_m;
     st[k].r = big->rolling_radius_m - big->approach_m;
     st[k].V = in.roller_speed_rad_s[k] * st[k].R;  // paper 000 eq. 13
@@ -269,18 +267,16 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
     c.eq2_creepage = RollerRigCreepage(in.roller_speed_rad_s[k], st[k].R, w3, st[k].r);
     c.fx_N = last_fx[k];
     c.contact_y_m = st[k].y;
-    double fn_max = -1.0;
     for (const PatchReport& p : last[k].patches) {
       c.fy_N += p.fy_N;
       c.fn_N += p.fn_N;
-      if (p.fn_N > fn_max) {
-        fn_max = p.fn_N, c.xi = p.xi, c.eta = p.eta, c.phi_per_m = p.phi_per_m;
-        // the radii of the final solve (its approach differs from the first normal solve's within the load tolerance)
-        c.roller_rolling_radius_m = setup.roller_radius_m + p.z_contact_rail_m;
-        c.wheel_rolling_radius_m = p.rolling_radius_m - p.approach_m;
-        c.eq2_creepage = RollerRigCreepage(in.roller_speed_rad_s[k], c.roller_rolling_radius_m, w3,
-                                           c.wheel_rolling_radius_m);
-      }
+    }
+    if (const PatchReport* p = MainPatch(last[k])) {
+      c.xi = p->xi, c.eta = p->eta, c.phi_per_m = p->phi_per_m;
+      // the radii of the final solve (its approach differs from the first normal solve's within the load tolerance)
+      c.roller_rolling_radius_m = setup.roller_radius_m + p->z_contact_rail_m;
+      c.wheel_rolling_radius_m = p->rolling_radius_m - p->approach_m;
+      c.eq2_creepage = RollerRigCreepage(in.roller_speed_rad_s[k], c.roller_rolling_radius_m, w3, c.wheel_rolling_radius_m);
     }
   }
   // Longitudinal springs (quasi-static): force and moment about z of springs and contact forces on the wheelset

@@ -221,9 +221,7 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
   // stability rule of the explicit update (options.max_depth_per_approach): depth added per step against the
   // elastic approach of the side's most loaded patch
   for (int k = 0; k < 2; ++k) {
-    double load = -1.0;
-    for (const PatchReport& p : res.kinematics.contact[k].report.patches)
-      if (p.fn_N > load) load = p.fn_N, res.elastic_approach_m[k] = p.approach_m;
+    if (const PatchReport* p = MainPatch(res.kinematics.contact[k].report)) res.elastic_approach_m[k] = p->approach_m;
     const double added = res.wheel_wear_max_depth_m[k] + res.roller_wear_max_depth_m[k];
     if (added <= 0.0) continue;
     const double ratio =
