@@ -236,12 +236,9 @@ std::vector<RollerRigTestResult> RunRollerRigPlan(const RollerRigScenario& sc, c
         const WearDistribution fr = SlidingMean(state.roller_pending[j], o.filter_window_m);
         if (fw.max_depth_m() > 0.0) state.wheel_reference[j] = RemoveAlongNormal(state.wheel_reference[j], fw, 0.0, "rig wheel filter");
         if (fr.max_depth_m() > 0.0) state.roller_reference[j] = RemoveAlongNormal(state.roller_reference[j], fr, 0.0, "rig roller filter");
-        state.wheel[j] = state.wheel_reference[j];
-        state.roller[j] = state.roller_reference[j];
-        state.wheel_pending[j] = WearDistribution::ForProfile(state.wheel[j], o.wear_grid_spacing_m);
-        state.roller_pending[j] = WearDistribution::ForProfile(state.roller[j], o.wear_grid_spacing_m);
       }
-      state = MakeRollerRigState(o, state.wheel, state.roller);  // fresh geometry and grids, counters restart
+      // fresh state on the filtered profiles: geometry, empty pending grids, counters restart
+      state = MakeRollerRigState(o, state.wheel_reference, state.roller_reference);
     }
     const long ok = r.samples - r.failed_samples;
     if (ok > 0) {
