@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -19,6 +20,7 @@
 #include "conforma/roller_rig_plan.hpp"
 #include "conforma/roller_rig_replay.hpp"
 #include "exit_status.hpp"
+#include "progress.hpp"
 
 namespace conforma::cli {
 
@@ -55,22 +57,29 @@ void SaveProfiles(const std::string& dir, const std::string& prefix, const std::
   SaveProfileCsv(roller[1], dir + "/" + prefix + "roller_2.csv", spacing);
 }
 
-void RunPlan(const RigArgs& a) {
+void RunPlan(const RigArgs& a, ProgressMode mode) {
   const RollerRigScenario sc = Scenario(a);
   RollerRigPlanOptions po;
   po.step_s = a.step_s;
   po.distance_fraction = a.distance_fraction;
   po.max_tests = a.max_tests;
   po.adaptive_substeps = a.adaptive_substeps;
-  int last_percent = -1;
+  // the project's progress display (bar on a terminal, lines otherwise, nothing with --quiet), one per test
+  std::unique_ptr<ProgressReporter> progress;
+  int progress_test = -1;
   po.progress = [&](int test, long k, long n) {
-    const int percent = static_cast<int>(100 * (k + 1) / n);
-    if (percent / 10 != last_percent / 10) std::fprintf(stderr, "rig run: test %d: %d %%\n", test + 1, percent);
-    last_percent = percent;
+    if (test != progress_test) {
+      progress.reset();  // ends the previous test's bar
+      progress = std::make_unique<ProgressReporter>("rig run test " + std::to_string(test + 1),
+                                                    static_cast<double>(n), "sample", mode, std::cerr);
+      progress_test = test;
+    }
+    progress->Update(static_cast<double>(k + 1));
   };
   std::filesystem::create_directories(a.out);
   const double step = a.step_s > 0.0 ? a.step_s : sc.step_s;
   const auto results = RunRollerRigPlan(sc, po);
+  progress.reset();
   std::ofstream csv(a.out + "/rig_plan.csv");
   csv << "test,creep,reference_speed_rpm,wheel_load_kg,distance_km_plan,time_min_plan,distance_m,simulated_time_s,"
          "samples,failed_samples,mean_omega3_rad_s,mean_xi_1,mean_xi_2,mean_fx_left_N,mean_fx_right_N,"
@@ -186,7 +195,7 @@ void RegisterRigCommand(CLI::App& app) {
                     "stability rule: depth per step / elastic approach (default: 0.1)");
     sub->add_flag("--adaptive-substeps", a->adaptive_substeps,
                   "repeat a step that breaks the stability rule in halved sub-steps (default: counted only)");
-    sub->callback([a]() { RunPlan(*a); });
+    sub->callback([a, sub]() { RunPlan(*a, ProgressModeOf(sub)); });
   }
   {
     auto a = std::make_shared<RigArgs>();
