@@ -29,12 +29,7 @@ namespace {
 
 using conforma::Side;
 
-void CopyText(const std::string& text, char* buffer, size_t size) {
-  if (!buffer || size == 0) return;
-  const size_t n = text.size() < size - 1 ? text.size() : size - 1;
-  std::memcpy(buffer, text.data(), n);
-  buffer[n] = '\0';
-}
+using conforma::interop::CopyText;
 
 void Store(double out[3], const Eigen::Vector3d& v) {
   for (int i = 0; i < 3; ++i) out[i] = v[i];

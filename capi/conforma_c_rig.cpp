@@ -12,6 +12,7 @@
 #include "conforma/error.hpp"
 #include "conforma/roller_rig_sample.hpp"
 #include "conforma_c.h"
+#include "interop.hpp"
 
 struct conforma_rig {
   conforma::RollerRigSampleOptions options;
@@ -20,12 +21,7 @@ struct conforma_rig {
 
 namespace {
 
-void CopyRigText(const std::string& text, char* buffer, size_t size) {
-  if (!buffer || size == 0) return;
-  const size_t n = text.size() < size - 1 ? text.size() : size - 1;
-  std::memcpy(buffer, text.data(), n);
-  buffer[n] = '\0';
-}
+using conforma::interop::CopyText;
 
 conforma::RollerRigSampleOptions OptionsOf(const conforma_rig_params& p) {
   if (!p.wheel_profile || !p.roller_profile || !p.model)
@@ -88,7 +84,7 @@ void FillRigResult(const conforma::RollerRigSampleResult& r, conforma_rig_result
     o.roller_wear_area_m2 = r.roller_wear_area_m2[k];
     o.spring_force_N = r.kinematics.spring_force_N[k];
   }
-  CopyRigText(r.message, out->error_message, sizeof out->error_message);
+  CopyText(r.message, out->error_message, sizeof out->error_message);
 }
 
 }  // namespace
@@ -120,14 +116,14 @@ void conforma_default_rig_params(conforma_rig_params* p) {
 
 conforma_status conforma_rig_create(const conforma_rig_params* params, conforma_rig** rig, char* error_text,
                                     size_t error_text_size) {
-  CopyRigText("", error_text, error_text_size);
+  CopyText("", error_text, error_text_size);
   if (!rig) {
-    CopyRigText("conforma_rig_create: rig (output pointer) is NULL", error_text, error_text_size);
+    CopyText("conforma_rig_create: rig (output pointer) is NULL", error_text, error_text_size);
     return CONFORMA_ERROR_NULL;
   }
   *rig = nullptr;
   if (!params) {
-    CopyRigText("conforma_rig_create: params is NULL", error_text, error_text_size);
+    CopyText("conforma_rig_create: params is NULL", error_text, error_text_size);
     return CONFORMA_ERROR_NULL;
   }
   try {
@@ -137,13 +133,13 @@ conforma_status conforma_rig_create(const conforma_rig_params* params, conforma_
     *rig = r.release();
     return CONFORMA_OK;
   } catch (const conforma::InputError& e) {
-    CopyRigText(e.what(), error_text, error_text_size);
+    CopyText(e.what(), error_text, error_text_size);
     return CONFORMA_ERROR_INPUT;
   } catch (const std::exception& e) {
-    CopyRigText(std::string("internal error: ") + e.what(), error_text, error_text_size);
+    CopyText(std::string("internal error: ") + e.what(), error_text, error_text_size);
     return CONFORMA_ERROR_INTERNAL;
   } catch (...) {
-    CopyRigText("internal error", error_text, error_text_size);
+    CopyText("internal error", error_text, error_text_size);
     return CONFORMA_ERROR_INTERNAL;
   }
 }
@@ -153,7 +149,7 @@ conforma_status conforma_rig_process_sample(conforma_rig* rig, const conforma_ri
   if (!result) return CONFORMA_ERROR_NULL;
   std::memset(result, 0, sizeof *result);
   if (!rig || !sample) {
-    CopyRigText("conforma_rig_process_sample: rig or sample is NULL", result->error_message,
+    CopyText("conforma_rig_process_sample: rig or sample is NULL", result->error_message,
                 sizeof result->error_message);
     return CONFORMA_ERROR_NULL;
   }
@@ -172,15 +168,15 @@ conforma_status conforma_rig_process_sample(conforma_rig* rig, const conforma_ri
     return CONFORMA_OK;
   } catch (const conforma::InputError& e) {
     std::memset(result, 0, sizeof *result);
-    CopyRigText(e.what(), result->error_message, sizeof result->error_message);
+    CopyText(e.what(), result->error_message, sizeof result->error_message);
     return CONFORMA_ERROR_INPUT;
   } catch (const std::exception& e) {
     std::memset(result, 0, sizeof *result);
-    CopyRigText(std::string("internal error: ") + e.what(), result->error_message, sizeof result->error_message);
+    CopyText(std::string("internal error: ") + e.what(), result->error_message, sizeof result->error_message);
     return CONFORMA_ERROR_INTERNAL;
   } catch (...) {
     std::memset(result, 0, sizeof *result);
-    CopyRigText("internal error", result->error_message, sizeof result->error_message);
+    CopyText("internal error", result->error_message, sizeof result->error_message);
     return CONFORMA_ERROR_INTERNAL;
   }
 }

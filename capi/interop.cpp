@@ -3,6 +3,7 @@
 #include "interop.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include "conforma/error.hpp"
@@ -11,6 +12,13 @@
 #include "conforma/standard_profiles.hpp"
 
 namespace conforma::interop {
+
+void CopyText(const std::string& text, char* buffer, size_t size) {
+  if (!buffer || size == 0) return;
+  const size_t n = text.size() < size - 1 ? text.size() : size - 1;
+  std::memcpy(buffer, text.data(), n);
+  buffer[n] = '\0';
+}
 
 std::unique_ptr<WheelsetTrackGeometry> MakeTrackGeometry(const Profile& wheel, const Profile& rail,
                                                          double inclination_rad, const TrackSpec& d) {

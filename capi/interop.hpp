@@ -16,6 +16,9 @@
 
 namespace conforma::interop {
 
+// A C string into the caller's buffer of `size` bytes, cut to fit and always terminated (nothing when buffer is
+// NULL or size is 0): the C API's error and warning texts.
+void CopyText(const std::string& text, char* buffer, size_t size);
 
 struct TrackSpec {
   std::string wheel = "S1002";
