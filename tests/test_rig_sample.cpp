@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "conforma/error.hpp"
 #include "conforma/roller_rig_sample.hpp"
@@ -47,10 +48,12 @@ TEST(RigSample, ZeroCreepageGivesZeroWear) {
 
 // Archard (paper 000 eq. 6): volume = k N S / H. Per cell, over dt: k p dA |s| V_i dt / H (sliding distance |s| V dt);
 // the ring volumes (area x 2 pi r) must equal the sum over the cells with the roller / wheel surface travel of eq. 17,
-// and sum p dA must be N.
+// and sum p dA must be N. With paper 000 eq. 16 (strip depth = mean of C elements) the volume is 1/C of that.
 TEST(RigSample, WearVolumeIsArchardKNSOverH) {
-  const RollerRigSampleOptions o = RollerRigSampleOptions::Defaults();
+  RollerRigSampleOptions o = RollerRigSampleOptions::Defaults();
+  for (double C : {1.0, 20.0})
   for (double xi : {0.02, 0.15}) {
+    o.strip_mean_elements = C;
     RollerRigState st = MakeRollerRigState(o);
     const RollerRigSampleResult r = ProcessRigSample(o, &st, Sample(xi, 0.2e-3));
     ASSERT_EQ(r.status, RollerRigSampleStatus::Ok) << r.message;
@@ -69,8 +72,8 @@ TEST(RigSample, WearVolumeIsArchardKNSOverH) {
         }
       EXPECT_NEAR(load, c.fn_N, 0.01 * c.fn_N) << xi;
       const double dt = 0.02;
-      const double wheel_expected = sum_w * w3 * c.wheel_rolling_radius_m * dt;   // wheel surface travel omega_3 r dt
-      const double roller_expected = sum_r * Sample(xi).roller_speed_rad_s[k] * c.roller_rolling_radius_m * dt;
+      const double wheel_expected = sum_w * w3 * c.wheel_rolling_radius_m * dt / C;  // wheel travel omega_3 r dt
+      const double roller_expected = sum_r * Sample(xi).roller_speed_rad_s[k] * c.roller_rolling_radius_m * dt / C;
       EXPECT_GT(wheel_expected, 0.0);
       EXPECT_NEAR(r.wheel_wear_volume_m3[k], wheel_expected, 1e-9 * wheel_expected) << xi << " side " << k;
       EXPECT_NEAR(r.roller_wear_volume_m3[k], roller_expected, 1e-9 * roller_expected) << xi << " side " << k;
@@ -146,6 +149,11 @@ TEST(RigSample, StatusesAndErrors) {
   EXPECT_THROW(ProcessRigSample(o, &st, s), InputError);
   EXPECT_THROW(ProcessRigSample(o, nullptr, Sample(0.05)), InputError);
   EXPECT_THROW(RollerRigWearLawFromName("none"), InputError);
+  for (double C : {0.5, 0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    RollerRigSampleOptions bad = o;
+    bad.strip_mean_elements = C;
+    EXPECT_THROW(ProcessRigSample(bad, &st, Sample(0.05)), InputError) << C;
+  }
 }
 
 }  // namespace

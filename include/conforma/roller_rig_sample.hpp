@@ -35,6 +35,13 @@ struct RollerRigSampleOptions {
   RollerRigKinematicsOptions kinematics;  // contact and balance options (RollerRigSampleOptions::Defaults: rig ones)
   RollerRigWearLaw wear_law = RollerRigWearLaw::Archard;  // see RollerRigWearLaw
   double wear_grid_spacing_m = 0.02e-3;   // arc-length spacing of the depth grids, m, > 0 (0.1 mm x phi)
+  // Paper 000 eq. 16 takes a strip's depth per passage as the MEAN of its C FASTSIM elements (C = 20, §3.4), i.e.
+  // 1/C of the depth integrated over the strip (eq. 8 already holds the element's dx); the wear coefficients of its
+  // Table 3 were calibrated against the measured profiles with that rule. The code integrates (paper 001 eq. 24), so
+  // the depth of every cell is divided by this C, independent of the contact model's own grid. >= 1; 1: the
+  // integrated depth with the coefficients as printed (the Archard volume of eq. 6); 20: paper 000's calibration
+  // (the scenario's default, docs/physics-reference.md §18.3).
+  double strip_mean_elements = 1.0;
   bool update_profiles = true;            // false: wear is computed and reported, the profiles stay as they are
   // Sliding-mean filter and final removal every N steps (paper 000 §3.5: 10 steps of 20 ms), >= 1. With coarser
   // steps keep the filter period N dt near 0.2 s (RollerRigFilterSteps).

@@ -28,7 +28,7 @@ namespace {
 
 struct RigArgs {
   std::string scenario, out, input, wear_law;
-  double step_s = 0.0, distance_fraction = 1.0, max_depth_per_approach = 0.0;
+  double step_s = 0.0, distance_fraction = 1.0, max_depth_per_approach = 0.0, strip_mean_elements = 0.0;
   int max_tests = 0;
   bool adaptive_substeps = false;
   std::string model;
@@ -45,6 +45,8 @@ RollerRigScenario Scenario(const RigArgs& a) {
   if (!a.wear_law.empty()) sc.options.wear_law = RollerRigWearLawFromName(a.wear_law);
   if (!a.model.empty()) sc.options.kinematics.contact.model = ParseContactModel(a.model);
   if (a.max_depth_per_approach > 0.0) sc.options.max_depth_per_approach = a.max_depth_per_approach;
+  if (a.strip_mean_elements > 0.0) sc.options.strip_mean_elements = a.strip_mean_elements;
+  sc.options.validate();
   return sc;
 }
 
@@ -91,7 +93,8 @@ void RunPlan(const RigArgs& a, ProgressMode mode) {
   md << "# Roller-rig wear test plan (paper 000 Table 5)\n\nScenario: `" << a.scenario << "`; time step " << step
      << " s, sliding-mean filter every " << std::max(1, static_cast<int>(std::lround(sc.filter_interval_s / step)))
      << " step(s) (" << sc.filter_interval_s << " s), window " << sc.options.filter_window_m * 1e3 << " mm; wear law "
-     << to_string(sc.options.wear_law) << "; contact model " << to_string(sc.options.kinematics.contact.model)
+     << to_string(sc.options.wear_law) << " (strip depth / C = " << sc.options.strip_mean_elements
+     << ", paper 000 eq. 16); contact model " << to_string(sc.options.kinematics.contact.model)
      << ", mu = " << sc.options.kinematics.contact.friction_coefficient << "; distance fraction " << a.distance_fraction
      << "; " << (a.adaptive_substeps ? "adaptive sub-steps" : "fixed steps")
      << ", depth per step <= " << sc.options.max_depth_per_approach << " x elastic approach.\n\n"
@@ -138,6 +141,13 @@ void RunPlan(const RigArgs& a, ProgressMode mode) {
     throw IncompleteResult(ExitCode::PartialResult, std::to_string(failed) + " rig samples failed (see rig_plan.csv)");
 }
 
+// Largest pressure over a wheel's patches, Pa (0 without contact).
+double MaxPressure(const WheelContactReport& r) {
+  double p = 0.0;
+  for (const PatchReport& q : r.patches) p = std::max(p, q.pmax_Pa);
+  return p;
+}
+
 void RunReplay(const RigArgs& a) {
   const RollerRigScenario sc = Scenario(a);
   const std::vector<RollerRigSample> samples = ReadRollerRigSamples(a.input);
@@ -148,7 +158,7 @@ void RunReplay(const RigArgs& a) {
   for (const char* s : {"left", "right"})
     csv << ",fn_" << s << "_N,fx_" << s << "_N,fy_" << s << "_N,xi_" << s << ",eta_" << s << ",phi_" << s << "_per_m,"
         << "wheel_wear_max_depth_" << s << "_m,wheel_wear_area_" << s << "_m2,roller_wear_max_depth_" << s
-        << "_m,roller_wear_area_" << s << "_m2,spring_force_" << s << "_N";
+        << "_m,roller_wear_area_" << s << "_m2,spring_force_" << s << "_N,patches_" << s << ",pmax_" << s << "_Pa";
   csv << ",yaw_deflection_rad,message\n";
   const long failed = ReplayRollerRigSamples(sc.options, &state, samples, [&](const RollerRigReplayRow& row) {
     const RollerRigSampleResult& r = row.result;
@@ -162,7 +172,8 @@ void RunReplay(const RigArgs& a) {
           << Fmt("%.8g", c.xi) << "," << Fmt("%.8g", c.eta) << "," << Fmt("%.8g", c.phi_per_m) << ","
           << Fmt("%.6g", r.wheel_wear_max_depth_m[j]) << "," << Fmt("%.6g", r.wheel_wear_area_m2[j]) << ","
           << Fmt("%.6g", r.roller_wear_max_depth_m[j]) << "," << Fmt("%.6g", r.roller_wear_area_m2[j]) << ","
-          << Fmt("%.8g", k.spring_force_N[j]);
+          << Fmt("%.8g", k.spring_force_N[j]) << "," << c.report.patches.size() << ","
+          << Fmt("%.6g", MaxPressure(c.report));
     }
     std::string msg = r.message;
     for (char& ch : msg)
@@ -191,6 +202,9 @@ void RegisterRigCommand(CLI::App& app) {
     sub->add_option("--max-tests", a->max_tests, "run only the first N tests");
     sub->add_option("--wear-law", a->wear_law, "archard (paper 000 Table 3) or wear_index (USFD T-gamma)");
     sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+    sub->add_option("--strip-mean-elements", a->strip_mean_elements,
+                    "paper 000 eq. 16: depth per strip = integral / C (default: the scenario's wear.strip_mean_elements)")
+        ->check(CLI::PositiveNumber);
     sub->add_option("--max-depth-per-approach", a->max_depth_per_approach,
                     "stability rule: depth per step / elastic approach (default: 0.1)");
     sub->add_flag("--adaptive-substeps", a->adaptive_substeps,
@@ -205,6 +219,10 @@ void RegisterRigCommand(CLI::App& app) {
                                          "[,omega3_rad_s][,dt_s]")->required();
     sub->add_option("--out", a->out, "output folder (rig_replay.csv, profiles/)")->required();
     sub->add_option("--wear-law", a->wear_law, "archard (paper 000 Table 3) or wear_index (USFD T-gamma)");
+    sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+    sub->add_option("--strip-mean-elements", a->strip_mean_elements,
+                    "paper 000 eq. 16: depth per strip = integral / C (default: the scenario's wear.strip_mean_elements)")
+        ->check(CLI::PositiveNumber);
     sub->callback([a]() { RunReplay(*a); });
   }
 }

@@ -128,6 +128,7 @@ RollerRigScenario LoadRollerRigScenario(const std::string& path) {
   sc.options.wear_law = RollerRigWearLawFromName(law);
   Read(wear, "step_s", &sc.step_s, ww);
   Read(wear, "filter_window_m", &sc.options.filter_window_m, ww);
+  Read(wear, "strip_mean_elements", &sc.options.strip_mean_elements, ww);
   Read(wear, "filter_interval_s", &sc.filter_interval_s, ww);
   Read(wear, "grid_spacing_m", &sc.options.wear_grid_spacing_m, ww);
   std::string speed = "balance";

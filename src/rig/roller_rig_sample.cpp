@@ -46,6 +46,8 @@ void RollerRigSampleOptions::validate() const {
   require_non_negative(refit_depth_fraction, "RollerRigSampleOptions.refit_depth_fraction");
   require_non_negative(filter_window_m, "RollerRigSampleOptions.filter_window_m");
   require_positive(max_depth_per_approach, "RollerRigSampleOptions.max_depth_per_approach");
+  if (!(strip_mean_elements >= 1.0) || !std::isfinite(strip_mean_elements))
+    throw InputError("RollerRigSampleOptions.strip_mean_elements must be finite and >= 1 (paper 000 eq. 16: C)");
 }
 
 RollerRigSampleOptions RollerRigSampleOptions::Defaults(const RollerRigSetup& setup) {
@@ -208,8 +210,10 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
     if (patch.cells.empty()) continue;
     const PatchWear pw = ComputePatchWear(patch, model, state->wheel_pending[k], state->roller_pending[k]);
     // paper 000 eq. 17: passages in dt, omega dt / (2 pi), for the wheel ring and the roller ring
-    wheel_add[k].add(pw.wheel_depth_per_passage, w3 * dt / kTwoPi);
-    roller_add[k].add(pw.rail_depth_per_passage, sample.roller_speed_rad_s[k] * dt / kTwoPi);
+    // (divided by C of eq. 16, options.strip_mean_elements)
+    wheel_add[k].add(pw.wheel_depth_per_passage, w3 * dt / kTwoPi / options.strip_mean_elements);
+    roller_add[k].add(pw.rail_depth_per_passage,
+                      sample.roller_speed_rad_s[k] * dt / kTwoPi / options.strip_mean_elements);
     res.wheel_wear_max_depth_m[k] = wheel_add[k].max_depth_m();
     res.roller_wear_max_depth_m[k] = roller_add[k].max_depth_m();
     res.wheel_wear_area_m2[k] = wheel_add[k].area_m2();
