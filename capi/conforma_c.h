@@ -275,7 +275,7 @@ typedef struct conforma_rig_contact_result {
 
 typedef struct conforma_rig_result {
   int status;                      /* 0 ok, 1 contact failed (kinematics_status says why), 2 profile update failed */
-  int kinematics_status;           /* 0 converged, 1 measured/eq. 2, 2 not converged, 3 no contact */
+  int kinematics_status;           /* 0 converged, 1 measured/eq. 2, 2 not converged, 3 no contact, 4 contact error */
   double wheelset_speed_rad_s;     /* omega_3 used */
   double eq2_wheelset_speed_rad_s; /* eq. 2 first approximation */
   double axle_moment_residual_Nm;  /* r_1 F_x1 + r_2 F_x2 at the result */

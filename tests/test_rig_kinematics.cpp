@@ -130,5 +130,19 @@ TEST(RigKinematics, StatusesAndErrors) {
   EXPECT_THROW(SolveRollerRigKinematics(*rig.geometry, rig.setup, in, rig.options), InputError);
 }
 
+// Valid input, but a contact solve rejects the patch (here: the exact model's grid exceeds its element budget; on worn
+// profiles e.g. a patch turning beyond 90 degrees): a status with the solver's message, not an exception that would
+// end a whole test plan.
+TEST(RigKinematics, ContactSolveRejectionIsAStatus) {
+  Rig rig;
+  rig.options.contact.model = ContactModel::Exact;
+  rig.options.contact.exact_max_elements = 4;
+  const auto r = SolveRollerRigKinematics(*rig.geometry, rig.setup, rig.Input(0.01), rig.options);
+  EXPECT_EQ(r.status, RollerRigKinematicsStatus::ContactError);
+  EXPECT_NE(r.message.find("contact solve failed on the current profiles"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("exact_max_elements"), std::string::npos) << r.message;
+  EXPECT_STREQ(to_string(r.status), "contact_error");
+}
+
 }  // namespace
 }  // namespace conforma

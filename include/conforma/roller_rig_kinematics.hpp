@@ -90,9 +90,12 @@ struct RollerRigContactResult {
 // Converged: omega_3 solved (|g| within tolerance); Measured: omega_3 given (measured, or eq. 2 with
 // eq2_wheelset_speed; no balance solved); NotConverged: the
 // root find stopped at max_evaluations or lost its bracket (last iterate reported); NoContact: a wheel has no contact
-// (zero load, or the wheel does not face its roller) - nothing is balanced.
-enum class RollerRigKinematicsStatus { Converged, Measured, NotConverged, NoContact };
-const char* to_string(RollerRigKinematicsStatus status);  // "converged", "measured", "not_converged", "no_contact"
+// (zero load, or the wheel does not face its roller) - nothing is balanced; ContactError: a contact solve rejected the
+// current profiles (e.g. a worn profile whose patch turns beyond 90 degrees; the message names it) - the input had
+// been validated, so this is the state of the profiles, reported, not thrown.
+enum class RollerRigKinematicsStatus { Converged, Measured, NotConverged, NoContact, ContactError };
+// "converged", "measured", "not_converged", "no_contact", "contact_error"
+const char* to_string(RollerRigKinematicsStatus status);
 
 struct RollerRigKinematicsResult {
   RollerRigKinematicsStatus status = RollerRigKinematicsStatus::NoContact;  // see RollerRigKinematicsStatus

@@ -20,6 +20,7 @@ const char* to_string(RollerRigKinematicsStatus status) {
     case RollerRigKinematicsStatus::Measured: return "measured";
     case RollerRigKinematicsStatus::NotConverged: return "not_converged";
     case RollerRigKinematicsStatus::NoContact: return "no_contact";
+    case RollerRigKinematicsStatus::ContactError: return "contact_error";
   }
   return "unknown";
 }
@@ -87,25 +88,10 @@ double SumFx(const WheelContactReport& rep, double* moment) {
   return fx;
 }
 
-}  // namespace
-
-RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& geometry, const RollerRigSetup& setup,
-                                                   const RollerRigKinematicsInput& in,
-                                                   const RollerRigKinematicsOptions& options) {
-  setup.validate();
-  options.validate();
-  require_finite(in.lateral_m, "rig lateral shift y");
-  require_finite(in.yaw_rad, "rig yaw");
-  require_finite(in.lateral_velocity_m_s, "rig lateral velocity");
-  require_finite(in.axle_torque_Nm, "rig axle torque");
-  for (int i = 0; i < 2; ++i) {
-    require_positive(in.roller_speed_rad_s[i], i == 0 ? "roller 1 speed omega_1" : "roller 2 speed omega_2");
-    require_non_negative(in.wheel_load_N[i], i == 0 ? "left wheel load" : "right wheel load");
-    if (in.wheel_load_N[i] > kMaxWheelLoadN) throw InputError("rig wheel load exceeds kMaxWheelLoadN");
-  }
-  const bool measured = !std::isnan(in.wheelset_speed_rad_s);
-  if (measured) require_positive(in.wheelset_speed_rad_s, "measured wheelset speed omega_3");
-
+// The solve proper, on validated input.
+RollerRigKinematicsResult SolveOnProfiles(const WheelsetTrackGeometry& geometry, const RollerRigSetup& setup,
+                                          const RollerRigKinematicsInput& in, const RollerRigKinematicsOptions& options,
+                                          bool measured) {
   RollerRigKinematicsResult res;
   WheelsetPose pose;
   pose.lateral_m = in.lateral_m;
@@ -288,6 +274,36 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
   res.longitudinal_displacement_m = 0.5 * (uL + uR);
   res.yaw_deflection_rad = (uR - uL) / (2.0 * setup.spring_half_spacing_m);
   return res;
+}
+
+}  // namespace
+
+RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& geometry, const RollerRigSetup& setup,
+                                                   const RollerRigKinematicsInput& in,
+                                                   const RollerRigKinematicsOptions& options) {
+  setup.validate();
+  options.validate();
+  require_finite(in.lateral_m, "rig lateral shift y");
+  require_finite(in.yaw_rad, "rig yaw");
+  require_finite(in.lateral_velocity_m_s, "rig lateral velocity");
+  require_finite(in.axle_torque_Nm, "rig axle torque");
+  for (int i = 0; i < 2; ++i) {
+    require_positive(in.roller_speed_rad_s[i], i == 0 ? "roller 1 speed omega_1" : "roller 2 speed omega_2");
+    require_non_negative(in.wheel_load_N[i], i == 0 ? "left wheel load" : "right wheel load");
+    if (in.wheel_load_N[i] > kMaxWheelLoadN) throw InputError("rig wheel load exceeds kMaxWheelLoadN");
+  }
+  const bool measured = !std::isnan(in.wheelset_speed_rad_s);
+  if (measured) require_positive(in.wheelset_speed_rad_s, "measured wheelset speed omega_3");
+
+  try {
+    return SolveOnProfiles(geometry, setup, in, options, measured);
+  } catch (const InputError& e) {
+    // the input was validated above: what a contact solve rejects now is the state of the worn profiles
+    RollerRigKinematicsResult res;
+    res.status = RollerRigKinematicsStatus::ContactError;
+    res.message = std::string("contact solve failed on the current profiles: ") + e.what();
+    return res;
+  }
 }
 
 }  // namespace conforma
