@@ -243,6 +243,7 @@ typedef struct conforma_rig_params {
   double filter_window_m;          /* 1e-3: width of the sliding mean, m */
   int profile_update_every_steps;  /* 1 (default): the profiles in contact take the wear every sample; N: every N */
   int eq2_wheelset_speed;          /* 0 (default): wheelset speed from the moment balance; 1: eq. 2 (opposite creepages) */
+  double strip_mean_elements;      /* 1 (default): integrated strip depth; 20: paper 000 eq. 16, its Table 3's calibration */
 } conforma_rig_params;
 
 typedef struct conforma_rig_sample {

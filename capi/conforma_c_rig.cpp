@@ -51,6 +51,7 @@ conforma::RollerRigSampleOptions OptionsOf(const conforma_rig_params& p) {
   if (p.eq2_wheelset_speed != 0 && p.eq2_wheelset_speed != 1)
     throw conforma::InputError("conforma_rig_params.eq2_wheelset_speed must be 0 or 1");
   o.kinematics.eq2_wheelset_speed = p.eq2_wheelset_speed == 1;
+  o.strip_mean_elements = p.strip_mean_elements;
   o.validate();
   return o;
 }
@@ -112,6 +113,7 @@ void conforma_default_rig_params(conforma_rig_params* p) {
   p->filter_window_m = o.filter_window_m;
   p->profile_update_every_steps = o.profile_update_every_steps;
   p->eq2_wheelset_speed = 0;
+  p->strip_mean_elements = o.strip_mean_elements;
 }
 
 conforma_status conforma_rig_create(const conforma_rig_params* params, conforma_rig** rig, char* error_text,

@@ -80,6 +80,10 @@ TEST(CApiRig, ErrorsAndStatuses) {
   EXPECT_NE(std::string(err).find("roller_radius_m"), std::string::npos) << err;
   EXPECT_EQ(rig, nullptr);
   conforma_default_rig_params(&p);
+  p.strip_mean_elements = 0.5;  // paper 000 eq. 16's C must be >= 1
+  EXPECT_EQ(conforma_rig_create(&p, &rig, err, sizeof err), CONFORMA_ERROR_INPUT);
+  EXPECT_NE(std::string(err).find("strip_mean_elements"), std::string::npos) << err;
+  conforma_default_rig_params(&p);
   EXPECT_EQ(conforma_rig_create(nullptr, &rig, err, sizeof err), CONFORMA_ERROR_NULL);
   ASSERT_EQ(conforma_rig_create(&p, &rig, err, sizeof err), CONFORMA_OK) << err;
   conforma_rig_sample s = CSample(0);
