@@ -11,7 +11,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <future>
+#include <atomic>
+#include <exception>
+#include <functional>
+#include <thread>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -141,10 +144,11 @@ bool FitSteadyCreepageOf(RollerRigLawVariant v, RollerRigLawVariant chosen) {
 }
 
 // The variants of one condition: each at the steady creepage of the options, then those of FitSteadyCreepageOf with
-// the steady creepage fitted (LM from their optimum at the fixed creepage and from their start grid). The laws with a
-// rolling-speed parameter start from the slip_velocity optimum (their n = 0 / V_0 -> infinity limit), and from their
-// grid only for the chosen law (run time); Polach's extended model from the analytic one and its grid. Result: the
-// fixed fits in the order of `variants`, then the fitted ones in the same order.
+// the steady creepage fitted (LM from their optimum at the fixed creepage; also from their start grid for Polach's
+// cheap analytic laws). The laws with a rolling-speed parameter start from the slip_velocity optimum (their n = 0 /
+// V_0 -> infinity limit), and from their grid only for the chosen law (run time); Polach's extended model from the
+// analytic one and its grid. Result: the fixed fits in the order of `variants`, then the fitted ones in the same
+// order.
 std::vector<RollerRigFit> FitVariantsOfCondition(const std::vector<RollerRigAdhesionTest>& sub,
                                                  const RollerRigAdhesionOptions& rig, const RollerRigFitOptions& fit,
                                                  const std::vector<RollerRigLawVariant>& variants,
@@ -166,7 +170,7 @@ std::vector<RollerRigFit> FitVariantsOfCondition(const std::vector<RollerRigAdhe
       fv.fit_steady_creepage = steady_fitted;
       const bool polach = v == RollerRigLawVariant::PolachAnalytic || v == RollerRigLawVariant::PolachExtended;
       if (steady_fitted) {
-        if (const RollerRigFit* f = fixed_of(v)) fv.extra_starts.push_back(f->law);  // and LM from the grid
+        if (const RollerRigFit* f = fixed_of(v)) fv.extra_starts.push_back(f->law), fv.lm_from_grid = polach;
       } else {
         const RollerRigLawVariant nested = v == RollerRigLawVariant::PolachExtended ? RollerRigLawVariant::PolachAnalytic
                                                                                    : RollerRigLawVariant::SlipVelocity;
@@ -193,11 +197,10 @@ struct ConditionFits {
 
 const double kSensitivityCreepages[] = {0.05, 0.2};
 
-ConditionFits FitCondition(const std::vector<RollerRigAdhesionTest>& sub, const RollerRigAdhesionOptions& rig,
-                           const RollerRigFitOptions& fit, const RigAdhesionArgs& a,
-                           const std::vector<RollerRigLawVariant>& variants, RollerRigLawVariant chosen) {
-  ConditionFits out;
-  out.condition = sub.front().condition;
+// §2.1-2.3 of one condition into *out.
+void FitConditionLaws(const std::vector<RollerRigAdhesionTest>& sub, const RollerRigAdhesionOptions& rig,
+                      const RollerRigFitOptions& fit, const RigAdhesionArgs& a, ConditionFits* result) {
+  ConditionFits& out = *result;
   std::fprintf(stderr, "rig-adhesion: fitting the %s law ...\n", out.condition.c_str());
   out.shared = FitRollerRigSharedLaw(sub, rig, fit);
   for (const auto& t : sub) out.per_test.push_back(FitRollerRigTestLaw(t, out.shared.law.decay_s_per_m, rig, fit));
@@ -209,6 +212,14 @@ ConditionFits FitCondition(const std::vector<RollerRigAdhesionTest>& sub, const 
       std::fprintf(stderr, "rig-adhesion: sensitivity, steady creepage %.2f, %s ...\n", xs, out.condition.c_str());
       out.sensitivity.push_back(FitRollerRigSharedLaw(sub, rig, f2));
     }
+}
+
+// §2.4-2.5 of one condition into *out.
+void FitConditionVariants(const std::vector<RollerRigAdhesionTest>& sub, const RollerRigAdhesionOptions& rig,
+                          const RollerRigFitOptions& fit, const RigAdhesionArgs& a,
+                          const std::vector<RollerRigLawVariant>& variants, RollerRigLawVariant chosen,
+                          ConditionFits* result) {
+  ConditionFits& out = *result;
   const RollerRigFitOptions& fv = fit;
   out.variants = FitVariantsOfCondition(sub, rig, fv, variants, chosen);
   if (a.sensitivity) {
@@ -227,7 +238,6 @@ ConditionFits FitCondition(const std::vector<RollerRigAdhesionTest>& sub, const 
       out.chosen_sensitivity.push_back(FitRollerRigSharedLaw(sub, rig, f2));
     }
   }
-  return out;
 }
 
 void WriteVariants(std::ostream& md, std::ostream& csv, const std::vector<VariantRun>& runs) {
@@ -364,16 +374,37 @@ void Run(const RigAdhesionArgs& a) {
   fits << "fit,test,condition,mu_static,sliding_ratio_A,decay_B_s_per_m,slope_reduction_k,peak_creepage,max_measured,"
           "max_model,steady_measured,steady_model,max_error_percent,steady_error_percent,converged\n";
   // dry and wet in parallel (independent fits; the same results as one after the other)
-  std::vector<std::future<ConditionFits>> jobs;
-  for (const std::string cond : {"dry", "wet"}) {
-    const auto sub = OfCondition(tests, cond);
-    if (sub.empty()) continue;
-    jobs.push_back(std::async(std::launch::async, [sub, &rig, &fit, &a, &variants, chosen]() {
-      return FitCondition(sub, rig, fit, a, variants, chosen);
-    }));
-  }
+  // Four independent jobs (per condition: §2.1-2.3, §2.4-2.5), the longest first, on two worker threads; each job
+  // writes its own fields, so the results do not depend on the scheduling.
+  std::vector<std::vector<RollerRigAdhesionTest>> subs;
   std::vector<ConditionFits> conds;
-  for (auto& job : jobs) conds.push_back(job.get());
+  for (const std::string cond : {"dry", "wet"}) {
+    auto sub = OfCondition(tests, cond);
+    if (sub.empty()) continue;
+    conds.emplace_back().condition = cond;
+    subs.push_back(std::move(sub));
+  }
+  std::vector<std::function<void()>> jobs;
+  for (size_t i = conds.size(); i-- > 0;)  // wet before dry (the wet fits take more iterations)
+    jobs.push_back([&, i]() { FitConditionVariants(subs[i], rig, fit, a, variants, chosen, &conds[i]); });
+  for (size_t i = conds.size(); i-- > 0;)
+    jobs.push_back([&, i]() { FitConditionLaws(subs[i], rig, fit, a, &conds[i]); });
+  std::atomic<size_t> next{0};
+  std::vector<std::exception_ptr> errors(jobs.size());
+  auto worker = [&]() {
+    for (size_t j; (j = next++) < jobs.size();) try {
+        jobs[j]();
+      } catch (...) {
+        errors[j] = std::current_exception();
+      }
+  };
+  {
+    std::thread helper(worker);
+    worker();
+    helper.join();
+  }
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
   for (const ConditionFits& cf : conds) {
     const RollerRigFit& f = cf.shared;
     md << "**" << cf.condition << "**: " << LawText(f.law) << "; rms error " << Fmt("%.2f", f.rms_error_percent)
@@ -437,8 +468,8 @@ void Run(const RigAdhesionArgs& a) {
           "polach_analytic: Polach's analytic creep force, k_A = k_S = k, mu at w = xi V; polach_extended: the same "
           "with k_S/k_A fitted, (k_A + k_S)/2 = k. Model max = the largest value of the curve up to the steady creepage. "
           "\"steady creepage fitted\" (slip_velocity, the chosen law --law, Polach's): one more parameter per "
-          "condition, bounded to [0.02, 0.5], Levenberg-Marquardt from the law's optimum at the fixed creepage and "
-          "from its start grid, the better kept. Laws with a rolling-speed parameter start from the slip_velocity "
+          "condition, bounded to [0.02, 0.5], Levenberg-Marquardt from the law's optimum at the fixed creepage (a "
+          "local refinement; Polach's laws also from their start grid, the better kept). Laws with a rolling-speed parameter start from the slip_velocity "
           "optimum (and their grid: the chosen law only), polach_extended from polach_analytic (and its grid), so "
           "they cannot end above them.\n\n";
     WriteVariants(md, vcsv, runs);
