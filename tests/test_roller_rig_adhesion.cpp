@@ -126,3 +126,150 @@ TEST(RollerRigAdhesionFit, PerTestFitReproducesTable6Test1) {
 
 }  // namespace
 }  // namespace conforma
+
+#include "conforma/validation/roller_rig_polach.hpp"
+
+namespace conforma {
+namespace {
+
+// Polach's analytic creep force (roller_rig_polach.hpp): initial slope (k_A + k_S)/2 G a b C11, saturation at mu for
+// xi -> infinity, and the 1999 form (k_A = k_S = 1) peaks at mu only asymptotically (monotone curve).
+TEST(RollerRigPolach, SlopeSaturationAndMonotonicity) {
+  const double slope = 80000.0, N = 400.0, mu = 0.3;
+  for (double kA : {1.0, 0.4}) {
+    const double kS = 0.25 * kA;
+    const double xi = 1e-9;
+    EXPECT_NEAR(PolachTractionCoefficient(slope, N, kA, kS, mu, xi) * N / xi, 0.5 * (kA + kS) * slope,
+                1e-6 * slope);
+    EXPECT_NEAR(PolachTractionCoefficient(slope, N, kA, kS, mu, 1e6), mu, 1e-4);
+  }
+  double prev = 0.0;
+  for (double xi = 1e-4; xi < 1.0; xi *= 1.5) {
+    const double f = PolachTractionCoefficient(slope, N, 1.0, 1.0, mu, xi);
+    EXPECT_GT(f, prev);
+    EXPECT_LT(f, mu);
+    prev = f;
+  }
+  // k_S << k_A: the adhesion term peaks at k_A eps = 1 and the curve has a local maximum there
+  const double kA = 1.0, kS = 0.05, eps_peak = 1.0 / kA;
+  const double xi_peak = eps_peak * 4.0 * N * mu / (3.14159265358979323846 * slope);
+  const double f_peak = PolachTractionCoefficient(slope, N, kA, kS, mu, xi_peak);
+  EXPECT_GT(f_peak, PolachTractionCoefficient(slope, N, kA, kS, mu, 3.0 * xi_peak));
+  EXPECT_THROW(PolachTractionCoefficient(slope, N, 0.0, kS, mu, 0.01), InputError);
+}
+
+// The static level of the speed-dependent variants: mu_s at V_ref, the published or fitted shape elsewhere.
+TEST(RollerRigAdhesionFit, SpeedDependentStaticLevel) {
+  RollerRigLaw l;
+  l.mu_static = 0.3;
+  const double Vr = kRollerRigReferenceSpeed;
+  EXPECT_DOUBLE_EQ(l.StaticLevel(3.0), 0.3);  // slip_velocity: no rolling-speed dependence
+  l.variant = RollerRigLawVariant::SpeedPower, l.speed_exponent = 0.5;
+  EXPECT_NEAR(l.StaticLevel(Vr), 0.3, 1e-15);
+  EXPECT_NEAR(l.StaticLevel(4.0 * Vr), 0.15, 1e-12);
+  l.variant = RollerRigLawVariant::SpeedHyperbolic, l.speed_scale_m_per_s = Vr;
+  EXPECT_NEAR(l.StaticLevel(3.0 * Vr), 0.15, 1e-12);
+  l.variant = RollerRigLawVariant::CurtiusKniffler;
+  // Curtius-Kniffler at 0 and 100 km/h relative to V_ref = 36 km/h: (0.161 + 7.5/44) / (0.161 + 7.5/80)
+  EXPECT_NEAR(l.StaticLevel(100.0 / 3.6) / l.StaticLevel(1e-9),
+              (0.161 + 7.5 / 144.0) / (0.161 + 7.5 / 44.0), 1e-9);
+  EXPECT_EQ(ParseRollerRigLawVariant("speed_power"), RollerRigLawVariant::SpeedPower);
+  EXPECT_THROW(ParseRollerRigLawVariant("speed"), InputError);
+  for (RollerRigLawVariant v : AllRollerRigLawVariants()) EXPECT_EQ(ParseRollerRigLawVariant(to_string(v)), v);
+}
+
+std::vector<RollerRigAdhesionTest> SyntheticTests(const RollerRigLaw& truth, const RollerRigAdhesionOptions& rig,
+                                                  const RollerRigFitOptions& fit) {
+  const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
+  std::vector<RollerRigAdhesionTest> tests;
+  const double rpm[] = {1000, 700, 358, 358}, kg[] = {37, 37, 42, 47}, slope[] = {8380, 7665, 12038, 17670};
+  for (int i = 0; i < 4; ++i) {
+    RollerRigAdhesionTest t;
+    t.test = i + 1, t.reference_speed_rpm = rpm[i], t.wheel_load_kg = kg[i], t.initial_slope_N = slope[i];
+    t.condition = "wet", t.max_adhesion = 1.0, t.steady_adhesion = 1.0;
+    const RollerRigTestModel m = EvaluateRollerRigTest(t, rig, c, truth, fit);
+    t.max_adhesion = m.model_max, t.steady_adhesion = m.model_steady;
+    tests.push_back(t);
+  }
+  return tests;
+}
+
+// The rolling-speed-dependent law (4 parameters from 4 tests x 2 numbers, FASTSIM) is recovered from data it
+// generated, including the speed exponent; the peaks fall with the rolling speed as the static level does.
+TEST(RollerRigAdhesionFit, SpeedPowerFitRecoversAKnownLaw) {
+  RollerRigAdhesionOptions rig;
+  rig.fastsim_elements = 12;
+  RollerRigFitOptions fit;
+  fit.peak_grid_points = 20;
+  fit.variant = RollerRigLawVariant::SpeedPower;
+  RollerRigLaw truth;
+  truth.variant = RollerRigLawVariant::SpeedPower;
+  truth.mu_static = 0.28, truth.sliding_ratio = 0.75, truth.decay_s_per_m = 0.8, truth.speed_exponent = 0.35;
+  const auto tests = SyntheticTests(truth, rig, fit);
+  EXPECT_LT(tests[0].max_adhesion, tests[1].max_adhesion);  // 1000 rpm below 700 rpm
+  EXPECT_LT(tests[1].max_adhesion, tests[2].max_adhesion);  // 700 rpm below 358 rpm
+  const RollerRigFit f = FitRollerRigSharedLaw(tests, rig, fit);
+  EXPECT_TRUE(f.converged);
+  EXPECT_EQ(f.parameters, 4);
+  EXPECT_EQ(f.data_points, 8);
+  EXPECT_NEAR(f.law.mu_static, truth.mu_static, 2e-3);
+  EXPECT_NEAR(f.law.speed_exponent, truth.speed_exponent, 5e-3);
+  EXPECT_NEAR(f.law.sliding_ratio, truth.sliding_ratio, 5e-3);
+  EXPECT_NEAR(f.law.decay_s_per_m, truth.decay_s_per_m, 5e-2);
+  EXPECT_LT(f.max_abs_error_percent, 0.05);
+  EXPECT_EQ(f.within_5_percent, 8);
+}
+
+// The maximum up to the steady creepage (peak_before_steady): a constant friction coefficient (A = 1) gives a curve
+// that rises monotonically to mu, so its maximum up to xi_s is the steady value itself; the falling law of the same
+// mu_s has an interior peak above its steady value, the same with either definition of the maximum.
+TEST(RollerRigAdhesionFit, MaximumBeforeSteadyCreepage) {
+  RollerRigAdhesionOptions rig;
+  rig.fastsim_elements = 16;
+  const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
+  RollerRigFitOptions fit;
+  fit.peak_grid_points = 16;
+  fit.peak_before_steady = true;
+  RollerRigAdhesionTest t;
+  t.test = 1, t.reference_speed_rpm = 700, t.wheel_load_kg = 37, t.initial_slope_N = 7960, t.condition = "dry";
+  t.max_adhesion = 0.4, t.steady_adhesion = 0.3;
+  RollerRigLaw constant;
+  constant.mu_static = 0.4, constant.sliding_ratio = 1.0;
+  const RollerRigTestModel m = EvaluateRollerRigTest(t, rig, c, constant, fit);
+  EXPECT_DOUBLE_EQ(m.model_max, m.model_steady);
+  EXPECT_DOUBLE_EQ(m.peak_creepage, fit.steady_creepage);
+  EXPECT_LT(m.model_steady, 0.4);
+  RollerRigLaw falling = constant;
+  falling.sliding_ratio = 0.5, falling.decay_s_per_m = 2.0;
+  const RollerRigTestModel f = EvaluateRollerRigTest(t, rig, c, falling, fit);
+  EXPECT_LT(f.peak_creepage, fit.steady_creepage);
+  EXPECT_GT(f.model_max, f.model_steady);
+  fit.peak_before_steady = false;
+  EXPECT_NEAR(EvaluateRollerRigTest(t, rig, c, falling, fit).model_max, f.model_max, 1e-9);
+}
+
+// Polach's extended model with the steady creepage fitted (5 parameters for 8 numbers): k_S/k_A and the steady
+// creepage of the synthetic data are recovered.
+TEST(RollerRigAdhesionFit, PolachExtendedFitRecoversSlipAreaRatioAndSteadyCreepage) {
+  RollerRigAdhesionOptions rig;
+  RollerRigFitOptions gen;
+  gen.steady_creepage = 0.07;
+  gen.variant = RollerRigLawVariant::PolachExtended;
+  RollerRigLaw truth;
+  truth.variant = RollerRigLawVariant::PolachExtended;
+  truth.mu_static = 0.4, truth.sliding_ratio = 0.5, truth.decay_s_per_m = 0.6, truth.slip_area_ratio = 0.3;
+  const auto tests = SyntheticTests(truth, rig, gen);
+  RollerRigFitOptions fit = gen;
+  fit.steady_creepage = 0.1;  // the start; fitted
+  fit.fit_steady_creepage = true;
+  const RollerRigFit f = FitRollerRigSharedLaw(tests, rig, fit);
+  EXPECT_TRUE(f.converged);
+  EXPECT_EQ(f.parameters, 5);
+  EXPECT_NEAR(f.steady_creepage, 0.07, 1e-3);
+  EXPECT_NEAR(f.law.slip_area_ratio, 0.3, 5e-3);
+  EXPECT_NEAR(f.law.mu_static, 0.4, 2e-3);
+  EXPECT_LT(f.max_abs_error_percent, 0.05);
+}
+
+}  // namespace
+}  // namespace conforma
