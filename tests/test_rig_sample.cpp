@@ -135,6 +135,23 @@ TEST(RigSample, ProfileUpdateAndFilterConserveTheWornArea) {
   EXPECT_NEAR(st.time_s, 0.2, 1e-12);
 }
 
+// Eq. 16's C belongs to Table 3 (Archard); the USFD wear-index law is not divided.
+TEST(RigSample, StripMeanElementsApplyToArchardOnly) {
+  RollerRigSampleOptions o = RollerRigSampleOptions::Defaults();
+  o.wear_law = RollerRigWearLaw::WearIndex;
+  RollerRigState s1 = MakeRollerRigState(o), s20 = s1;
+  const RollerRigSampleResult r1 = ProcessRigSample(o, &s1, Sample(0.15));
+  o.strip_mean_elements = 20.0;
+  const RollerRigSampleResult r20 = ProcessRigSample(o, &s20, Sample(0.15));
+  ASSERT_EQ(r1.status, RollerRigSampleStatus::Ok) << r1.message;
+  ASSERT_EQ(r20.status, RollerRigSampleStatus::Ok) << r20.message;
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_GT(r1.wheel_wear_area_m2[k], 0.0);
+    EXPECT_EQ(r1.wheel_wear_area_m2[k], r20.wheel_wear_area_m2[k]);
+    EXPECT_EQ(r1.roller_wear_area_m2[k], r20.roller_wear_area_m2[k]);
+  }
+}
+
 TEST(RigSample, StatusesAndErrors) {
   const RollerRigSampleOptions o = RollerRigSampleOptions::Defaults();
   RollerRigState st = MakeRollerRigState(o);

@@ -40,7 +40,8 @@ struct RollerRigSampleOptions {
   // Table 3 were calibrated against the measured profiles with that rule. The code integrates (paper 001 eq. 24), so
   // the depth of every cell is divided by this C, independent of the contact model's own grid. >= 1; 1: the
   // integrated depth with the coefficients as printed (the Archard volume of eq. 6); 20: paper 000's calibration
-  // (the scenario's default, docs/physics-reference.md §18.3).
+  // (the scenario's default, docs/physics-reference.md §18.3). Archard (Table 3) only: the USFD wear-index law is
+  // calibrated on the integrated depth and is not divided.
   double strip_mean_elements = 1.0;
   bool update_profiles = true;            // false: wear is computed and reported, the profiles stay as they are
   // Sliding-mean filter and final removal every N steps (paper 000 §3.5: 10 steps of 20 ms), >= 1. With coarser

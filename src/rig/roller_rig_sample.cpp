@@ -178,6 +178,8 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
 
   // ---- wear of this step (paper 000 eqs. 7-17)
   const WearModel model = RigWearModel(options);
+  // eq. 16's C belongs to Table 3's calibration; the USFD law is calibrated on the integrated depth (paper 003)
+  const double strip_c = options.wear_law == RollerRigWearLaw::Archard ? options.strip_mean_elements : 1.0;
   const double dt = sample.duration_s;
   const double w3 = res.kinematics.wheelset_speed_rad_s;
   std::array<WearDistribution, 2> wheel_add, roller_add;
@@ -210,10 +212,9 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
     if (patch.cells.empty()) continue;
     const PatchWear pw = ComputePatchWear(patch, model, state->wheel_pending[k], state->roller_pending[k]);
     // paper 000 eq. 17: passages in dt, omega dt / (2 pi), for the wheel ring and the roller ring
-    // (divided by C of eq. 16, options.strip_mean_elements)
-    wheel_add[k].add(pw.wheel_depth_per_passage, w3 * dt / kTwoPi / options.strip_mean_elements);
-    roller_add[k].add(pw.rail_depth_per_passage,
-                      sample.roller_speed_rad_s[k] * dt / kTwoPi / options.strip_mean_elements);
+    // (Archard with Table 3: divided by C of eq. 16, options.strip_mean_elements)
+    wheel_add[k].add(pw.wheel_depth_per_passage, w3 * dt / kTwoPi / strip_c);
+    roller_add[k].add(pw.rail_depth_per_passage, sample.roller_speed_rad_s[k] * dt / kTwoPi / strip_c);
     res.wheel_wear_max_depth_m[k] = wheel_add[k].max_depth_m();
     res.roller_wear_max_depth_m[k] = roller_add[k].max_depth_m();
     res.wheel_wear_area_m2[k] = wheel_add[k].area_m2();
