@@ -193,9 +193,29 @@ struct EquilibriumResult {
 
 // Everything that depends only on the track set-up (mounted rails, uniform tables) is prepared once; the
 // pose evaluations are const and thread-safe.
+// Closed interval [lo_m, hi_m] of a profile's own lateral coordinate y; empty when lo_m > hi_m.
+struct LateralInterval {
+  double lo_m = 1.0, hi_m = -1.0;
+  bool empty() const { return lo_m > hi_m; }
+};
+
 class WheelsetTrackGeometry {
  public:
   explicit WheelsetTrackGeometry(TrackSetup setup, const GeometryOptions& options = {});
+  // The geometry of worn profiles from the geometry of the profiles they were worn from, for real-time updates
+  // (roller rig, docs/physics-reference.md §18.3): `worn` is previous.setup() with new profiles that coincide with
+  // the previous ones outside the lateral intervals changed_wheel[side] / changed_rail[side] (profile y; empty:
+  // unchanged profile; the interval must cover every spline segment whose values changed). The table nodes before
+  // an interval are taken from `previous`; from the interval on they are solved on the new profile as the full
+  // constructor does (Newton continued from node to node), up to the first node beyond it whose arc length comes out
+  // bit for bit as before, after which `previous`'s nodes are those the full constructor would solve. A side whose
+  // rail must be mounted anew (inclined, or its highest point moved off z = 0, or mounted off it before: mounting
+  // refits), whose interval reaches a table end or whose new nodes are no longer function-like is built as the full
+  // constructor does; so is everything when `worn` differs from previous.setup() in more than its profiles. The
+  // result is WheelsetTrackGeometry(worn, previous.options()) bit for bit (tests/test_geometry_worn_update.cpp).
+  WheelsetTrackGeometry(const WheelsetTrackGeometry& previous, TrackSetup worn,
+                        const std::array<LateralInterval, 2>& changed_wheel,
+                        const std::array<LateralInterval, 2>& changed_rail);
 
   const TrackSetup& setup() const { return setup_; }
   const GeometryOptions& options() const { return options_; }
@@ -277,6 +297,7 @@ class WheelsetTrackGeometry {
   struct GraphTable {
     double y0 = 0.0, h = 1e-4;
     std::vector<double> z, dz, kappa, s;  // value, slope, signed curvature (convex > 0), arc length
+    double s_first = 0.0, s_last = 0.0;   // arc-length range of the tabulated part of the profile (Newton's bounds)
     size_t size() const { return z.size(); }
     double y_end() const { return z.empty() ? y0 : y0 + h * static_cast<double>(z.size() - 1); }
     inline bool eval(double y, double* value, double* slope) const;  // (defined below: inlined in the hot loops)
@@ -288,12 +309,15 @@ class WheelsetTrackGeometry {
                       double max_contact_angle_rad) const;
   struct SideData {
     Profile mounted_rail;
+    Eigen::Vector2d mount_shift = Eigen::Vector2d::Zero();  // subtracted from the inclined rail's samples
     double rail_origin_eta = 0.0;
+    double rail_table_y0 = 0.0;  // the rail table's first node in the mounted profile's y (rail.y0 - rail_origin_eta)
     GraphTable rail;   // in side-frame eta
     GraphTable wheel;  // in wheel-profile y_w (z = radial height z_w)
     double nominal_radius = 0.46;
     double roller_radius = 0.0;  // R_r; 0: a rail
   };
+  void BuildSide(int k);  // sides_[k] from setup_ (the full constructor's work for one side)
   TrackSetup setup_;
   GeometryOptions options_;
   std::array<SideData, 2> sides_;
