@@ -111,6 +111,11 @@ struct GeometryOptions {
   double max_slope = 12.0;           // |dz/dy| beyond which profile parts are left out (85 deg), > 0
   double candidate_window_m = 2e-3;  // m, >= 0: local minima up to this much above the smallest gap are reported
   double contact_tolerance_m = 1e-6; // m, >= 0: minima within this of the smallest gap count as contact points
+  // An uninclined rail (TrackSetup::rail_inclination_rad 0) whose highest point is off z = 0 is mounted by refitting
+  // its translated samples (true, Profile::FromPoints) or by translating it exactly (false, no resampling). The refit
+  // changes the curvature of fine worn features (0.3 % for a 2 um bell 1 mm wide on the 1:5 roller's top); the real-time
+  // rig updates translate (roller_rig_sample.cpp), the rest keeps the refit so that existing results stay as they are.
+  bool refit_uninclined_rail = true;
 };
 
 // Ok: at least one rigid contact point (gap minimum) found; NoOverlap: the silhouette does not face the rail head.
@@ -209,10 +214,11 @@ class WheelsetTrackGeometry {
   // an interval are taken from `previous`; from the interval on they are solved on the new profile as the full
   // constructor does (Newton continued from node to node), up to the first node beyond it whose arc length comes out
   // bit for bit as before, after which `previous`'s nodes are those the full constructor would solve. A side whose
-  // rail must be mounted anew (inclined, or its highest point moved off z = 0, or mounted off it before: mounting
-  // refits), whose interval reaches a table end or whose new nodes are no longer function-like is built as the full
-  // constructor does; so is everything when `worn` differs from previous.setup() in more than its profiles. The
-  // result is WheelsetTrackGeometry(worn, previous.options()) bit for bit (tests/test_geometry_worn_update.cpp).
+  // rail is refitted by its mounting (inclined, or GeometryOptions::refit_uninclined_rail with the top off z = 0
+  // before or after) or whose top moved (every node changes in rounding), whose interval reaches a table end or whose
+  // new nodes are no longer function-like is built as the full constructor does; so is everything when `worn`
+  // differs from previous.setup() in more than its profiles. The result is WheelsetTrackGeometry(worn,
+  // previous.options()) bit for bit (tests/test_geometry_worn_update.cpp).
   WheelsetTrackGeometry(const WheelsetTrackGeometry& previous, TrackSetup worn,
                         const std::array<LateralInterval, 2>& changed_wheel,
                         const std::array<LateralInterval, 2>& changed_rail);

@@ -66,6 +66,10 @@ class Profile {
   size_t sample_count() const { return y_.size(); }
   Eigen::Vector2d sample_at(size_t i) const { return {y_[i], z_[i]}; }  // stored sample i (i < sample_count())
 
+  // The same curve translated by (dy, dz): samples shifted, spline second derivatives, grid and parametrisation kept
+  // (exact: no refit).
+  Profile Translated(double dy, double dz, const std::string& source) const;
+
   ProfileKind kind() const { return kind_; }
   const std::string& source() const { return source_; }
   bool empty() const { return y_.empty(); }

@@ -16,7 +16,7 @@ GraphTable build_table(const Profile& p, double spacing, double max_slope, const
 Eigen::Vector2d highest_point(const std::vector<Eigen::Vector2d>& pts);
 int highest_sample(const Profile& p);  // index of the first highest stored sample
 Eigen::Vector2d uninclined_mount_shift(const Profile& rail, int top_sample);
-Profile mount_rail(const Profile& rail, double inclination, Eigen::Vector2d* shift);
+Profile mount_rail(const Profile& rail, double inclination, bool refit_uninclined, Eigen::Vector2d* shift);
 double gauge_point_y(const Profile& rail, double gauge_height, int top);
 double gauge_point_y(const Profile& rail, double gauge_height);
 void check_roller_radius(double roller_radius, const GraphTable& rail, int k, const Profile& profile);

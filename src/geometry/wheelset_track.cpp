@@ -154,10 +154,13 @@ Eigen::Vector2d uninclined_mount_shift(const Profile& rail, int top_sample) {
 // Mounted rail: inclined by `inclination` (cant towards the track centre, -y) and re-referenced so that its
 // highest point is at z = 0 (and at y = 0 when an inclination is applied, as standard_profiles.hpp does).
 // *shift: the point subtracted from the inclined samples (zero when the rail is returned as it is). The samples are
-// refitted (Profile::FromPoints) also when the rail is only translated (inclination 0): a refit resamples the curve
-// and changes the curvature of fine worn features (by 0.3 % for a 2 um bell 1 mm wide on the rig's roller top),
-// where Profile::Translated would keep it exactly; kept so that the existing results stay as they are.
-Profile mount_rail(const Profile& rail, double inclination, Eigen::Vector2d* shift) {
+// refitted (Profile::FromPoints), also when the rail is only translated (inclination 0) unless refit_uninclined is
+// false (GeometryOptions::refit_uninclined_rail): then it is translated exactly (Profile::Translated).
+Profile mount_rail(const Profile& rail, double inclination, bool refit_uninclined, Eigen::Vector2d* shift) {
+  if (inclination == 0.0 && !refit_uninclined) {
+    *shift = uninclined_mount_shift(rail, highest_sample(rail));
+    return shift->isZero() ? rail : rail.Translated(-shift->x(), -shift->y(), rail.source() + " (mounted)");
+  }
   std::vector<Eigen::Vector2d> pts = rail.samples();
   const double c = std::cos(inclination), s = std::sin(inclination);
   for (auto& p : pts) p = Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
@@ -240,7 +243,8 @@ void WheelsetTrackGeometry::BuildSide(int k) {
     SideData& d = sides_[k];
     d.nominal_radius = setup_.nominal_radius_m[k];
     d.roller_radius = setup_.roller_radius_m[k];
-    d.mounted_rail = mount_rail(setup_.rail[k], setup_.rail_inclination_rad, &d.mount_shift);
+    d.mounted_rail =
+        mount_rail(setup_.rail[k], setup_.rail_inclination_rad, options_.refit_uninclined_rail, &d.mount_shift);
     d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
     d.rail = build_table(d.mounted_rail, options_.table_spacing_m, options_.max_slope, "rail");
     d.rail_table_y0 = d.rail.y0;

@@ -71,16 +71,19 @@ WheelsetTrackGeometry::WheelsetTrackGeometry(const WheelsetTrackGeometry& previo
       d.rail_origin_eta = p.rail_origin_eta;
       continue;
     }
-    // the mounted rail is the rail itself when it is uninclined and its highest point stays at z = 0 (within
-    // 1e-12 m: the wear is off its top), before and after; otherwise mounting refits it (mount_rail)
+    // an uninclined rail is mounted by translation (the rail itself while its top stays at z = 0); mounting refits
+    // an inclined one, and an uninclined one off z = 0 with refit_uninclined_rail
     const Profile& rail = setup_.rail[k];
     const int top = highest_sample(rail);
-    if (setup_.rail_inclination_rad != 0.0 || !p.mount_shift.isZero() || !uninclined_mount_shift(rail, top).isZero()) {
+    const Eigen::Vector2d shift = uninclined_mount_shift(rail, top);
+    // (a top moved to a new height changes every node's values in rounding: built anew as well)
+    if (setup_.rail_inclination_rad != 0.0 ||
+        (options_.refit_uninclined_rail && (!p.mount_shift.isZero() || !shift.isZero())) || shift != p.mount_shift) {
       BuildSide(k);
       continue;
     }
-    d.mounted_rail = rail;
-    d.mount_shift = Eigen::Vector2d::Zero();
+    d.mounted_rail = shift.isZero() ? rail : rail.Translated(-shift.x(), -shift.y(), rail.source() + " (mounted)");
+    d.mount_shift = shift;
     d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m, top);
     d.rail.y0 = d.rail_table_y0 + d.rail_origin_eta;
     if (!Retabulate(d.mounted_rail, d.rail, d.rail_table_y0, changed_rail[k], options_.max_slope)) {

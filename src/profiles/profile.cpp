@@ -258,6 +258,18 @@ Profile Profile::WithMovedSamples(size_t first, const std::vector<Eigen::Vector2
   return out;
 }
 
+Profile Profile::Translated(double dy, double dz, const std::string& source) const {
+  Profile out = *this;
+  out.source_ = source;
+  if (dz != 0.0)
+    for (double& z : out.z_) z += dz;
+  if (dy != 0.0) {
+    for (double& y : out.y_) y += dy;
+    out.set_y_range();
+  }
+  return out;
+}
+
 void Profile::locate(double s, int& i, double& t) const {
   const int n = static_cast<int>(y_.size());
   const double u = std::clamp(s, 0.0, length_) / h_;
