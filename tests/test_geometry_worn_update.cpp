@@ -95,53 +95,69 @@ TEST(GeometryWornUpdate, EqualsAFullRebuildOverAWearingSequence) {
     EXPECT_EQ(d, 0.0);
 }
 
-// A roller worn at its highest point must be mounted anew (mount_rail refits it with its new top at z = 0): the
-// update builds that side as the full constructor does, and keeps the unchanged side.
-TEST(GeometryWornUpdate, RollerWornAtItsTop) {
+// A cosine bell of wear (depth at its centre, 41 samples wide) along the normals around sample `centre`, and the
+// lateral interval to pass to the update (the re-solved window, one sample and a spacing more, as the rig's removal).
+Profile WearBell(const Profile& p, size_t centre, double depth, LateralInterval* changed) {
+  const double h = p.spacing();
+  std::vector<Eigen::Vector2d> moved;
+  for (size_t i = centre - 20; i <= centre + 20; ++i) {
+    const double u = (static_cast<double>(i) - static_cast<double>(centre)) / 20.0;
+    moved.push_back(p.sample_at(i) - 0.5 * depth * (1.0 + std::cos(kPi * u)) * p.normal(i * h));
+  }
+  const Profile worn = p.WithMovedSamples(centre - 20, moved);
+  *changed = LateralInterval{};
+  const size_t margin = Profile::kMovedSplineMargin + 1;
+  for (size_t i = centre - 20 - margin; i <= centre + 20 + margin; ++i)
+    for (const double y : {p.sample_at(i).x(), worn.sample_at(i).x()}) {
+      changed->lo_m = changed->empty() ? y : std::min(changed->lo_m, y);
+      changed->hi_m = changed->empty() ? y : std::max(changed->hi_m, y);
+    }
+  changed->lo_m -= h;
+  changed->hi_m += h;
+  return worn;
+}
+
+void ExpectSameTables(const WheelsetTrackGeometry& a, const WheelsetTrackGeometry& b) {
+  for (Side side : {Side::Left, Side::Right}) {
+    TableDifference rail, wheel;
+    Compare(a.RailTable(side), b.RailTable(side), &rail, "rail table");
+    Compare(a.WheelTable(side), b.WheelTable(side), &wheel, "wheel table");
+    EXPECT_EQ(rail.z + rail.dz + rail.kappa + rail.s, 0.0);
+    EXPECT_EQ(wheel.z + wheel.dz + wheel.kappa + wheel.s, 0.0);
+    EXPECT_EQ(a.rail_origin_eta_m(side), b.rail_origin_eta_m(side));
+  }
+}
+
+// A roller worn at its highest point is mounted anew (refitted, or, in real time, translated to its new top: the
+// update solves that rail table anew), then worn beside its top (translated by the same shift: the update solves
+// only the worn nodes). Bit for bit a full rebuild at both steps, with both mountings.
+TEST(GeometryWornUpdate, RollerWornAtItsTopThenBeside) {
   const RollerRigSetup setup;
   const Profile wheel = MakeRollerRigWheelProfile(setup), roller = MakeRollerRigRollerProfile(setup);
-  const WheelsetTrackGeometry before(MakeRollerRigTrack(setup, {wheel, wheel}, {roller, roller}),
-                                     RollerRigGeometryOptions(setup));
-  ASSERT_TRUE(before.mounted_rail(Side::Left).source() == roller.source());  // unworn: mounted as it is
-  // 2 um of wear, a cosine bell 1 mm wide around the highest sample, along the normals
   size_t top = 0;
   for (size_t i = 1; i < roller.sample_count(); ++i)
     if (roller.sample_at(i).y() > roller.sample_at(top).y()) top = i;
-  const double h = roller.spacing(), half_width = 0.5e-3;
-  const size_t n = static_cast<size_t>(half_width / h);
-  std::vector<Eigen::Vector2d> moved;
-  for (size_t i = top - n; i <= top + n; ++i) {
-    const double u = (static_cast<double>(i) - static_cast<double>(top)) * h / half_width;
-    moved.push_back(roller.sample_at(i) - 1e-6 * (1.0 + std::cos(kPi * u)) * roller.normal(i * h));
+  LateralInterval at_top, beside;
+  const Profile worn = WearBell(roller, top, 2e-6, &at_top);
+  const Profile worn2 = WearBell(worn, top + 150, 1e-6, &beside);
+  const LateralInterval none;
+  for (bool refit : {true, false}) {
+    GeometryOptions g = RollerRigGeometryOptions(setup);
+    g.refit_uninclined_rail = refit;
+    const WheelsetTrackGeometry before(MakeRollerRigTrack(setup, {wheel, wheel}, {roller, roller}), g);
+    EXPECT_EQ(before.mounted_rail(Side::Left).source(), roller.source());  // unworn: top at z = 0, as it is
+    const WheelsetTrackGeometry update(before, MakeRollerRigTrack(setup, {wheel, wheel}, {worn, roller}), {none, none},
+                                       {at_top, none});
+    const WheelsetTrackGeometry full(MakeRollerRigTrack(setup, {wheel, wheel}, {worn, roller}), g);
+    ExpectSameTables(update, full);
+    EXPECT_NE(update.mounted_rail(Side::Left).source(), roller.source());  // mounted anew: "... (mounted)"
+    const double top_z = *std::max_element(update.RailTable(Side::Left).z.begin(), update.RailTable(Side::Left).z.end());
+    EXPECT_NEAR(top_z, 0.0, 1e-9);
+    const WheelsetTrackGeometry update2(update, MakeRollerRigTrack(setup, {wheel, wheel}, {worn2, roller}),
+                                        {none, none}, {beside, none});
+    const WheelsetTrackGeometry full2(MakeRollerRigTrack(setup, {wheel, wheel}, {worn2, roller}), g);
+    ExpectSameTables(update2, full2);
   }
-  const Profile worn = roller.WithMovedSamples(top - n, moved);
-  LateralInterval changed;
-  for (size_t i = top - n - Profile::kMovedSplineMargin - 1; i <= top + n + Profile::kMovedSplineMargin + 1; ++i)
-    for (const double y : {roller.sample_at(i).x(), worn.sample_at(i).x()}) {
-      changed.lo_m = changed.empty() ? y : std::min(changed.lo_m, y);
-      changed.hi_m = changed.empty() ? y : std::max(changed.hi_m, y);
-    }
-  changed.lo_m -= h;
-  changed.hi_m += h;
-  const WheelsetTrackGeometry update(before, MakeRollerRigTrack(setup, {wheel, wheel}, {worn, roller}),
-                                     {LateralInterval{}, LateralInterval{}}, {changed, LateralInterval{}});
-  const WheelsetTrackGeometry full(MakeRollerRigTrack(setup, {wheel, wheel}, {worn, roller}),
-                                   RollerRigGeometryOptions(setup));
-  // the right side did not change: bit for bit
-  TableDifference right;
-  Compare(update.RailTable(Side::Right), full.RailTable(Side::Right), &right, "right rail table");
-  EXPECT_EQ(right.z + right.dz + right.kappa + right.s, 0.0);
-  // left: the top moved down by the 2 um, mounted at z = 0 again
-  TableDifference left;
-  Compare(update.RailTable(Side::Left), full.RailTable(Side::Left), &left, "left rail table");
-  EXPECT_EQ(left.z + left.dz + left.kappa + left.s, 0.0);
-  EXPECT_EQ(update.rail_origin_eta_m(Side::Left), full.rail_origin_eta_m(Side::Left));
-  EXPECT_NE(update.mounted_rail(Side::Left).source(), roller.source());  // refitted: "... (mounted)"
-  const double top_z = *std::max_element(update.RailTable(Side::Left).z.begin(), update.RailTable(Side::Left).z.end());
-  EXPECT_NEAR(top_z, 0.0, 1e-9);
-  const double top_before =
-      *std::max_element(before.RailTable(Side::Left).z.begin(), before.RailTable(Side::Left).z.end());
-  EXPECT_NEAR(top_before, 0.0, 1e-9);
 }
 
 }  // namespace

@@ -324,6 +324,7 @@ class WheelsetTrackGeometry {
     double roller_radius = 0.0;  // R_r; 0: a rail
   };
   void BuildSide(int k);  // sides_[k] from setup_ (the full constructor's work for one side)
+  void BuildRail(int k);  // its mounted rail, rail origin and rail table
   TrackSetup setup_;
   GeometryOptions options_;
   std::array<SideData, 2> sides_;

@@ -239,19 +239,22 @@ WheelsetTrackGeometry::WheelsetTrackGeometry(TrackSetup setup, const GeometryOpt
 }
 
 void WheelsetTrackGeometry::BuildSide(int k) {
-  {
-    SideData& d = sides_[k];
-    d.nominal_radius = setup_.nominal_radius_m[k];
-    d.roller_radius = setup_.roller_radius_m[k];
-    d.mounted_rail =
-        mount_rail(setup_.rail[k], setup_.rail_inclination_rad, options_.refit_uninclined_rail, &d.mount_shift);
-    d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
-    d.rail = build_table(d.mounted_rail, options_.table_spacing_m, options_.max_slope, "rail");
-    d.rail_table_y0 = d.rail.y0;
-    d.rail.y0 += d.rail_origin_eta;
-    d.wheel = build_table(setup_.wheel[k], options_.table_spacing_m, options_.max_slope, "wheel");
-    check_roller_radius(d.roller_radius, d.rail, k, setup_.rail[k]);
-  }
+  SideData& d = sides_[k];
+  d.nominal_radius = setup_.nominal_radius_m[k];
+  d.roller_radius = setup_.roller_radius_m[k];
+  BuildRail(k);
+  d.wheel = build_table(setup_.wheel[k], options_.table_spacing_m, options_.max_slope, "wheel");
+  check_roller_radius(d.roller_radius, d.rail, k, setup_.rail[k]);
+}
+
+void WheelsetTrackGeometry::BuildRail(int k) {
+  SideData& d = sides_[k];
+  d.mounted_rail =
+      mount_rail(setup_.rail[k], setup_.rail_inclination_rad, options_.refit_uninclined_rail, &d.mount_shift);
+  d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
+  d.rail = build_table(d.mounted_rail, options_.table_spacing_m, options_.max_slope, "rail");
+  d.rail_table_y0 = d.rail.y0;
+  d.rail.y0 += d.rail_origin_eta;
 }
 
 WheelsetTrackGeometry::Frame WheelsetTrackGeometry::SideFrame(Side side, const WheelsetPose& pose) const {

@@ -76,10 +76,14 @@ WheelsetTrackGeometry::WheelsetTrackGeometry(const WheelsetTrackGeometry& previo
     const Profile& rail = setup_.rail[k];
     const int top = highest_sample(rail);
     const Eigen::Vector2d shift = uninclined_mount_shift(rail, top);
-    // (a top moved to a new height changes every node's values in rounding: built anew as well)
     if (setup_.rail_inclination_rad != 0.0 ||
-        (options_.refit_uninclined_rail && (!p.mount_shift.isZero() || !shift.isZero())) || shift != p.mount_shift) {
+        (options_.refit_uninclined_rail && (!p.mount_shift.isZero() || !shift.isZero()))) {
       BuildSide(k);
+      continue;
+    }
+    if (shift != p.mount_shift) {  // translated to a new top: every node's values change in rounding, solved anew
+      BuildRail(k);
+      check_roller_radius(d.roller_radius, d.rail, k, rail);
       continue;
     }
     d.mounted_rail = shift.isZero() ? rail : rail.Translated(-shift.x(), -shift.y(), rail.source() + " (mounted)");
