@@ -2,6 +2,7 @@
 // nodes where the profiles changed are solved again (real-time roller-rig updates, docs/physics-reference.md §18.3).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "conforma/error.hpp"
 #include "conforma/geometry.hpp"

@@ -2,6 +2,7 @@
 #include "conforma/roller_rig.hpp"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "conforma/error.hpp"
