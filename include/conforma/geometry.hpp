@@ -111,6 +111,11 @@ struct GeometryOptions {
   double max_slope = 12.0;           // |dz/dy| beyond which profile parts are left out (85 deg), > 0
   double candidate_window_m = 2e-3;  // m, >= 0: local minima up to this much above the smallest gap are reported
   double contact_tolerance_m = 1e-6; // m, >= 0: minima within this of the smallest gap count as contact points
+  // An uninclined rail (TrackSetup::rail_inclination_rad 0) whose highest point is off z = 0 is mounted by refitting
+  // its translated samples (true, Profile::FromPoints) or by translating it exactly (false, no resampling). The refit
+  // changes the curvature of fine worn features (0.3 % for a 2 um bell 1 mm wide on the 1:5 roller's top); the real-time
+  // rig updates translate (roller_rig_sample.cpp), the rest keeps the refit so that existing results stay as they are.
+  bool refit_uninclined_rail = true;
 };
 
 // Ok: at least one rigid contact point (gap minimum) found; NoOverlap: the silhouette does not face the rail head.
@@ -193,9 +198,30 @@ struct EquilibriumResult {
 
 // Everything that depends only on the track set-up (mounted rails, uniform tables) is prepared once; the
 // pose evaluations are const and thread-safe.
+// Closed interval [lo_m, hi_m] of a profile's own lateral coordinate y; empty when lo_m > hi_m.
+struct LateralInterval {
+  double lo_m = 1.0, hi_m = -1.0;
+  bool empty() const { return lo_m > hi_m; }
+};
+
 class WheelsetTrackGeometry {
  public:
   explicit WheelsetTrackGeometry(TrackSetup setup, const GeometryOptions& options = {});
+  // The geometry of worn profiles from the geometry of the profiles they were worn from, for real-time updates
+  // (roller rig, docs/physics-reference.md §18.3): `worn` is previous.setup() with new profiles that coincide with
+  // the previous ones outside the lateral intervals changed_wheel[side] / changed_rail[side] (profile y; empty:
+  // unchanged profile; the interval must cover every spline segment whose values changed). The table nodes before
+  // an interval are taken from `previous`; from the interval on they are solved on the new profile as the full
+  // constructor does (Newton continued from node to node), up to the first node beyond it whose arc length comes out
+  // bit for bit as before, after which `previous`'s nodes are those the full constructor would solve. A side whose
+  // rail is refitted by its mounting (inclined, or GeometryOptions::refit_uninclined_rail with the top off z = 0
+  // before or after) or whose top moved (every node changes in rounding), whose interval reaches a table end or whose
+  // new nodes are no longer function-like is built as the full constructor does; so is everything when `worn`
+  // differs from previous.setup() in more than its profiles. The result is WheelsetTrackGeometry(worn,
+  // previous.options()) bit for bit (tests/test_geometry_worn_update.cpp).
+  WheelsetTrackGeometry(const WheelsetTrackGeometry& previous, TrackSetup worn,
+                        const std::array<LateralInterval, 2>& changed_wheel,
+                        const std::array<LateralInterval, 2>& changed_rail);
 
   const TrackSetup& setup() const { return setup_; }
   const GeometryOptions& options() const { return options_; }
@@ -277,6 +303,7 @@ class WheelsetTrackGeometry {
   struct GraphTable {
     double y0 = 0.0, h = 1e-4;
     std::vector<double> z, dz, kappa, s;  // value, slope, signed curvature (convex > 0), arc length
+    double s_first = 0.0, s_last = 0.0;   // arc-length range of the tabulated part of the profile (Newton's bounds)
     size_t size() const { return z.size(); }
     double y_end() const { return z.empty() ? y0 : y0 + h * static_cast<double>(z.size() - 1); }
     inline bool eval(double y, double* value, double* slope) const;  // (defined below: inlined in the hot loops)
@@ -288,12 +315,16 @@ class WheelsetTrackGeometry {
                       double max_contact_angle_rad) const;
   struct SideData {
     Profile mounted_rail;
+    Eigen::Vector2d mount_shift = Eigen::Vector2d::Zero();  // subtracted from the inclined rail's samples
     double rail_origin_eta = 0.0;
+    double rail_table_y0 = 0.0;  // the rail table's first node in the mounted profile's y (rail.y0 - rail_origin_eta)
     GraphTable rail;   // in side-frame eta
     GraphTable wheel;  // in wheel-profile y_w (z = radial height z_w)
     double nominal_radius = 0.46;
     double roller_radius = 0.0;  // R_r; 0: a rail
   };
+  void BuildSide(int k);  // sides_[k] from setup_ (the full constructor's work for one side)
+  void BuildRail(int k);  // its mounted rail, rail origin and rail table
   TrackSetup setup_;
   GeometryOptions options_;
   std::array<SideData, 2> sides_;

@@ -54,6 +54,22 @@ class Profile {
   static Profile FromArcLengthSamples(const std::vector<Eigen::Vector2d>& samples, ProfileKind kind,
                                       const std::string& source = "samples");
 
+  // The profile with the samples first, first + 1, ... replaced by `moved`, on the same arc-length grid (spacing and
+  // length kept): for samples moved by far less than the spacing, e.g. wear removed along the normal (paper 000 eqs.
+  // 19-21) in real time, where FromArcLengthSamples would re-solve the whole profile. The splines' second derivatives
+  // are re-solved over the moved samples and kMovedSplineMargin samples on either side with the ones beyond kept
+  // (a natural cubic spline's response to a local change decays by 2 - sqrt(3) = 0.268 per sample: 40 samples bring
+  // it below 1e-22 of the change, under the rounding of the kept values). InputError for samples outside the profile
+  // or not finite.
+  Profile WithMovedSamples(size_t first, const std::vector<Eigen::Vector2d>& moved) const;
+  static constexpr int kMovedSplineMargin = 40;
+  size_t sample_count() const { return y_.size(); }
+  Eigen::Vector2d sample_at(size_t i) const { return {y_[i], z_[i]}; }  // stored sample i (i < sample_count())
+
+  // The same curve translated by (dy, dz): samples shifted, spline second derivatives, grid and parametrisation kept
+  // (exact: no refit).
+  Profile Translated(double dy, double dz, const std::string& source) const;
+
   ProfileKind kind() const { return kind_; }
   const std::string& source() const { return source_; }
   bool empty() const { return y_.empty(); }

@@ -58,8 +58,7 @@ Profile MakeRollerRigRollerProfile(const RollerRigSetup& setup);
 // The rig as a track set-up: gauge 1.435 m, gauge height 14 mm, flange-back distance 1.360 m and position -70 mm,
 // all times phi; nominal radii r_w; roller_radius_m = R_r both sides; rail inclination 0 (the roller profile is
 // already canted). wheel / roller: [left, right] profiles.
-TrackSetup MakeRollerRigTrack(const RollerRigSetup& setup, const std::array<Profile, 2>& wheel,
-                              const std::array<Profile, 2>& roller);
+TrackSetup MakeRollerRigTrack(const RollerRigSetup& setup, std::array<Profile, 2> wheel, std::array<Profile, 2> roller);
 
 // Geometry options at rig scale: table spacing 0.1 mm x phi, scan 0.5 mm x phi (GeometryOptions defaults x phi).
 GeometryOptions RollerRigGeometryOptions(const RollerRigSetup& setup);

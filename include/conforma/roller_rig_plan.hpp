@@ -10,7 +10,8 @@
 // steps of step_s (Table 5's km travelled are the reference roller's surface distance: 21.8 km in 37 min at
 // 500 rpm x 0.185 m, 10.2 km in 35 min at 250 rpm).
 //
-// Scenario file (YAML), every key optional except plan:
+// Scenario file (YAML), every key optional except plan; any other key is an InputError naming the file and the key
+// (yaml_keys.hpp):
 //   rig:     roller_radius_m, wheel_radius_m, wheelset_mass_kg, inertia_kg_m2 [Ix, Iy, Iz], length_factor,
 //            longitudinal_stiffness_N_per_m, spring_half_spacing_m, wheel_profile, wheel_conicity_rad,
 //            wheel_width_field_m, roller_profile   (RollerRigSetup; profile files relative to the scenario file)

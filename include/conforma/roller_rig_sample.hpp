@@ -48,8 +48,10 @@ struct RollerRigSampleOptions {
   // steps keep the filter period N dt near 0.2 s (RollerRigFilterSteps).
   int filter_every_steps = 10;
   // The profiles in contact (and the geometry built from them) take the raw wear every N steps, >= 1; 1 (default):
-  // every step, as paper 000 §3.5. A larger N (at most filter_every_steps) saves the geometry rebuild (~0.7 ms at
-  // 1:5) on the steps in between; the wear is still computed and accumulated every step.
+  // every step, as paper 000 §3.5. With N < filter_every_steps (real time) the geometry is not rebuilt but updated
+  // where the wear moved the profiles, bit for bit a rebuild (WheelsetTrackGeometry's update constructor; the rollers
+  // mounted by translation, GeometryOptions::refit_uninclined_rail false), also at the filters until a refit; N =
+  // filter_every_steps updates (and rebuilds) at the filters only, with the refitted mounting, as the test plan does.
   int profile_update_every_steps = 1;
   // At a filter step the smoothed depth is removed by moving the reference profile's samples along their normals
   // (no refit) while the depth so moved since the last refit stays below this fraction of the sample spacing; beyond

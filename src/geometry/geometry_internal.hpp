@@ -2,8 +2,24 @@
 // Small numerical helpers shared by the geometry sources (not part of the public API).
 #include <cmath>
 #include <utility>
+#include <vector>
+
+#include "conforma/geometry.hpp"
 
 namespace conforma::geometry_detail {
+
+// Profile tables and rail mounting (wheelset_track.cpp), shared with the worn-profile update (wheelset_track_worn.cpp).
+using GraphTable = WheelsetTrackGeometry::GraphTable;
+void tabulate_node(const Profile& p, GraphTable& t, int k, double y0_profile, double s_a, double s_b, double* s);
+bool function_like(const Profile& p, double s, double max_slope);
+GraphTable build_table(const Profile& p, double spacing, double max_slope, const char* what);
+Eigen::Vector2d highest_point(const std::vector<Eigen::Vector2d>& pts);
+int highest_sample(const Profile& p);  // index of the first highest stored sample
+Eigen::Vector2d uninclined_mount_shift(const Profile& rail, int top_sample);
+Profile mount_rail(const Profile& rail, double inclination, bool refit_uninclined, Eigen::Vector2d* shift);
+double gauge_point_y(const Profile& rail, double gauge_height, int top);
+double gauge_point_y(const Profile& rail, double gauge_height);
+void check_roller_radius(double roller_radius, const GraphTable& rail, int k, const Profile& profile);
 
 // Brent's minimisation (golden section with parabolic steps) of f on [a, b]; returns (x_min, f_min).
 template <class F>

@@ -6,6 +6,7 @@
 
 #include "conforma/error.hpp"
 #include "conforma/geometry.hpp"
+#include "geometry_internal.hpp"
 
 namespace conforma {
 
@@ -49,22 +50,37 @@ TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double 
   return t;
 }
 
-namespace {
+namespace geometry_detail {
 
-using GraphTable = WheelsetTrackGeometry::GraphTable;
+// Table node k (y = y0_profile + k h, profile coordinates) of p: Newton on y(s) from *s (the previous node's arc
+// length, or a nearby start), clamped to [s_a, s_b]; *s becomes the node's arc length.
+void tabulate_node(const Profile& p, GraphTable& t, int k, double y0_profile, double s_a, double s_b, double* s) {
+  const double y = y0_profile + k * t.h;
+  for (int it = 0; it < 30; ++it) {
+    const double dy = p.position(*s).x() - y;
+    if (std::abs(dy) < 1e-13) break;
+    *s = std::clamp(*s - dy / std::max(p.tangent(*s).x(), 1e-3), s_a, s_b);
+  }
+  const Eigen::Vector2d q = p.position(*s), tg = p.tangent(*s);
+  t.z[k] = q.y();
+  t.dz[k] = tg.y() / tg.x();
+  t.kappa[k] = p.curvature(*s);
+  t.s[k] = *s;
+}
 
-// Uniform table of the longest function-like part (tangent towards +y, |slope| <= max_slope) of a profile,
-// shifted by y_offset. Nodes are found by Newton on y(s) along the spline (profile.hpp).
-GraphTable build_table(const Profile& p, double y_offset, double spacing, double max_slope, const char* what) {
+bool function_like(const Profile& p, double s, double max_slope) {
+  const Eigen::Vector2d t = p.tangent(s);
+  return t.x() > 0 && std::abs(t.y()) <= max_slope * t.x();
+}
+
+// Uniform table of the longest function-like part (tangent towards +y, |slope| <= max_slope) of a profile, in the
+// profile's own y (the caller shifts y0). Nodes are found by Newton on y(s) along the spline (profile.hpp).
+GraphTable build_table(const Profile& p, double spacing, double max_slope, const char* what) {
   const double hs = p.spacing();
   const int n = static_cast<int>(std::round(p.length() / hs)) + 1;
-  auto ok = [&](double s) {
-    const Eigen::Vector2d t = p.tangent(s);
-    return t.x() > 0 && std::abs(t.y()) <= max_slope * t.x();
-  };
   int best_a = 0, best_b = -1, a = -1;
   for (int i = 0; i <= n; ++i) {
-    const bool good = i < n && ok(std::min(i * hs, p.length()));
+    const bool good = i < n && function_like(p, std::min(i * hs, p.length()), max_slope);
     if (good && a < 0) a = i;
     if (!good && a >= 0) {
       if (i - 1 - a > best_b - best_a) { best_a = a; best_b = i - 1; }
@@ -84,49 +100,75 @@ GraphTable build_table(const Profile& p, double y_offset, double spacing, double
   t.dz.resize(m);
   t.kappa.resize(m);
   t.s.resize(m);
+  t.s_first = s_a;
+  t.s_last = s_b;
   double s = s_a;
-  for (int k = 0; k < m; ++k) {
-    const double y = t.y0 + k * spacing;
-    for (int it = 0; it < 30; ++it) {
-      const double dy = p.position(s).x() - y;
-      if (std::abs(dy) < 1e-13) break;
-      s = std::clamp(s - dy / std::max(p.tangent(s).x(), 1e-3), s_a, s_b);
-    }
-    const Eigen::Vector2d q = p.position(s), tg = p.tangent(s);
-    t.z[k] = q.y();
-    t.dz[k] = tg.y() / tg.x();
-    t.kappa[k] = p.curvature(s);
-    t.s[k] = s;
-  }
-  t.y0 += y_offset;
+  for (int k = 0; k < m; ++k) tabulate_node(p, t, k, t.y0, s_a, s_b, &s);
   return t;
 }
+
+}  // namespace geometry_detail
+
+namespace geometry_detail {
+
+namespace {
+
+// Highest point of the parabola through the highest sample b and its neighbours a, c (b itself when not concave).
+Eigen::Vector2d refine_top(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const double d1 = (b.y() - a.y()) / (b.x() - a.x()), d2 = (c.y() - b.y()) / (c.x() - b.x());
+  const double curv = (d2 - d1) / (c.x() - a.x());
+  if (curv < 0 && std::isfinite(curv)) {
+    const double yv = 0.5 * (a.x() + b.x()) - d1 / (2 * curv);
+    return Eigen::Vector2d(yv, a.y() + d1 * (yv - a.x()) + curv * (yv - a.x()) * (yv - b.x()));
+  }
+  return b;
+}
+
+}  // namespace
 
 // Highest point of a rail curve (parabolic refinement on the samples).
 Eigen::Vector2d highest_point(const std::vector<Eigen::Vector2d>& pts) {
   size_t k = std::max_element(pts.begin(), pts.end(), [](const auto& a, const auto& b) { return a.y() < b.y(); }) - pts.begin();
-  Eigen::Vector2d top = pts[k];
-  if (k > 0 && k + 1 < pts.size()) {
-    const Eigen::Vector2d &a = pts[k - 1], &b = pts[k], &c = pts[k + 1];
-    const double d1 = (b.y() - a.y()) / (b.x() - a.x()), d2 = (c.y() - b.y()) / (c.x() - b.x());
-    const double curv = (d2 - d1) / (c.x() - a.x());
-    if (curv < 0 && std::isfinite(curv)) {
-      const double yv = 0.5 * (a.x() + b.x()) - d1 / (2 * curv);
-      top = Eigen::Vector2d(yv, a.y() + d1 * (yv - a.x()) + curv * (yv - a.x()) * (yv - b.x()));
-    }
-  }
+  if (k > 0 && k + 1 < pts.size()) return refine_top(pts[k - 1], pts[k], pts[k + 1]);
+  return pts[k];
+}
+
+int highest_sample(const Profile& p) {
+  int top = 0;
+  for (int i = 1; i < static_cast<int>(p.sample_count()); ++i)
+    if (p.sample_at(i).y() > p.sample_at(top).y()) top = i;
   return top;
+}
+
+// The point subtracted from an uninclined rail's samples to mount it: its highest point at y = 0; zero when that
+// point is within 1e-12 m of z = 0 (the rail is taken as it is). As mount_rail, on the stored samples.
+Eigen::Vector2d uninclined_mount_shift(const Profile& rail, int top_sample) {
+  const size_t k = static_cast<size_t>(top_sample);
+  Eigen::Vector2d top = k > 0 && k + 1 < rail.sample_count()
+                            ? refine_top(rail.sample_at(k - 1), rail.sample_at(k), rail.sample_at(k + 1))
+                            : rail.sample_at(k);
+  top.x() = 0.0;
+  return std::abs(top.y()) < 1e-12 ? Eigen::Vector2d::Zero() : top;
 }
 
 // Mounted rail: inclined by `inclination` (cant towards the track centre, -y) and re-referenced so that its
 // highest point is at z = 0 (and at y = 0 when an inclination is applied, as standard_profiles.hpp does).
-Profile mount_rail(const Profile& rail, double inclination) {
+// *shift: the point subtracted from the inclined samples (zero when the rail is returned as it is). The samples are
+// refitted (Profile::FromPoints), also when the rail is only translated (inclination 0) unless refit_uninclined is
+// false (GeometryOptions::refit_uninclined_rail): then it is translated exactly (Profile::Translated).
+Profile mount_rail(const Profile& rail, double inclination, bool refit_uninclined, Eigen::Vector2d* shift) {
+  if (inclination == 0.0 && !refit_uninclined) {
+    *shift = uninclined_mount_shift(rail, highest_sample(rail));
+    return shift->isZero() ? rail : rail.Translated(-shift->x(), -shift->y(), rail.source() + " (mounted)");
+  }
   std::vector<Eigen::Vector2d> pts = rail.samples();
   const double c = std::cos(inclination), s = std::sin(inclination);
   for (auto& p : pts) p = Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
   Eigen::Vector2d top = highest_point(pts);
   if (inclination == 0.0) top.x() = 0.0;
+  *shift = Eigen::Vector2d::Zero();
   if (inclination == 0.0 && std::abs(top.y()) < 1e-12) return rail;
+  *shift = top;
   for (auto& p : pts) p -= top;
   ProfileFitOptions fit;
   fit.function_of_y = false;
@@ -135,14 +177,10 @@ Profile mount_rail(const Profile& rail, double inclination) {
 }
 
 // Gauge-side point gauge_height below the top of the mounted rail: y of the first crossing of that level
-// walking from the highest point towards the gauge side (s decreasing).
-double gauge_point_y(const Profile& rail, double gauge_height) {
+// walking from the sample `top` (the highest) towards the gauge side (s decreasing).
+double gauge_point_y(const Profile& rail, double gauge_height, int top) {
   const double level = -gauge_height;
   const double hs = rail.spacing();
-  const int n = static_cast<int>(std::round(rail.length() / hs));
-  int top = 0;
-  for (int i = 0; i <= n; ++i)
-    if (rail.position(i * hs).y() > rail.position(top * hs).y()) top = i;
   for (int i = top; i > 0; --i) {
     if (rail.position((i - 1) * hs).y() <= level) {
       double lo = (i - 1) * hs, hi = i * hs;  // z(lo) <= level < z(hi)
@@ -159,6 +197,32 @@ double gauge_point_y(const Profile& rail, double gauge_height) {
   throw InputError(m.str());
 }
 
+double gauge_point_y(const Profile& rail, double gauge_height) {
+  const double hs = rail.spacing();
+  const int n = static_cast<int>(std::round(rail.length() / hs));
+  int top = 0;
+  for (int i = 0; i <= n; ++i)
+    if (rail.position(i * hs).y() > rail.position(top * hs).y()) top = i;
+  return gauge_point_y(rail, gauge_height, top);
+}
+
+// R_r > depth of the roller's profile below its top (every profile point above the roller axis).
+void check_roller_radius(double roller_radius, const GraphTable& rail, int k, const Profile& profile) {
+  if (!(roller_radius > 0.0)) return;
+  const double depth = -*std::min_element(rail.z.begin(), rail.z.end());
+  if (!(roller_radius > depth)) {
+    std::ostringstream m;
+    m << "TrackSetup.roller_radius_m[" << (k == 0 ? "left" : "right") << "] = " << roller_radius
+      << " m is not larger than the depth of the roller's profile (" << profile.source() << "), " << depth
+      << " m below its top";
+    throw InputError(m.str());
+  }
+}
+
+}  // namespace geometry_detail
+
+namespace {
+using namespace geometry_detail;
 }  // namespace
 
 WheelsetTrackGeometry::WheelsetTrackGeometry(TrackSetup setup, const GeometryOptions& options)
@@ -171,25 +235,26 @@ WheelsetTrackGeometry::WheelsetTrackGeometry(TrackSetup setup, const GeometryOpt
   require_non_negative(options_.contact_tolerance_m, "GeometryOptions.contact_tolerance_m");
   wheel_origin_eta_ = 0.5 * setup_.flange_back_distance_m - setup_.flange_back_position_m;
   mean_radius_ = 0.5 * (setup_.nominal_radius_m[0] + setup_.nominal_radius_m[1]);
-  for (int k = 0; k < 2; ++k) {
-    SideData& d = sides_[k];
-    d.nominal_radius = setup_.nominal_radius_m[k];
-    d.roller_radius = setup_.roller_radius_m[k];
-    d.mounted_rail = mount_rail(setup_.rail[k], setup_.rail_inclination_rad);
-    d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
-    d.rail = build_table(d.mounted_rail, d.rail_origin_eta, options_.table_spacing_m, options_.max_slope, "rail");
-    d.wheel = build_table(setup_.wheel[k], 0.0, options_.table_spacing_m, options_.max_slope, "wheel");
-    if (d.roller_radius > 0.0) {  // every profile point of a roller must lie above its axis: R_r(y) = R_r + z_r > 0
-      const double depth = -*std::min_element(d.rail.z.begin(), d.rail.z.end());
-      if (!(d.roller_radius > depth)) {
-        std::ostringstream m;
-        m << "TrackSetup.roller_radius_m[" << (k == 0 ? "left" : "right") << "] = " << d.roller_radius
-          << " m is not larger than the depth of the roller's profile (" << setup_.rail[k].source() << "), " << depth
-          << " m below its top";
-        throw InputError(m.str());
-      }
-    }
-  }
+  for (int k = 0; k < 2; ++k) BuildSide(k);
+}
+
+void WheelsetTrackGeometry::BuildSide(int k) {
+  SideData& d = sides_[k];
+  d.nominal_radius = setup_.nominal_radius_m[k];
+  d.roller_radius = setup_.roller_radius_m[k];
+  BuildRail(k);
+  d.wheel = build_table(setup_.wheel[k], options_.table_spacing_m, options_.max_slope, "wheel");
+  check_roller_radius(d.roller_radius, d.rail, k, setup_.rail[k]);
+}
+
+void WheelsetTrackGeometry::BuildRail(int k) {
+  SideData& d = sides_[k];
+  d.mounted_rail =
+      mount_rail(setup_.rail[k], setup_.rail_inclination_rad, options_.refit_uninclined_rail, &d.mount_shift);
+  d.rail_origin_eta = 0.5 * setup_.gauge_m - gauge_point_y(d.mounted_rail, setup_.gauge_height_m);
+  d.rail = build_table(d.mounted_rail, options_.table_spacing_m, options_.max_slope, "rail");
+  d.rail_table_y0 = d.rail.y0;
+  d.rail.y0 += d.rail_origin_eta;
 }
 
 WheelsetTrackGeometry::Frame WheelsetTrackGeometry::SideFrame(Side side, const WheelsetPose& pose) const {

@@ -37,12 +37,22 @@ std::vector<double> natural_spline_second_derivatives(const std::vector<double>&
   return m;
 }
 
+// std::upper_bound(t.begin(), t.end(), x) - t.begin() on a sorted t, walked from `hint` (the previous answer): the
+// same index at O(1) cost for increasing x.
+size_t upper_index(const std::vector<double>& t, double x, size_t hint) {
+  size_t i = std::min(hint, t.size());
+  while (i > 0 && t[i - 1] > x) --i;
+  while (i < t.size() && t[i] <= x) ++i;
+  return i;
+}
+
 struct Spline1 {
   const std::vector<double>& t;
   const std::vector<double>& v;
   std::vector<double> m;
-  double operator()(double x, double* deriv = nullptr) const {
-    size_t i = std::upper_bound(t.begin(), t.end(), x) - t.begin();
+  // *hint: the upper_index of the previous evaluation (updated), for x walking along t
+  double operator()(double x, double* deriv = nullptr, size_t* hint = nullptr) const {
+    size_t i = hint ? (*hint = upper_index(t, x, *hint)) : std::upper_bound(t.begin(), t.end(), x) - t.begin();
     i = std::clamp<size_t>(i, 1, t.size() - 1) - 1;
     const double h = t[i + 1] - t[i];
     const double a = (t[i + 1] - x) / h, b = (x - t[i]) / h;
@@ -131,11 +141,12 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
   const int fine = static_cast<int>(std::ceil(t.back() / (options.sample_spacing_m * 0.1))) + 1;
   std::vector<double> tf(fine + 1), sf(fine + 1, 0.0);
   double prev = 0.0;
+  size_t hint = 0;  // sy and sz share the parameter grid t
   for (int k = 0; k <= fine; ++k) {
     tf[k] = t.back() * k / fine;
     double dy, dz;
-    sy(tf[k], &dy);
-    sz(tf[k], &dz);
+    sy(tf[k], &dy, &hint);
+    sz(tf[k], &dz, &hint);
     const double speed = std::hypot(dy, dz);
     if (k) sf[k] = sf[k - 1] + 0.5 * (speed + prev) * (tf[k] - tf[k - 1]);
     prev = speed;
@@ -148,14 +159,16 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
   out.h_ = out.length_ / (n - 1);
   out.y_.resize(n);
   out.z_.resize(n);
+  size_t sf_hint = 0;
+  hint = 0;
   for (int i = 0; i < n; ++i) {
     const double s = std::min(i * out.h_, sf.back());
-    size_t k = std::upper_bound(sf.begin(), sf.end(), s) - sf.begin();
+    size_t k = sf_hint = upper_index(sf, s, sf_hint);
     k = std::clamp<size_t>(k, 1, sf.size() - 1) - 1;
     const double w = (sf[k + 1] > sf[k]) ? (s - sf[k]) / (sf[k + 1] - sf[k]) : 0.0;
     const double tt = tf[k] + w * (tf[k + 1] - tf[k]);
-    out.y_[i] = sy(tt);
-    out.z_[i] = sz(tt);
+    out.y_[i] = sy(tt, nullptr, &hint);
+    out.z_[i] = sz(tt, nullptr, &hint);
   }
   std::vector<double> sgrid(n);
   for (int i = 0; i < n; ++i) sgrid[i] = i * out.h_;
@@ -192,6 +205,68 @@ Profile Profile::FromArcLengthSamples(const std::vector<Eigen::Vector2d>& sample
   out.y2_ = natural_spline_second_derivatives(sgrid, out.y_);
   out.z2_ = natural_spline_second_derivatives(sgrid, out.z_);
   out.set_y_range();
+  return out;
+}
+
+namespace {
+
+// Second derivatives m_i, a < i < b, of the cubic spline through v on a uniform grid of spacing h, with m_a and m_b
+// given: m_{i-1} + 4 m_i + m_{i+1} = 6 (v_{i+1} - 2 v_i + v_{i-1}) / h^2 (Thomas algorithm).
+void resolve_second_derivatives(const std::vector<double>& v, std::vector<double>& m, size_t a, size_t b, double h) {
+  if (b < a + 2) return;
+  const size_t k = b - a - 1;  // unknowns a + 1 .. b - 1
+  std::vector<double> diag(k), rhs(k);
+  const double c = 6.0 / (h * h);
+  for (size_t j = 0; j < k; ++j) {
+    const size_t i = a + 1 + j;
+    rhs[j] = c * (v[i + 1] - 2.0 * v[i] + v[i - 1]);
+  }
+  rhs.front() -= m[a];
+  rhs.back() -= m[b];
+  diag[0] = 4.0;
+  for (size_t j = 1; j < k; ++j) {
+    const double w = 1.0 / diag[j - 1];
+    diag[j] = 4.0 - w;
+    rhs[j] -= w * rhs[j - 1];
+  }
+  m[b - 1] = rhs[k - 1] / diag[k - 1];
+  for (size_t j = k - 1; j-- > 0;) m[a + 1 + j] = (rhs[j] - m[a + 2 + j]) / diag[j];
+}
+
+}  // namespace
+
+Profile Profile::WithMovedSamples(size_t first, const std::vector<Eigen::Vector2d>& moved) const {
+  const size_t n = y_.size();
+  if (moved.empty()) return *this;
+  if (first + moved.size() > n) {
+    std::ostringstream m;
+    m << "moved samples " << first + 1 << " to " << first + moved.size() << " lie beyond the profile's " << n
+      << " samples";
+    throw InputError(source_, 0, m.str());
+  }
+  Profile out = *this;
+  for (size_t j = 0; j < moved.size(); ++j) {
+    if (!moved[j].allFinite()) throw InputError(source_, 0, "moved sample " + std::to_string(first + j + 1) + " is not finite");
+    out.y_[first + j] = moved[j].x();
+    out.z_[first + j] = moved[j].y();
+  }
+  const size_t margin = static_cast<size_t>(kMovedSplineMargin), last = first + moved.size() - 1;
+  const size_t a = first > margin ? first - margin : 0, b = std::min(n - 1, last + margin);
+  resolve_second_derivatives(out.y_, out.y2_, a, b, h_);
+  resolve_second_derivatives(out.z_, out.z2_, a, b, h_);
+  out.set_y_range();
+  return out;
+}
+
+Profile Profile::Translated(double dy, double dz, const std::string& source) const {
+  Profile out = *this;
+  out.source_ = source;
+  if (dz != 0.0)
+    for (double& z : out.z_) z += dz;
+  if (dy != 0.0) {
+    for (double& y : out.y_) y += dy;
+    out.set_y_range();
+  }
   return out;
 }
 

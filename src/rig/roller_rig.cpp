@@ -2,6 +2,7 @@
 #include "conforma/roller_rig.hpp"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "conforma/error.hpp"
@@ -90,8 +91,7 @@ Profile MakeRollerRigRollerProfile(const RollerRigSetup& s) {
   return LoadProfile(s.roller_profile, read);
 }
 
-TrackSetup MakeRollerRigTrack(const RollerRigSetup& s, const std::array<Profile, 2>& wheel,
-                              const std::array<Profile, 2>& roller) {
+TrackSetup MakeRollerRigTrack(const RollerRigSetup& s, std::array<Profile, 2> wheel, std::array<Profile, 2> roller) {
   s.validate();
   const SimilitudeOptions o = LengthScale(s);
   auto L = [&](double full) { return ScaleToModel(full, SimilitudeQuantity::Length, o); };
@@ -102,8 +102,8 @@ TrackSetup MakeRollerRigTrack(const RollerRigSetup& s, const std::array<Profile,
   t.flange_back_position_m = L(-0.070);
   t.nominal_radius_m = {s.wheel_radius_m, s.wheel_radius_m};
   t.rail_inclination_rad = 0.0;  // the roller profile is canted already
-  t.wheel = wheel;
-  t.rail = roller;
+  t.wheel = std::move(wheel);
+  t.rail = std::move(roller);
   t.roller_radius_m = {s.roller_radius_m, s.roller_radius_m};
   t.validate();
   return t;

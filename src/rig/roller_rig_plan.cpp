@@ -7,10 +7,15 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
+#include <set>
+#include <string>
+#include <utility>
 
 #include "conforma/contact_model.hpp"
 #include "conforma/error.hpp"
 #include "conforma/profile_update.hpp"
+#include "conforma/yaml_keys.hpp"
 
 namespace conforma {
 
@@ -83,6 +88,16 @@ RollerRigScenario LoadRollerRigScenario(const std::string& path) {
   }
   RollerRigScenario sc;
   sc.source = path;
+  // every key read below, and only those: a misspelt key is an error, not a silent default
+  CheckYamlKeys(root, path, "top level", {"rig", "contact", "wear", "wheelset_speed", "gravity_m_s2", "plan"});
+  for (const auto& [key, allowed] : std::initializer_list<std::pair<const char*, std::set<std::string>>>{
+           {"rig",
+            {"roller_radius_m", "wheel_radius_m", "wheelset_mass_kg", "inertia_kg_m2", "length_factor",
+             "longitudinal_stiffness_N_per_m", "spring_half_spacing_m", "wheel_profile", "wheel_conicity_rad",
+             "wheel_width_field_m", "roller_profile"}},
+           {"contact", {"model", "friction_coefficient", "fastsim_elements"}},
+           {"wear", {"law", "step_s", "filter_window_m", "filter_interval_s", "grid_spacing_m"}}})
+    if (root[key]) CheckYamlKeys(root[key], path, key, allowed);
   RollerRigSetup setup;
   const YAML::Node rig = root["rig"];
   const std::string wr = path + ": rig";
@@ -149,6 +164,8 @@ RollerRigScenario LoadRollerRigScenario(const std::string& path) {
   if (!plan || !plan.IsSequence() || plan.size() == 0) throw InputError(path + ": plan: a non-empty list of tests is required");
   for (size_t i = 0; i < plan.size(); ++i) {
     const std::string wp = path + ": plan[" + std::to_string(i) + "]";
+    CheckYamlKeys(plan[i], path, "plan[" + std::to_string(i) + "]",
+                  {"test", "creep", "reference_speed_rpm", "wheel_load_kg", "distance_km", "time_min"});
     RollerRigWearTestCase t;
     t.test = static_cast<int>(i + 1);
     Read(plan[i], "test", &t.test, wp);

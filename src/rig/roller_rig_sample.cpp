@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "conforma/error.hpp"
@@ -66,9 +67,18 @@ int RollerRigFilterSteps(double step_s) {
 
 namespace {
 
-std::shared_ptr<const WheelsetTrackGeometry> BuildGeometry(const RollerRigSetup& setup, const std::array<Profile, 2>& w,
-                                                           const std::array<Profile, 2>& r) {
-  return std::make_shared<const WheelsetTrackGeometry>(MakeRollerRigTrack(setup, w, r), RollerRigGeometryOptions(setup));
+// Real time (the profiles in contact take the raw wear between the filters, profile_update_every_steps <
+// filter_every_steps): the geometry is updated where the wear moved the profiles (WheelsetTrackGeometry's update
+// constructor), and the uninclined rollers are mounted by an exact translation (a refit would make every update a
+// full rebuild and change the curvature of the worn band by up to ~0.3 %). Otherwise (the test plan's 0.2 s steps,
+// updates at the filters only) every update rebuilds the geometry, refitting the mounted rollers, as before.
+bool RealTimeUpdates(const RollerRigSampleOptions& o) { return o.profile_update_every_steps < o.filter_every_steps; }
+
+std::shared_ptr<const WheelsetTrackGeometry> BuildGeometry(const RollerRigSampleOptions& o, std::array<Profile, 2> w,
+                                                           std::array<Profile, 2> r) {
+  GeometryOptions g = RollerRigGeometryOptions(o.setup);
+  g.refit_uninclined_rail = !RealTimeUpdates(o);
+  return std::make_shared<const WheelsetTrackGeometry>(MakeRollerRigTrack(o.setup, std::move(w), std::move(r)), g);
 }
 
 WearModel RigWearModel(const RollerRigSampleOptions& o) {
@@ -96,6 +106,43 @@ Profile RemoveRaw(const Profile& reference, const WearDistribution& depth) {
     pts[i] -= depth.at(si) * reference.normal(si);
   }
   return Profile::FromArcLengthSamples(pts, reference.kind(), reference.source());
+}
+
+// The same removal for the real-time steps between filters: only the samples where the depth is not zero move (the
+// others would move by 0), on the reference's arc-length grid with its splines re-solved around them
+// (Profile::WithMovedSamples), so that the geometry is updated only there. *changed: the lateral interval outside
+// which the result coincides with the reference bit for bit: the samples whose spline values were solved again (the
+// moved ones and Profile::kMovedSplineMargin either side), one more either side, and a spacing more.
+Profile RemoveRawLocal(const Profile& reference, const WearDistribution& depth, LateralInterval* changed) {
+  *changed = LateralInterval{};
+  const size_t nd = depth.size();
+  size_t first = nd, last = 0;
+  for (size_t i = 0; i < nd; ++i)
+    if (depth.depth_m[i] != 0.0) {
+      first = std::min(first, i);
+      last = i;
+    }
+  if (first == nd) return reference;
+  // depth.at(s) is zero outside (s_{first-1}, s_{last+1})
+  const double h = reference.spacing();
+  const long n = static_cast<long>(reference.sample_count());
+  const long j0 = std::max(0L, static_cast<long>(std::floor(depth.s(first > 0 ? first - 1 : 0) / h)));
+  const long j1 = std::min(n - 1, static_cast<long>(std::ceil(depth.s(std::min(last + 1, nd - 1)) / h)));
+  std::vector<Eigen::Vector2d> moved(static_cast<size_t>(j1 - j0 + 1));
+  for (long j = j0; j <= j1; ++j) {
+    const double sj = std::min(h * static_cast<double>(j), reference.length());
+    moved[j - j0] = reference.sample_at(j) - depth.at(sj) * reference.normal(sj);
+  }
+  Profile out = reference.WithMovedSamples(static_cast<size_t>(j0), moved);
+  const long margin = Profile::kMovedSplineMargin + 1;
+  for (long j = std::max(0L, j0 - margin); j <= std::min(n - 1, j1 + margin); ++j)
+    for (const double y : {reference.sample_at(j).x(), out.sample_at(j).x()}) {
+      changed->lo_m = changed->empty() ? y : std::min(changed->lo_m, y);
+      changed->hi_m = changed->empty() ? y : std::max(changed->hi_m, y);
+    }
+  changed->lo_m -= h;
+  changed->hi_m += h;
+  return out;
 }
 
 // Arc length on a profile of a lateral position; the cells of one strip share it, so answers are kept per value.
@@ -140,7 +187,7 @@ RollerRigState MakeRollerRigState(const RollerRigSampleOptions& options, const s
     s.wheel_pending[k] = WearDistribution::ForProfile(wheel[k], options.wear_grid_spacing_m);
     s.roller_pending[k] = WearDistribution::ForProfile(roller[k], options.wear_grid_spacing_m);
   }
-  s.geometry = BuildGeometry(options.setup, wheel, roller);
+  s.geometry = BuildGeometry(options, wheel, roller);
   return s;
 }
 
@@ -245,11 +292,17 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
   const long step = state->step + 1;
   std::array<double, 2> wheel_unrefit = state->wheel_unrefit_m, roller_unrefit = state->roller_unrefit_m;
   std::array<std::optional<Profile>, 2> wheel_reference, roller_reference, wheel_now, roller_now;
+  std::array<LateralInterval, 2> wheel_changed, roller_changed;  // where the raw removal changed the profiles
   std::shared_ptr<const WheelsetTrackGeometry> next_geometry = state->geometry;
   if (options.update_profiles) {
     try {
       const bool filter_now = step % options.filter_every_steps == 0;
       const bool raw_now = !filter_now && any_wear && step % options.profile_update_every_steps == 0;
+      // Real time (RealTimeUpdates): a filter without refit, too, moves only the worn samples on the reference's
+      // grid, and the geometry is solved again only where they moved; a refit changes a whole profile and rebuilds
+      // the geometry. Otherwise every filter rebuilds it.
+      const bool local_updates = RealTimeUpdates(options);
+      bool rebuild = !local_updates;
       for (int k = 0; k < 2; ++k) {
         if (filter_now) {
           // sliding mean of the wear since the last filter, removed from the reference profiles for good
@@ -257,18 +310,22 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
           const WearDistribution fr = SlidingMean(roller_pending[k], options.filter_window_m);
           // removal without refit while the depth moved since the last refit stays below refit_depth_fraction of
           // the sample spacing; then RemoveAlongNormal (refit, arc-length reparametrisation, validity checks)
-          auto remove = [&](const Profile& ref, const WearDistribution& d, double* unrefit, const char* what) {
+          auto remove = [&](const Profile& ref, const WearDistribution& d, double* unrefit, LateralInterval* changed,
+                            const char* what) {
             if (*unrefit + d.max_depth_m() < options.refit_depth_fraction * ref.spacing()) {
               *unrefit += d.max_depth_m();
-              return RemoveRaw(ref, d);
+              return local_updates ? RemoveRawLocal(ref, d, changed) : RemoveRaw(ref, d);
             }
             *unrefit = 0.0;
+            rebuild = true;
             return RemoveAlongNormal(ref, d, 0.0, what);
           };
           if (fw.max_depth_m() > 0.0)
-            wheel_reference[k] = remove(state->wheel_reference[k], fw, &wheel_unrefit[k], "rig wheel filter");
+            wheel_reference[k] =
+                remove(state->wheel_reference[k], fw, &wheel_unrefit[k], &wheel_changed[k], "rig wheel filter");
           if (fr.max_depth_m() > 0.0)
-            roller_reference[k] = remove(state->roller_reference[k], fr, &roller_unrefit[k], "rig roller filter");
+            roller_reference[k] =
+                remove(state->roller_reference[k], fr, &roller_unrefit[k], &roller_changed[k], "rig roller filter");
           const Profile& w = wheel_reference[k] ? *wheel_reference[k] : state->wheel_reference[k];
           const Profile& r = roller_reference[k] ? *roller_reference[k] : state->roller_reference[k];
           wheel_now[k] = w;
@@ -276,18 +333,26 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
           wheel_pending[k] = WearDistribution::ForProfile(w, options.wear_grid_spacing_m);
           roller_pending[k] = WearDistribution::ForProfile(r, options.wear_grid_spacing_m);
         } else if (raw_now) {
-          // eqs. 19-21: the raw depth since the last filter along the normal of the reference profile
-          if (wheel_pending[k].max_depth_m() > 0.0) wheel_now[k] = RemoveRaw(state->wheel_reference[k], wheel_pending[k]);
+          // eqs. 19-21: the raw depth since the last filter along the normal of the reference profile; only the
+          // samples under the worn band move, and only the geometry there is solved again (below)
+          if (wheel_pending[k].max_depth_m() > 0.0)
+            wheel_now[k] = RemoveRawLocal(state->wheel_reference[k], wheel_pending[k], &wheel_changed[k]);
           if (roller_pending[k].max_depth_m() > 0.0)
-            roller_now[k] = RemoveRaw(state->roller_reference[k], roller_pending[k]);
+            roller_now[k] = RemoveRawLocal(state->roller_reference[k], roller_pending[k], &roller_changed[k]);
         }
       }
       res.filtered = filter_now;
       res.profiles_updated = filter_now || raw_now;
       if (res.profiles_updated) {
         auto now = [](const std::optional<Profile>& p, const Profile& old) -> const Profile& { return p ? *p : old; };
-        next_geometry = BuildGeometry(options.setup, {now(wheel_now[0], state->wheel[0]), now(wheel_now[1], state->wheel[1])},
-                                 {now(roller_now[0], state->roller[0]), now(roller_now[1], state->roller[1])});
+        std::array<Profile, 2> w{now(wheel_now[0], state->wheel[0]), now(wheel_now[1], state->wheel[1])};
+        std::array<Profile, 2> r{now(roller_now[0], state->roller[0]), now(roller_now[1], state->roller[1])};
+        if (rebuild)
+          next_geometry = BuildGeometry(options, std::move(w), std::move(r));
+        else  // the profiles differ from the last geometry's within the changed intervals only
+          next_geometry = std::make_shared<const WheelsetTrackGeometry>(
+              *state->geometry, MakeRollerRigTrack(options.setup, std::move(w), std::move(r)), wheel_changed,
+              roller_changed);
       }
     } catch (const InputError& e) {
       res.status = RollerRigSampleStatus::ProfileUpdateFailed;

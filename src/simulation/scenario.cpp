@@ -16,6 +16,7 @@
 #include "conforma/profile_io.hpp"
 #include "conforma/standard_profiles.hpp"
 #include "conforma/wear_law.hpp"
+#include "conforma/yaml_keys.hpp"
 
 namespace conforma {
 
@@ -39,11 +40,7 @@ struct Reader {
     throw InputError(source + ": " + where + ": " + what);
   }
   void check_keys(const YAML::Node& map, const std::string& where, const std::set<std::string>& allowed) const {
-    if (!map.IsMap()) fail(where, "expected a map");
-    for (const auto& kv : map) {
-      const std::string key = kv.first.as<std::string>();
-      if (!allowed.count(key)) fail(where, "unknown key '" + key + "'");
-    }
+    CheckYamlKeys(map, source, where, allowed);
   }
   double number(const YAML::Node& n, const std::string& where) const {
     try {

@@ -1,0 +1,17 @@
+// Unknown YAML keys as input errors (yaml_keys.hpp).
+#include "conforma/yaml_keys.hpp"
+
+#include "conforma/error.hpp"
+
+namespace conforma {
+
+void CheckYamlKeys(const YAML::Node& map, const std::string& source, const std::string& where,
+                   const std::set<std::string>& allowed) {
+  if (!map.IsMap()) throw InputError(source + ": " + where + ": expected a map");
+  for (const auto& kv : map) {
+    const std::string key = kv.first.as<std::string>();
+    if (!allowed.count(key)) throw InputError(source + ": " + where + ": unknown key '" + key + "'");
+  }
+}
+
+}  // namespace conforma
