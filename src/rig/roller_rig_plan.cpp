@@ -96,7 +96,7 @@ RollerRigScenario LoadRollerRigScenario(const std::string& path) {
              "longitudinal_stiffness_N_per_m", "spring_half_spacing_m", "wheel_profile", "wheel_conicity_rad",
              "wheel_width_field_m", "roller_profile"}},
            {"contact", {"model", "friction_coefficient", "fastsim_elements"}},
-           {"wear", {"law", "step_s", "filter_window_m", "filter_interval_s", "grid_spacing_m"}}})
+           {"wear", {"law", "step_s", "filter_window_m", "strip_mean_elements", "filter_interval_s", "grid_spacing_m"}}})
     if (root[key]) CheckYamlKeys(root[key], path, key, allowed);
   RollerRigSetup setup;
   const YAML::Node rig = root["rig"];
