@@ -36,8 +36,14 @@ namespace conforma {
 //                    mu = mu(w) at the rigid slip velocity w = xi V (Polach 2005)          (mu_s, A, B)
 //   PolachExtended:  as PolachAnalytic with k_S / k_A fitted, (k_A + k_S)/2 = k             (mu_s, A, B, k_S/k_A)
 // V_ref = kRollerRigReferenceSpeed: mu_s of the speed-dependent variants is the static level at V_ref.
-enum class RollerRigLawVariant { SlipVelocity, CurtiusKniffler, SpeedPower, SpeedHyperbolic, PolachAnalytic,
-                                 PolachExtended };
+enum class RollerRigLawVariant {
+  SlipVelocity,     // FASTSIM with the slip-velocity law (above)
+  CurtiusKniffler,  // static level with the Curtius-Kniffler speed shape
+  SpeedPower,       // static level ~ V^(-n)
+  SpeedHyperbolic,  // static level ~ 1 / (V + V_0)
+  PolachAnalytic,   // Polach's analytic creep force, k_A = k_S
+  PolachExtended    // Polach's analytic creep force, k_S / k_A fitted
+};
 constexpr double kRollerRigReferenceSpeed = 10.0;  // m/s
 // "slip_velocity", "curtius_kniffler", "speed_power", "speed_hyperbolic", "polach_analytic", "polach_extended"
 const char* to_string(RollerRigLawVariant variant);
