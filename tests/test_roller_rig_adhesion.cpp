@@ -3,6 +3,7 @@
 // linear theory against FASTSIM's initial slope, and the friction-law fit (docs/physics-reference.md §7.5).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -77,6 +78,25 @@ TEST(RollerRigAdhesion, FastsimInitialSlopeIsKalkersLinearTheory) {
 namespace conforma {
 namespace {
 
+// Table 6's four speeds and loads (per condition) with the given measured slopes; max and steady adhesion generated
+// by the model from a known law.
+std::vector<RollerRigAdhesionTest> SyntheticTests(const RollerRigLaw& truth, const RollerRigAdhesionOptions& rig,
+                                                  const RollerRigFitOptions& fit, const char* condition = "wet",
+                                                  const std::array<double, 4>& slope = {8380, 7665, 12038, 17670}) {
+  const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
+  std::vector<RollerRigAdhesionTest> tests;
+  const double rpm[] = {1000, 700, 358, 358}, kg[] = {37, 37, 42, 47};
+  for (int i = 0; i < 4; ++i) {
+    RollerRigAdhesionTest t;
+    t.test = i + 1, t.reference_speed_rpm = rpm[i], t.wheel_load_kg = kg[i], t.initial_slope_N = slope[i];
+    t.condition = condition, t.max_adhesion = 1.0, t.steady_adhesion = 1.0;
+    const RollerRigTestModel m = EvaluateRollerRigTest(t, rig, c, truth, fit);
+    t.max_adhesion = m.model_max, t.steady_adhesion = m.model_steady;
+    tests.push_back(t);
+  }
+  return tests;
+}
+
 // The identification recovers a known law: model max and steady values generated from a law (with k from the
 // slopes) are fitted back by the shared-law fit (3 parameters from 4 tests x 2 numbers) to the law's parameters.
 TEST(RollerRigAdhesionFit, SharedLawFitRecoversAKnownLaw) {
@@ -84,21 +104,13 @@ TEST(RollerRigAdhesionFit, SharedLawFitRecoversAKnownLaw) {
   rig.fastsim_elements = 16;  // coarse mesh: the same model generates and fits the data
   RollerRigFitOptions fit;
   fit.peak_grid_points = 24;
-  const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
   RollerRigLaw truth;
   truth.mu_static = 0.55, truth.sliding_ratio = 0.65, truth.decay_s_per_m = 1.2;
-  std::vector<RollerRigAdhesionTest> tests;
-  const double rpm[] = {1000, 700, 358, 358}, kg[] = {37, 37, 42, 47}, slope[] = {8700, 7960, 12100, 18000};
-  for (int i = 0; i < 4; ++i) {
-    RollerRigAdhesionTest t;
-    t.test = i + 1, t.reference_speed_rpm = rpm[i], t.wheel_load_kg = kg[i], t.initial_slope_N = slope[i];
-    t.condition = "dry", t.max_adhesion = 1.0, t.steady_adhesion = 1.0;
-    const RollerRigTestModel m = EvaluateRollerRigTest(t, rig, c, truth, fit);
-    t.max_adhesion = m.model_max, t.steady_adhesion = m.model_steady;
-    EXPECT_GT(m.model_max, m.model_steady);               // a falling law: a peak above the steady value
-    EXPECT_LT(m.model_max, truth.mu_static);              // below the static coefficient
-    EXPECT_GT(m.model_steady, truth.mu_static * truth.sliding_ratio);  // above mu_inf at a finite slip
-    tests.push_back(t);
+  const std::vector<RollerRigAdhesionTest> tests = SyntheticTests(truth, rig, fit, "dry", {8700, 7960, 12100, 18000});
+  for (const RollerRigAdhesionTest& t : tests) {
+    EXPECT_GT(t.max_adhesion, t.steady_adhesion);               // a falling law: a peak above the steady value
+    EXPECT_LT(t.max_adhesion, truth.mu_static);                 // below the static coefficient
+    EXPECT_GT(t.steady_adhesion, truth.mu_static * truth.sliding_ratio);  // above mu_inf at a finite slip
   }
   // higher speed -> more slip velocity at the same creepage -> lower steady value (paper 000 §5.1, dry)
   EXPECT_LT(tests[0].steady_adhesion, tests[1].steady_adhesion);
@@ -176,22 +188,6 @@ TEST(RollerRigAdhesionFit, SpeedDependentStaticLevel) {
   EXPECT_EQ(ParseRollerRigLawVariant("speed_power"), RollerRigLawVariant::SpeedPower);
   EXPECT_THROW(ParseRollerRigLawVariant("speed"), InputError);
   for (RollerRigLawVariant v : AllRollerRigLawVariants()) EXPECT_EQ(ParseRollerRigLawVariant(to_string(v)), v);
-}
-
-std::vector<RollerRigAdhesionTest> SyntheticTests(const RollerRigLaw& truth, const RollerRigAdhesionOptions& rig,
-                                                  const RollerRigFitOptions& fit) {
-  const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
-  std::vector<RollerRigAdhesionTest> tests;
-  const double rpm[] = {1000, 700, 358, 358}, kg[] = {37, 37, 42, 47}, slope[] = {8380, 7665, 12038, 17670};
-  for (int i = 0; i < 4; ++i) {
-    RollerRigAdhesionTest t;
-    t.test = i + 1, t.reference_speed_rpm = rpm[i], t.wheel_load_kg = kg[i], t.initial_slope_N = slope[i];
-    t.condition = "wet", t.max_adhesion = 1.0, t.steady_adhesion = 1.0;
-    const RollerRigTestModel m = EvaluateRollerRigTest(t, rig, c, truth, fit);
-    t.max_adhesion = m.model_max, t.steady_adhesion = m.model_steady;
-    tests.push_back(t);
-  }
-  return tests;
 }
 
 // The rolling-speed-dependent law (4 parameters from 4 tests x 2 numbers, FASTSIM) is recovered from data it
