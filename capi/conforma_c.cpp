@@ -2,6 +2,7 @@
 // catches every exception; the handle is immutable after creation except for its mutex-guarded last-error text.
 #include "conforma_c.h"
 #include "c_patch_fields.hpp"
+#include "c_status.hpp"
 
 #include <cstring>
 #include <exception>
@@ -184,15 +185,11 @@ conforma_status conforma_model_create(const conforma_track_params* track, const 
     m->geometry = conforma::interop::MakeTrackGeometry(spec);
     *model = m.release();
     return CONFORMA_OK;
-  } catch (const conforma::InputError& e) {
-    CopyText(e.what(), error_text, error_text_size);
-    return CONFORMA_ERROR_INPUT;
-  } catch (const std::exception& e) {
-    CopyText(std::string("internal error: ") + e.what(), error_text, error_text_size);
-    return CONFORMA_ERROR_INTERNAL;
   } catch (...) {
-    CopyText("internal error", error_text, error_text_size);
-    return CONFORMA_ERROR_INTERNAL;
+    std::string message;
+    const conforma_status status = conforma::capi::CurrentExceptionStatus(&message);
+    CopyText(message, error_text, error_text_size);
+    return status;
   }
 }
 
@@ -217,12 +214,13 @@ conforma_status conforma_model_create_with_lut(const conforma_track_params* trac
                                  conforma::WheelsetVelocity{1.0, 0.0, 0.0, 0.0}, probe);
     (*model)->lut = std::move(lut);
     return CONFORMA_OK;
-  } catch (const std::exception& e) {
-    const bool input = dynamic_cast<const conforma::InputError*>(&e) != nullptr;
-    CopyText(input ? std::string(e.what()) : std::string("internal error: ") + e.what(), error_text, error_text_size);
+  } catch (...) {
+    std::string message;
+    const conforma_status failed = conforma::capi::CurrentExceptionStatus(&message);
+    CopyText(message, error_text, error_text_size);
     conforma_model_destroy(*model);
     *model = nullptr;
-    return input ? CONFORMA_ERROR_INPUT : CONFORMA_ERROR_INTERNAL;
+    return failed;
   }
 }
 
@@ -242,12 +240,8 @@ conforma_status conforma_evaluate(const conforma_model* model, const conforma_wh
   std::string message;
   try {
     Evaluate(*model, *state, options ? *options : defaults, result);
-  } catch (const conforma::InputError& e) {
-    status = CONFORMA_ERROR_INPUT, message = e.what();
-  } catch (const std::exception& e) {
-    status = CONFORMA_ERROR_INTERNAL, message = std::string("internal error: ") + e.what();
   } catch (...) {
-    status = CONFORMA_ERROR_INTERNAL, message = "internal error";
+    status = conforma::capi::CurrentExceptionStatus(&message);
   }
   if (status != CONFORMA_OK) {
     std::memset(result, 0, sizeof *result);

@@ -11,6 +11,7 @@
 #include "conforma/contact_model.hpp"
 #include "conforma/error.hpp"
 #include "conforma/roller_rig_sample.hpp"
+#include "c_status.hpp"
 #include "conforma_c.h"
 #include "interop.hpp"
 
@@ -134,15 +135,11 @@ conforma_status conforma_rig_create(const conforma_rig_params* params, conforma_
     r->state = conforma::MakeRollerRigState(r->options);
     *rig = r.release();
     return CONFORMA_OK;
-  } catch (const conforma::InputError& e) {
-    CopyText(e.what(), error_text, error_text_size);
-    return CONFORMA_ERROR_INPUT;
-  } catch (const std::exception& e) {
-    CopyText(std::string("internal error: ") + e.what(), error_text, error_text_size);
-    return CONFORMA_ERROR_INTERNAL;
   } catch (...) {
-    CopyText("internal error", error_text, error_text_size);
-    return CONFORMA_ERROR_INTERNAL;
+    std::string message;
+    const conforma_status status = conforma::capi::CurrentExceptionStatus(&message);
+    CopyText(message, error_text, error_text_size);
+    return status;
   }
 }
 
@@ -168,18 +165,12 @@ conforma_status conforma_rig_process_sample(conforma_rig* rig, const conforma_ri
                                                                 : std::numeric_limits<double>::quiet_NaN();
     FillRigResult(conforma::ProcessRigSample(rig->options, &rig->state, s), result);
     return CONFORMA_OK;
-  } catch (const conforma::InputError& e) {
-    std::memset(result, 0, sizeof *result);
-    CopyText(e.what(), result->error_message, sizeof result->error_message);
-    return CONFORMA_ERROR_INPUT;
-  } catch (const std::exception& e) {
-    std::memset(result, 0, sizeof *result);
-    CopyText(std::string("internal error: ") + e.what(), result->error_message, sizeof result->error_message);
-    return CONFORMA_ERROR_INTERNAL;
   } catch (...) {
+    std::string message;
+    const conforma_status status = conforma::capi::CurrentExceptionStatus(&message);
     std::memset(result, 0, sizeof *result);
-    CopyText("internal error", result->error_message, sizeof result->error_message);
-    return CONFORMA_ERROR_INTERNAL;
+    CopyText(message, result->error_message, sizeof result->error_message);
+    return status;
   }
 }
 
