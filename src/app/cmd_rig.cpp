@@ -187,6 +187,15 @@ void RunReplay(const RigArgs& a) {
     throw IncompleteResult(ExitCode::PartialResult, std::to_string(failed) + " rig samples failed (see rig_replay.csv)");
 }
 
+// The scenario values that `rig run` and `rig replay` can override (applied by Scenario()).
+void AddScenarioOverrides(CLI::App* sub, RigArgs* a) {
+  sub->add_option("--wear-law", a->wear_law, "archard (paper 000 Table 3) or wear_index (USFD T-gamma)");
+  sub->add_option("--model", a->model, "contact model (default: the scenario's)");
+  sub->add_option("--strip-mean-elements", a->strip_mean_elements,
+                  "paper 000 eq. 16: depth per strip = integral / C (default: the scenario's wear.strip_mean_elements)")
+      ->check(CLI::PositiveNumber);
+}
+
 }  // namespace
 
 void RegisterRigCommand(CLI::App& app) {
@@ -200,11 +209,7 @@ void RegisterRigCommand(CLI::App& app) {
     sub->add_option("--step-s", a->step_s, "time step, s (default: the scenario's wear.step_s)");
     sub->add_option("--distance-fraction", a->distance_fraction, "run this fraction of each test's distance (0, 1]");
     sub->add_option("--max-tests", a->max_tests, "run only the first N tests");
-    sub->add_option("--wear-law", a->wear_law, "archard (paper 000 Table 3) or wear_index (USFD T-gamma)");
-    sub->add_option("--model", a->model, "contact model (default: the scenario's)");
-    sub->add_option("--strip-mean-elements", a->strip_mean_elements,
-                    "paper 000 eq. 16: depth per strip = integral / C (default: the scenario's wear.strip_mean_elements)")
-        ->check(CLI::PositiveNumber);
+    AddScenarioOverrides(sub, a.get());
     sub->add_option("--max-depth-per-approach", a->max_depth_per_approach,
                     "stability rule: depth per step / elastic approach (default: 0.1)");
     sub->add_flag("--adaptive-substeps", a->adaptive_substeps,
@@ -218,11 +223,7 @@ void RegisterRigCommand(CLI::App& app) {
     sub->add_option("--input", a->input, "CSV: t_s,y_m,yaw_rad,omega1_rad_s,omega2_rad_s,load_left_N,load_right_N"
                                          "[,omega3_rad_s][,dt_s]")->required();
     sub->add_option("--out", a->out, "output folder (rig_replay.csv, profiles/)")->required();
-    sub->add_option("--wear-law", a->wear_law, "archard (paper 000 Table 3) or wear_index (USFD T-gamma)");
-    sub->add_option("--model", a->model, "contact model (default: the scenario's)");
-    sub->add_option("--strip-mean-elements", a->strip_mean_elements,
-                    "paper 000 eq. 16: depth per strip = integral / C (default: the scenario's wear.strip_mean_elements)")
-        ->check(CLI::PositiveNumber);
+    AddScenarioOverrides(sub, a.get());
     sub->callback([a]() { RunReplay(*a); });
   }
 }
