@@ -6,6 +6,7 @@
 
 #include "conforma/error.hpp"
 #include "conforma_c.h"
+#include "interop.hpp"
 
 namespace conforma::capi {
 
@@ -23,6 +24,14 @@ inline conforma_status CurrentExceptionStatus(std::string* message) {
     *message = "internal error";
   }
   return CONFORMA_ERROR_INTERNAL;
+}
+
+// Call inside a catch block only: the status above, its text copied into the caller's buffer (interop::CopyText).
+inline conforma_status ReportCurrentException(char* buffer, size_t size) {
+  std::string message;
+  const conforma_status status = CurrentExceptionStatus(&message);
+  interop::CopyText(message, buffer, size);
+  return status;
 }
 
 }  // namespace conforma::capi

@@ -186,10 +186,7 @@ conforma_status conforma_model_create(const conforma_track_params* track, const 
     *model = m.release();
     return CONFORMA_OK;
   } catch (...) {
-    std::string message;
-    const conforma_status status = conforma::capi::CurrentExceptionStatus(&message);
-    CopyText(message, error_text, error_text_size);
-    return status;
+    return conforma::capi::ReportCurrentException(error_text, error_text_size);
   }
 }
 
@@ -215,12 +212,9 @@ conforma_status conforma_model_create_with_lut(const conforma_track_params* trac
     (*model)->lut = std::move(lut);
     return CONFORMA_OK;
   } catch (...) {
-    std::string message;
-    const conforma_status failed = conforma::capi::CurrentExceptionStatus(&message);
-    CopyText(message, error_text, error_text_size);
     conforma_model_destroy(*model);
     *model = nullptr;
-    return failed;
+    return conforma::capi::ReportCurrentException(error_text, error_text_size);
   }
 }
 

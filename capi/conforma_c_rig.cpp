@@ -136,10 +136,7 @@ conforma_status conforma_rig_create(const conforma_rig_params* params, conforma_
     *rig = r.release();
     return CONFORMA_OK;
   } catch (...) {
-    std::string message;
-    const conforma_status status = conforma::capi::CurrentExceptionStatus(&message);
-    CopyText(message, error_text, error_text_size);
-    return status;
+    return conforma::capi::ReportCurrentException(error_text, error_text_size);
   }
 }
 
@@ -166,11 +163,8 @@ conforma_status conforma_rig_process_sample(conforma_rig* rig, const conforma_ri
     FillRigResult(conforma::ProcessRigSample(rig->options, &rig->state, s), result);
     return CONFORMA_OK;
   } catch (...) {
-    std::string message;
-    const conforma_status status = conforma::capi::CurrentExceptionStatus(&message);
     std::memset(result, 0, sizeof *result);
-    CopyText(message, result->error_message, sizeof result->error_message);
-    return status;
+    return conforma::capi::ReportCurrentException(result->error_message, sizeof result->error_message);
   }
 }
 
