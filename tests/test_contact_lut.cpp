@@ -183,7 +183,7 @@ TEST(ContactLut, TwoPointContactKeepsTwoPatches) {
   const ContactLut& lut = HertzLut();
   const ContactLutGrid& g = lut.grid;
   const std::vector<LutNode>& nodes = lut.nodes[side_index(Side::Left)];
-  int two_patch_cells = 0, jump_cells = 0, tread_and_flange = 0;
+  int two_patch_cells = 0, jump_cells = 0, emerging_cells = 0, tread_and_flange = 0;
   for (size_t iy = 0; iy + 1 < g.lateral_m.size(); ++iy) {
     const size_t ip = 1, iq = 1;  // yaw 0 .. 2 mrad, load 50 .. 70 kN
     int two = 0;
@@ -213,6 +213,19 @@ TEST(ContactLut, TwoPointContactKeepsTwoPatches) {
           EXPECT_NEAR(l.patches[j].contact_angle_rad, d.patches[j].contact_angle_rad, 0.05);
           EXPECT_NEAR(l.patches[j].fn_N, d.patches[j].fn_N, 0.05 * Q);
         }
+      } else if (info.union_topology) {
+        ++emerging_cells;
+        EXPECT_FALSE(info.single_topology);
+        // an emerging patch: the corner with the most patches decides the topology, and the patch's normal force
+        // lies between zero and its largest corner value (it enters with zero force where a corner lacks it)
+        size_t most = 0;
+        for (int c = 0; c < 8; ++c)
+          most = std::max(most, nodes[g.index(iy + (c >> 2 & 1), ip + (c >> 1 & 1), iq + (c & 1))].patches.size());
+        ASSERT_EQ(l.patches.size(), most) << "y " << y;
+        for (const PatchReport& p : l.patches) {
+          EXPECT_GT(p.fn_N, 0.0);
+          EXPECT_LT(p.fn_N, 1.2 * Q);
+        }
       } else {
         ++jump_cells;
         EXPECT_FALSE(info.single_topology);
@@ -234,8 +247,41 @@ TEST(ContactLut, TwoPointContactKeepsTwoPatches) {
       }
     }
   }
+  std::printf("two-patch cells %d, emerging-patch cells %d, jump cells %d\n", two_patch_cells, emerging_cells, jump_cells);
   EXPECT_GE(tread_and_flange, 2);
-  EXPECT_GE(jump_cells, 4);
+  EXPECT_GE(jump_cells + emerging_cells, 4);
+}
+
+// Every cell of the table with a topology change: where a patch emerges (union topology) the wheel's normal force is
+// continuous across the cell (no step where the nearest corner changes: a total-force balance has a root); where it
+// does not (a contact jump), the nearest corner's topology is kept and the step is there.
+TEST(ContactLut, EmergingPatchIsContinuousAndAJumpKeepsTheNearestTopology) {
+  const ContactLut& lut = HertzLut();
+  const ContactLutGrid& g = lut.grid;
+  int emerging = 0, jumps = 0;
+  for (size_t iy = 0; iy + 1 < g.lateral_m.size(); ++iy)
+    for (size_t ip = 0; ip + 1 < g.yaw_rad.size(); ++ip) {
+      const double psi = 0.5 * (g.yaw_rad[ip] + g.yaw_rad[ip + 1]) + 1e-5, Q = 0.5 * (g.load_N[0] + g.load_N[1]) + 1e3;
+      const double ym = 0.5 * (g.lateral_m[iy] + g.lateral_m[iy + 1]), eps = 1e-9;
+      LutCellInfo a_info, b_info;
+      const WheelContactReport a = FromLut(lut, Side::Left, ym - eps, psi, Q, Options(ContactModel::Hertz), &a_info);
+      const WheelContactReport b = FromLut(lut, Side::Left, ym + eps, psi, Q, Options(ContactModel::Hertz), &b_info);
+      if (a_info.single_topology || a.status != WheelContactStatus::Ok || b.status != WheelContactStatus::Ok) continue;
+      double fa = 0.0, fb = 0.0;
+      for (const PatchReport& p : a.patches) fa += p.fn_N;
+      for (const PatchReport& p : b.patches) fb += p.fn_N;
+      if (a_info.union_topology) {
+        ++emerging;
+        EXPECT_TRUE(b_info.union_topology);
+        EXPECT_EQ(a.patches.size(), b.patches.size());
+        EXPECT_NEAR(fa, fb, 1e-6 * Q) << "y " << ym;  // continuous: the y step is 2e-9 m
+      } else {
+        ++jumps;
+        EXPECT_FALSE(b_info.union_topology);
+      }
+    }
+  std::printf("cells with a topology change at the y midpoint: %d emerging-patch, %d jump\n", emerging, jumps);
+  EXPECT_GE(emerging, 4);
 }
 
 // With the total-force balance the LUT's wheel carries the load (pressure and creep forces) like the direct solve.
@@ -366,4 +412,32 @@ TEST(ContactLut, ContactFunctionWrapsTheEvaluation) {
   const WheelContactReport b = EvaluateContactLut(*lut, Geometry(), Side::Right, eq.pose, Velocity(), o);
   ASSERT_EQ(a.patches.size(), b.patches.size());
   EXPECT_EQ(a.lateral_force_N, b.lateral_force_N);
+}
+
+// The tabulated rigid equilibrium: at a node the table's roll is the rigid solve's; between nodes within the
+// bilinear interpolation's error of it (roll varies smoothly on the tread: a few microradians over a 0.25 mm step).
+TEST(ContactLut, TabulatedRigidPoseMatchesTheRigidSolve) {
+  const ContactLut& lut = HertzLut();
+  const WheelsetTrackGeometry& g = Geometry();
+  const LutPoseFunction pose = MakeLutPoseFunction(std::make_shared<const ContactLut>(lut));
+  EquilibriumOptions eo;
+  eo.max_touching_contact_angle_rad = lut.header.max_touching_contact_angle_rad;
+  const double y_node = lut.grid.lateral_m[8], psi_node = lut.grid.yaw_rad[1];
+  const EquilibriumResult at_node = pose(g, y_node, psi_node, eo);
+  const EquilibriumResult direct_node = g.SolveRigidEquilibrium(y_node, psi_node, WheelsetPose{}, eo);
+  ASSERT_EQ(at_node.status, EquilibriumStatus::Converged);
+  EXPECT_NEAR(at_node.pose.roll_rad, direct_node.pose.roll_rad, 1e-12);
+  double worst = 0.0;
+  for (double y_mm : {-3.1, -0.6, 1.3, 2.9, 4.4}) {
+    const EquilibriumResult t = pose(g, y_mm * 1e-3, 0.7e-3, eo);
+    const EquilibriumResult d = g.SolveRigidEquilibrium(y_mm * 1e-3, 0.7e-3, WheelsetPose{}, eo);
+    ASSERT_EQ(t.status, EquilibriumStatus::Converged);
+    EXPECT_EQ(t.pose.lateral_m, y_mm * 1e-3);
+    worst = std::max(worst, std::fabs(t.pose.roll_rad - d.pose.roll_rad));
+  }
+  std::printf("tabulated roll against the rigid solve on the tread: worst %.3g urad\n", worst * 1e6);
+  EXPECT_LT(worst, 2e-5);
+  EXPECT_THROW(pose(g, 0.5, 0.0, eo), InputError);  // outside the table
+  eo.max_touching_contact_angle_rad = 1.0;          // not the table's touching rule
+  EXPECT_THROW(pose(g, 0.0, 0.0, eo), InputError);
 }

@@ -15,10 +15,14 @@
 // EVALUATION (EvaluateContactLut, MakeLutContactFunction): inside a grid cell whose eight corner nodes have one
 // patch topology (same status, patch count, model per patch, each patch within match_distance_m along the rail of
 // its partner) every patch field is interpolated tri-linearly, the load-dependent fields normalised by their
-// Hertzian power of Q (forces / Q; lengths and pressures / Q^(1/3); area, approach / Q^(2/3)). Where the topology
-// changes inside the cell, the topology of the nearest corner node is taken and only the corners with that topology
-// are interpolated (weights renormalised): a tread patch and a flange patch are never averaged and a contact jump
-// is placed within one grid step. Creep forces are solved at evaluation time for the actual velocity: hertz patches
+// Hertzian power of Q (forces / Q; lengths and pressures / Q^(1/3); area, approach / Q^(2/3)). Where a patch
+// EMERGES inside the cell (one corner's patches include every other corner's: a flange patch appearing with more
+// load or lateral shift), that corner's topology is taken and the patch enters with zero force (normal force,
+// pressures, area, semi-axes, strip lengths) at the corners that lack it, its geometry averaged over the corners
+// that have it: the forces stay continuous, as the elastic contact's are (a total-force balance then has a root).
+// Where the topology otherwise changes inside the cell (a contact jump, patches merging), the topology of the
+// nearest corner node is taken and only the corners with that topology are interpolated (weights renormalised): a
+// tread patch and a flange patch are never averaged and a contact jump is placed within one grid step. Creep forces are solved at evaluation time for the actual velocity: hertz patches
 // by FASTSIM on the stored ellipse with the interpolated creepages (the pipeline's hertz tangential solve); KP
 // patches (kp, kpec, conformal) by the curved-patch FASTSIM scheme on the interpolated stations with per-strip rigid
 // slip and the SDEC flexibilities (with given creepages or a slip-dependent friction law: FASTSIM on the SDEC
@@ -149,6 +153,9 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
 // The location of a query in the table (which cell, whether its corners share one topology).
 struct LutCellInfo {
   bool single_topology = false;  // the 8 corners all Ok with one topology
+  // the corners differ only by patches some of them lack (an emerging patch): interpolated with zero force where
+  // missing (header comment)
+  bool union_topology = false;
   size_t iy = 0, ipsi = 0, iq = 0;  // lower corner of the cell
 };
 
@@ -162,5 +169,19 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
 using LutContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
                                                             const WheelsetVelocity&, const WheelContactOptions&)>;
 LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut);
+
+// The rigid two-rail equilibrium at (y, psi) from the table (what EvaluateWheelsetContactForces needs before the
+// contact): the nodes' roll interpolated bilinearly in (y, psi) (the rigid equilibrium does not depend on the load);
+// vertical_m is the nodes' pose at the table's lowest load (pushed down by that load, not the rigid one: the
+// table's contact does not use it). As the contact's interpolation, the nearest corner decides: NotConverged when
+// the nearest corner node has no equilibrium (kLutNoEquilibrium), else Converged over the corners with one.
+// InputError outside the table. Cost: a few nanoseconds, against tens of microseconds for the rigid solve.
+EquilibriumResult EvaluateLutRigidPose(const ContactLut& lut, double y_m, double psi_rad);
+
+// The same signature as RigidPoseFunction (wheelset_forces.hpp); InputError when the equilibrium options' elastic
+// flange angle is not the table's.
+using LutPoseFunction =
+    std::function<EquilibriumResult(const WheelsetTrackGeometry&, double y_m, double psi_rad, const EquilibriumOptions&)>;
+LutPoseFunction MakeLutPoseFunction(std::shared_ptr<const ContactLut> lut);
 
 }  // namespace conforma

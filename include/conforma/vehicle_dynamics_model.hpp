@@ -88,7 +88,8 @@ class VehicleDynamicsModel {
  public:
   // geometry and contact are needed (and kept by reference) for Nonlinear contact only; InputError for bad input.
   VehicleDynamicsModel(const VehicleParameters& vehicle, const WheelsetTrackGeometry* geometry, TrackInput track,
-                       const DynamicsModelOptions& options, WheelContactFunction contact = {});
+                       const DynamicsModelOptions& options, WheelContactFunction contact = {},
+                       RigidPoseFunction pose = {});
 
   int wheelset_count() const { return W_; }
   int bogie_count() const { return B_; }
@@ -128,6 +129,7 @@ class VehicleDynamicsModel {
   TrackInput track_;
   DynamicsModelOptions options_;
   WheelContactFunction contact_;
+  RigidPoseFunction pose_;  // the rigid equilibrium (empty: the geometry's solve)
   int W_ = 0, B_ = 0, C_ = 0, nq_ = 0;
   bool spin_ = false;
   std::vector<double> x_, mass_, inertia_;  // per body (wheelsets, bogies, carbodies)

@@ -25,6 +25,16 @@ namespace conforma {
 using WheelContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
                                                               const WheelsetVelocity&, const WheelContactOptions&)>;
 
+// The rigid two-rail equilibrium at (y, psi) with the options' touching rule: WheelsetTrackGeometry::
+// SolveRigidEquilibrium (empty function: that one), or a substitute with the same contract (a look-up table's
+// tabulated equilibrium, contact_lut.hpp MakeLutPoseFunction).
+using RigidPoseFunction =
+    std::function<EquilibriumResult(const WheelsetTrackGeometry&, double y_m, double psi_rad, const EquilibriumOptions&)>;
+
+// The rigid equilibrium by `pose` or, when empty, by the geometry's own solve.
+EquilibriumResult SolveRigidPose(const WheelsetTrackGeometry& geometry, const RigidPoseFunction& pose, double y_m,
+                                 double psi_rad, const EquilibriumOptions& options);
+
 struct WheelsetContactForces {
   bool ok = false;                           // equilibrium converged and both wheels' contact status Ok
   WheelsetPose pose;                         // of the rigid equilibrium (vertical, roll solved; y, psi as given)
@@ -40,10 +50,12 @@ struct WheelsetContactForces {
 // Contact forces at lateral shift y_m and yaw psi_rad (local track frame) moving with `velocity`; loads_N are the
 // wheels' vertical loads [Left, Right] (each replaces contact_options.vertical_load_N). Stops at the first wheel
 // whose contact fails (ok false); an equilibrium that does not converge gives ok false with no contact call.
+// `pose`: the rigid equilibrium (empty: WheelsetTrackGeometry::SolveRigidEquilibrium).
 WheelsetContactForces EvaluateWheelsetContactForces(const WheelsetTrackGeometry& geometry,
                                                     const WheelContactFunction& contact,
                                                     const WheelContactOptions& contact_options,
                                                     const std::array<double, 2>& loads_N, double y_m, double psi_rad,
-                                                    const WheelsetVelocity& velocity);
+                                                    const WheelsetVelocity& velocity,
+                                                    const RigidPoseFunction& pose = {});
 
 }  // namespace conforma

@@ -161,10 +161,13 @@ void RegisterDynamicsCommand(CLI::App& app) {
       SetTrackIrregularity(track, irr, o.model.cant_base_m);
     }
     WheelContactFunction contact = &SolveWheelContact;
+    RigidPoseFunction pose;  // empty: the geometry's rigid solve
     if (!a->lut.empty()) {  // the table checks profiles, model and material against the query at each evaluation
-      contact = MakeLutContactFunction(std::make_shared<const ContactLut>(LoadContactLut(a->lut)));
+      const auto table = std::make_shared<const ContactLut>(LoadContactLut(a->lut));
+      contact = MakeLutContactFunction(table);
+      pose = MakeLutPoseFunction(table);  // the rigid equilibrium from the table too
     }
-    const VehicleDynamicsModel m(vehicle, &g, track, o.model, contact);
+    const VehicleDynamicsModel m(vehicle, &g, track, o.model, contact, pose);
     o.duration_s = a->duration;
     o.output_interval_s = a->interval;
     o.absolute_tolerance = a->atol;

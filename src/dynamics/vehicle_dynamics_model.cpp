@@ -29,8 +29,9 @@ void DynamicsModelOptions::validate() const {
 
 VehicleDynamicsModel::VehicleDynamicsModel(const VehicleParameters& vehicle, const WheelsetTrackGeometry* geometry,
                                            TrackInput track, const DynamicsModelOptions& options,
-                                           WheelContactFunction contact)
-    : vehicle_(vehicle), geometry_(geometry), track_(std::move(track)), options_(options), contact_(std::move(contact)) {
+                                           WheelContactFunction contact, RigidPoseFunction pose)
+    : vehicle_(vehicle), geometry_(geometry), track_(std::move(track)), options_(options), contact_(std::move(contact)),
+      pose_(std::move(pose)) {
   vehicle_.validate();
   options_.validate();
   require_positive(vehicle_.bogie_frame_mass_kg, "vehicle bogie_frame_mass_kg (time-domain model)");
@@ -165,7 +166,7 @@ WheelsetDynamicsForces VehicleDynamicsModel::WheelsetForces(const Eigen::VectorX
   velocity.yaw_rate_rad_s = psid + V * c;
   velocity.axle_angular_velocity_rad_s = Omega;
   const WheelsetContactForces f =
-      EvaluateWheelsetContactForces(*geometry_, contact_, options_.contact, out.load_N, y_r, psi_r, velocity);
+      EvaluateWheelsetContactForces(*geometry_, contact_, options_.contact, out.load_N, y_r, psi_r, velocity, pose_);
   out.contact_evaluations = f.contact_evaluations;
   if (!f.ok) {
     out.failure = "wheelset " + std::to_string(j) + " at s = " + std::to_string(s) + " m, t = " + std::to_string(t) +
@@ -183,7 +184,8 @@ WheelsetDynamicsForces VehicleDynamicsModel::WheelsetForces(const Eigen::VectorX
     const double h = 1e-5;
     EquilibriumOptions eo;
     eo.max_touching_contact_angle_rad = options_.contact.max_touching_contact_angle_rad;
-    const EquilibriumResult eq = geometry_->SolveRigidEquilibrium(y_r + h, psi_r, f.pose, eo);
+    const EquilibriumResult eq = pose_ ? pose_(*geometry_, y_r + h, psi_r, eo)
+                                       : geometry_->SolveRigidEquilibrium(y_r + h, psi_r, f.pose, eo);
     if (eq.status == EquilibriumStatus::Converged)
       out.gyroscopic_moment_Nm = -vehicle_.wheelset_spin_inertia_kgm2 * Omega * (eq.pose.roll_rad - f.pose.roll_rad) / h * yd_r;
   }

@@ -1,6 +1,7 @@
 // Evaluation of a contact look-up table (contact_lut.hpp): topology-preserving interpolation of the normal
 // solution, creepages from the tabulated affine maps, FASTSIM on the tabulated patch (docs/physics-reference.md §17).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,26 +11,11 @@
 #include "conforma/error.hpp"
 #include "conforma/fastsim.hpp"
 #include "conforma/friction_law.hpp"
+#include "lut_locate.hpp"
 
 namespace conforma {
 
 namespace {
-
-// Cell of one axis: lower index and the fraction t in [0, 1]. InputError outside the axis (no extrapolation).
-void Locate(const std::vector<double>& axis, double v, const char* name, const char* unit, double unit_scale,
-            size_t* i, double* t) {
-  const double lo = axis.front(), hi = axis.back();
-  if (!std::isfinite(v) || v < lo || v > hi) {
-    char text[256];
-    std::snprintf(text, sizeof text, "contact LUT: %s = %.9g %s is outside the table [%.9g, %.9g] %s (not extrapolated)",
-                  name, v * unit_scale, unit, lo * unit_scale, hi * unit_scale, unit);
-    throw InputError(text);
-  }
-  size_t k = static_cast<size_t>(std::upper_bound(axis.begin(), axis.end(), v) - axis.begin());
-  k = std::min(std::max<size_t>(k, 1), axis.size() - 1) - 1;
-  *i = k;
-  *t = (v - axis[k]) / (axis[k + 1] - axis[k]);
-}
 
 bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
   if (a.status != b.status || a.patches.size() != b.patches.size()) return false;
@@ -87,6 +73,44 @@ void Unpack(const double* f, double Q, LutPatch* p) {
     for (int i = 0; i < 3; ++i) p->stations[k * kLutStationFields + i] *= q13;
 }
 
+// Fields that vanish with the patch (Pack's order): normal force, pressure resultants, p_max, area, approach, the
+// ellipse's semi-axes, and per station the half-length and the peak pressure. The others are its geometry and
+// kinematics (position, angle, radius, creepage and slip maps, centres, station extents).
+bool IsMagnitudeField(int k) {
+  if (k >= 7 && k <= 14) return true;
+  if (k < kScaled + 44) return false;
+  const int i = (k - kScaled - 44) % kLutStationFields;
+  return i == 0 || i == 2;
+}
+
+// The corner whose patches include every other corner's (all corners Ok, each patch matched in order along the rail
+// to one of its patches with the same model within the match distance): its index, and per corner the index of the
+// corner's patch matched to each of its patches (-1: missing there). -1 when no corner does, or when patches
+// merge or split (a corner with a patch the superset lacks).
+constexpr int kMaxUnionPatches = 8;
+int UnionOfCorners(const LutNode* const corner[8], double match_distance_m,
+                   std::array<std::array<int, kMaxUnionPatches>, 8>* map) {
+  const int ok = static_cast<int>(WheelContactStatus::Ok);
+  int best = 0;
+  for (int c = 0; c < 8; ++c) {
+    if (corner[c]->status != ok) return -1;
+    if (corner[c]->patches.size() > corner[best]->patches.size()) best = c;
+  }
+  const std::vector<LutPatch>& u = corner[best]->patches;
+  if (u.size() > static_cast<size_t>(kMaxUnionPatches)) return -1;
+  for (int c = 0; c < 8; ++c) {
+    const std::vector<LutPatch>& p = corner[c]->patches;
+    size_t i = 0;
+    for (size_t j = 0; j < u.size(); ++j) {
+      const bool match = i < p.size() && p[i].model == u[j].model &&
+                         std::fabs(p[i].rail_s_m - u[j].rail_s_m) < match_distance_m;
+      (*map)[c][j] = match ? static_cast<int>(i++) : -1;
+    }
+    if (i != p.size()) return -1;  // a patch of this corner has no partner: not an emerging patch
+  }
+  return best;
+}
+
 // The interpolated normal solution at (y, psi, Q).
 struct NormalAtPose {
   int status = 0;
@@ -101,9 +125,9 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   const ContactLutGrid& g = lut.grid;
   size_t iy, ip, iq;
   double ty, tp, tq;
-  Locate(g.lateral_m, y, "lateral shift y", "mm", 1e3, &iy, &ty);
-  Locate(g.yaw_rad, psi, "yaw psi", "mrad", 1e3, &ip, &tp);
-  Locate(g.load_N, Q, "wheel load Q", "kN", 1e-3, &iq, &tq);
+  LocateOnLutAxis(g.lateral_m, y, "lateral shift y", "mm", 1e3, &iy, &ty);
+  LocateOnLutAxis(g.yaw_rad, psi, "yaw psi", "mrad", 1e3, &ip, &tp);
+  LocateOnLutAxis(g.load_N, Q, "wheel load Q", "kN", 1e-3, &iq, &tq);
   const std::vector<LutNode>& nodes = lut.nodes[side_index(side)];
   const LutNode* corner[8];
   double w[8], Qc[8];
@@ -118,31 +142,49 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   bool single = true;
   for (int c = 1; c < 8; ++c) single = single && SameTopology(*corner[0], *corner[c], lut.header.match_distance_m);
   out.cell.single_topology = single && corner[0]->status == static_cast<int>(WheelContactStatus::Ok);
-  // the topology of the nearest corner (largest weight; the first on a tie) and the corners sharing it
+  // Emerging patches: when one corner's patches include every other corner's (all Ok; a flange patch that appears
+  // with more load or more lateral shift), that corner's topology is taken and a patch missing at a corner enters
+  // there with zero force (UnionOfCorners): the forces stay continuous across the cell. Otherwise the topology of
+  // the nearest corner (largest weight; the first on a tie) and the corners sharing it.
   int nearest = 0;
   for (int c = 1; c < 8; ++c)
     if (w[c] > w[nearest]) nearest = c;
-  const LutNode& ref = *corner[nearest];
+  std::array<std::array<int, kMaxUnionPatches>, 8> map{};
+  const int superset = out.cell.single_topology ? -1 : UnionOfCorners(corner, lut.header.match_distance_m, &map);
+  out.cell.union_topology = superset >= 0;
+  const LutNode& ref = *corner[superset >= 0 ? superset : nearest];
   double wsum = 0.0;
   for (int c = 0; c < 8; ++c) {
-    if (!SameTopology(ref, *corner[c], lut.header.match_distance_m)) w[c] = 0.0;
+    if (superset < 0 && !SameTopology(ref, *corner[c], lut.header.match_distance_m)) w[c] = 0.0;
     wsum += w[c];
   }
   out.status = ref.status;
   const size_t np = ref.patches.size();
-  std::vector<double> acc(np * kFields, 0.0), f(kFields);
+  std::vector<double> acc(np * kFields, 0.0), f(kFields), present(np, 0.0);
+  std::vector<char> missing(np, 0);
   for (int c = 0; c < 8; ++c) {
     if (w[c] == 0.0) continue;
     const double wc = w[c] / wsum;
     out.vertical_m += wc * corner[c]->vertical_m;
     out.roll_rad += wc * corner[c]->roll_rad;
     for (size_t j = 0; j < np; ++j) {
-      Pack(corner[c]->patches[j], Qc[c], f.data());
+      const int i = superset >= 0 ? map[c][j] : static_cast<int>(j);
+      if (i < 0) {
+        missing[j] = 1;
+        continue;
+      }
+      Pack(corner[c]->patches[i], Qc[c], f.data());
       for (int k = 0; k < kFields; ++k) acc[j * kFields + k] += wc * f[k];
+      present[j] += wc;
     }
   }
   out.patches.resize(np);
   for (size_t j = 0; j < np; ++j) {
+    // an emerging patch: its magnitudes averaged with zero where it is missing, its geometry over the corners that
+    // have it
+    if (missing[j])
+      for (int k = 0; k < kFields; ++k)
+        if (!IsMagnitudeField(k)) acc[j * kFields + k] /= present[j];
     out.patches[j] = ref.patches[j];  // the integer and non-interpolated fields (model, alpha_c, extents)
     Unpack(&acc[j * kFields], Q_scale, &out.patches[j]);
   }

@@ -5,15 +5,21 @@
 
 namespace conforma {
 
+EquilibriumResult SolveRigidPose(const WheelsetTrackGeometry& geometry, const RigidPoseFunction& pose, double y_m,
+                                 double psi_rad, const EquilibriumOptions& options) {
+  if (pose) return pose(geometry, y_m, psi_rad, options);
+  return geometry.SolveRigidEquilibrium(y_m, psi_rad, WheelsetPose{}, options);
+}
+
 WheelsetContactForces EvaluateWheelsetContactForces(const WheelsetTrackGeometry& geometry,
                                                     const WheelContactFunction& contact,
                                                     const WheelContactOptions& contact_options,
                                                     const std::array<double, 2>& loads_N, double y_m, double psi_rad,
-                                                    const WheelsetVelocity& velocity) {
+                                                    const WheelsetVelocity& velocity, const RigidPoseFunction& pose) {
   WheelsetContactForces f;
   EquilibriumOptions eo;  // the same touching rule as the contact's load control (elastic flange or not)
   eo.max_touching_contact_angle_rad = contact_options.max_touching_contact_angle_rad;
-  const EquilibriumResult eq = geometry.SolveRigidEquilibrium(y_m, psi_rad, WheelsetPose{}, eo);
+  const EquilibriumResult eq = SolveRigidPose(geometry, pose, y_m, psi_rad, eo);
   if (eq.status != EquilibriumStatus::Converged) return f;
   f.pose = eq.pose;
   f.velocity = velocity;
