@@ -30,7 +30,9 @@ bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
 // ~ Q^(1/3), area and approach ~ Q^(2/3)): nearly independent of Q, so the interpolation in Q is close to exact.
 constexpr int kScaled = 19, kStationValues = kLutStations * kLutStationFields;
 constexpr int kFields = kScaled + 12 + 32 + kStationValues;
-void Pack(const LutPatch& p, double Q, double* f) {
+// nf: the fields used (kHertzFields for a hertz patch, whose slip map and stations are unused and zero; else kFields)
+constexpr int kHertzFields = kScaled + 12;
+void Pack(const LutPatch& p, double Q, double* f, int nf) {
   const double q1 = 1.0 / Q, q13 = 1.0 / std::cbrt(Q), q23 = q13 * q13;
   const double v[kScaled] = {p.y_contact_rail_m, p.z_contact_rail_m, p.rail_s_m, p.y_contact_wheel_m, p.lead_m,
                                   p.contact_angle_rad, p.rolling_radius_m, p.fn_N * q1, p.pressure_vertical_N * q1,
@@ -39,13 +41,14 @@ void Pack(const LutPatch& p, double Q, double* f) {
                              p.station_s_min_m * q13, p.station_s_max_m * q13};
   std::copy(v, v + kScaled, f);
   std::copy(p.creepage_map.begin(), p.creepage_map.end(), f + kScaled);
+  if (nf == kHertzFields) return;
   std::copy(p.slip_map.begin(), p.slip_map.end(), f + kScaled + 12);
   double* st = f + kScaled + 44;
   std::copy(p.stations.begin(), p.stations.end(), st);
   for (int k = 0; k < kLutStations; ++k)  // half-length, centre x, peak pressure ~ Q^(1/3)
     for (int i = 0; i < 3; ++i) st[k * kLutStationFields + i] *= q13;
 }
-void Unpack(const double* f, double Q, LutPatch* p) {
+void Unpack(const double* f, double Q, LutPatch* p, int nf) {
   const double q13 = std::cbrt(Q), q23 = q13 * q13;
   p->y_contact_rail_m = f[0];
   p->z_contact_rail_m = f[1];
@@ -67,6 +70,7 @@ void Unpack(const double* f, double Q, LutPatch* p) {
   p->station_s_min_m = f[17] * q13;
   p->station_s_max_m = f[18] * q13;
   std::copy(f + kScaled, f + kScaled + 12, p->creepage_map.begin());
+  if (nf == kHertzFields) return;
   std::copy(f + kScaled + 12, f + kScaled + 44, p->slip_map.begin());
   std::copy(f + kScaled + 44, f + kFields, p->stations.begin());
   for (int k = 0; k < kLutStations; ++k)
@@ -109,6 +113,10 @@ int UnionOfCorners(const LutNode* const corner[8], double match_distance_m,
     if (i != p.size()) return -1;  // a patch of this corner has no partner: not an emerging patch
   }
   return best;
+}
+
+int NumberOfFields(const LutPatch& p) {
+  return p.model == static_cast<int>(ContactModel::Hertz) ? kHertzFields : kFields;
 }
 
 // The interpolated normal solution at (y, psi, Q).
@@ -173,8 +181,9 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
         missing[j] = 1;
         continue;
       }
-      Pack(corner[c]->patches[i], Qc[c], f.data());
-      for (int k = 0; k < kFields; ++k) acc[j * kFields + k] += wc * f[k];
+      const int nf = NumberOfFields(ref.patches[j]);
+      Pack(corner[c]->patches[i], Qc[c], f.data(), nf);
+      for (int k = 0; k < nf; ++k) acc[j * kFields + k] += wc * f[k];
       present[j] += wc;
     }
   }
@@ -182,11 +191,12 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   for (size_t j = 0; j < np; ++j) {
     // an emerging patch: its magnitudes averaged with zero where it is missing, its geometry over the corners that
     // have it
+    const int nf = NumberOfFields(ref.patches[j]);
     if (missing[j])
-      for (int k = 0; k < kFields; ++k)
+      for (int k = 0; k < nf; ++k)
         if (!IsMagnitudeField(k)) acc[j * kFields + k] /= present[j];
     out.patches[j] = ref.patches[j];  // the integer and non-interpolated fields (model, alpha_c, extents)
-    Unpack(&acc[j * kFields], Q_scale, &out.patches[j]);
+    Unpack(&acc[j * kFields], Q_scale, &out.patches[j], nf);
   }
   return out;
 }
