@@ -441,3 +441,56 @@ TEST(ContactLut, TabulatedRigidPoseMatchesTheRigidSolve) {
   eo.max_touching_contact_angle_rad = 1.0;          // not the table's touching rule
   EXPECT_THROW(pose(g, 0.0, 0.0, eo), InputError);
 }
+
+// Polach's closed form as the table's creep force (LutEvaluationOptions): the same normal solution; the creep forces
+// within Polach's documented distance from FASTSIM (docs/physics-reference.md §7.3: 0.15 mu N without spin, 0.25 mu N
+// up to a moderate normalised spin; a tread's spin is small); the total-force balance still carries the load; no
+// creepage gives no force; a slip-dependent friction law is refused.
+TEST(ContactLut, PolachCreepForceIsCloseToFastsimAndCarriesTheLoad) {
+  const ContactLut& lut = HertzLut();
+  LutEvaluationOptions polach;
+  polach.creep_force = LutCreepForce::Polach;
+  const WheelContactOptions o = Options(ContactModel::Hertz, LoadBalance::Total);
+  int compared = 0;
+  for (double y_mm : {-3.0, -1.0, 0.5, 2.0, 4.0}) {
+    for (Side side : {Side::Left, Side::Right}) {
+      const double Q = 55e3;
+      WheelContactOptions oq = o;
+      oq.vertical_load_N = Q;
+      const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(y_mm * 1e-3, 1e-3);
+      const WheelContactReport f = EvaluateContactLut(lut, Geometry(), side, eq.pose, Velocity(), oq);
+      const WheelContactReport p = EvaluateContactLut(lut, Geometry(), side, eq.pose, Velocity(), oq, nullptr, polach);
+      ASSERT_EQ(p.status, WheelContactStatus::Ok);
+      EXPECT_NEAR(p.vertical_force_N, Q, 1e-5 * Q);
+      ASSERT_EQ(p.patches.size(), f.patches.size());
+      for (size_t j = 0; j < p.patches.size(); ++j) {
+        const PatchReport &a = f.patches[j], &b = p.patches[j];
+        const double muN = o.friction_coefficient * b.fn_N;
+        EXPECT_NEAR(b.fx_N, a.fx_N, 0.25 * muN) << "y " << y_mm;
+        EXPECT_NEAR(b.fy_N, a.fy_N, 0.25 * muN) << "y " << y_mm;
+        EXPECT_LE(std::hypot(b.fx_N, b.fy_N), muN * (1.0 + 1e-9));
+        EXPECT_GE(b.frictional_power_W, 0.0);
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GE(compared, 10);
+  // rolling without creepage: no creep force
+  WheelContactOptions free = o;
+  free.vertical_load_N = 50e3;
+  free.creepages_given = true;
+  free.creepages = Creepages{0.0, 0.0, 0.0};
+  const EquilibriumResult eq = Geometry().SolveRigidEquilibrium(0.0, 0.0);
+  const WheelContactReport z = EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), free, nullptr, polach);
+  ASSERT_EQ(z.status, WheelContactStatus::Ok);
+  for (const PatchReport& p : z.patches) {
+    EXPECT_EQ(p.fx_N, 0.0);
+    EXPECT_EQ(p.fy_N, 0.0);
+  }
+  WheelContactOptions law = o;
+  law.vertical_load_N = 50e3;
+  law.friction_law = FrictionLaw::F1a(0.3, 0.4, 0.5);
+  EXPECT_THROW(EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), law, nullptr, polach), InputError);
+  EXPECT_EQ(ParseLutCreepForce("polach"), LutCreepForce::Polach);
+  EXPECT_THROW(ParseLutCreepForce("kalker"), InputError);
+}

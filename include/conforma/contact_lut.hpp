@@ -150,6 +150,23 @@ struct ContactLutBuildOptions {
 // count. InputError for bad options.
 ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactLutBuildOptions& options);
 
+// How the evaluation solves each patch's creep forces.
+enum class LutCreepForce {
+  Fastsim,  // FASTSIM on the stored ellipse (hertz) or on the tabulated stations (KP models), as described above
+  Polach,   // Polach's closed form on the stored (Hertz or SDEC) ellipse, polach_creep_force.hpp: for fast dynamics
+};
+const char* to_string(LutCreepForce law);  // "fastsim", "polach"
+LutCreepForce ParseLutCreepForce(const std::string& text);  // InputError naming the valid values
+
+// Evaluation switches (not part of the table).
+struct LutEvaluationOptions {
+  // Polach: every patch's creep forces from Polach's method on its ellipse, with the creepages moved to the
+  // ellipse's centre as FASTSIM's are (needs a constant friction coefficient: InputError otherwise); the spin
+  // moment is 0 and the adhesion / slip areas are not computed (0), frictional_power_W is V times Polach's creep
+  // power per speed. Tens of times cheaper than FASTSIM's 30 x 30 elements (docs/physics-reference.md §17.6).
+  LutCreepForce creep_force = LutCreepForce::Fastsim;
+};
+
 // The location of a query in the table (which cell, whether its corners share one topology).
 struct LutCellInfo {
   bool single_topology = false;  // the 8 corners all Ok with one topology
@@ -163,12 +180,13 @@ struct LutCellInfo {
 // table (axis and value named), options or geometry that do not match the table, non-positive load, bad velocity.
 WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrackGeometry& geometry, Side side,
                                       const WheelsetPose& pose, const WheelsetVelocity& velocity,
-                                      const WheelContactOptions& options, LutCellInfo* info = nullptr);
+                                      const WheelContactOptions& options, LutCellInfo* info = nullptr,
+                                      const LutEvaluationOptions& evaluation = {});
 
 // The same signature as WheelContactFunction (kinematics_quasistatic.hpp): usable by the curving and the dynamics.
 using LutContactFunction = std::function<WheelContactReport(const WheelsetTrackGeometry&, Side, const WheelsetPose&,
                                                             const WheelsetVelocity&, const WheelContactOptions&)>;
-LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut);
+LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut, LutEvaluationOptions evaluation = {});
 
 // The rigid two-rail equilibrium at (y, psi) from the table (what EvaluateWheelsetContactForces needs before the
 // contact): the nodes' roll interpolated bilinearly in (y, psi) (the rigid equilibrium does not depend on the load);

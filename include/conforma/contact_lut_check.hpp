@@ -23,6 +23,7 @@ struct ContactLutCheckOptions {
   // speed V / r0 (1 + u) with u in +-axle_creep
   double lateral_creep = 2e-3, curvature_per_m = 1.0 / 200.0, axle_creep = 2e-3;
   WheelContactOptions contact;  // the direct solve's options (the load is set per sample); must match the table
+  LutEvaluationOptions evaluation;  // the table's creep forces (fastsim: as the direct solve; polach: the closed form)
   int threads = 0;              // OpenMP threads, 0: the default
   ProgressFunction on_progress;  // progress (progress.hpp), one unit per sample ("sample <k>"); empty: none
   void validate() const;

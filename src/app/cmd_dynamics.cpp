@@ -60,7 +60,7 @@ LinearWheelsetContact ProfileLinearContact(const WheelsetTrackGeometry& g, const
 void RegisterDynamicsCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("dynamics", "time-domain lateral vehicle dynamics over a tangent or a curve");
   struct Args {
-    std::string scenario, model, out, stepper = "rosenbrock4", irregularity, lut;
+    std::string scenario, model, out, stepper = "rosenbrock4", irregularity, lut, lut_creep = "fastsim";
     int bogies = 0, jacobian_reuse = 1;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
            curve = 100.0, cant_mm = 0.0, start = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
@@ -86,6 +86,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
                   "cross_level_rad]; `conforma track irregularity` writes one); it must cover the run");
   sub->add_option("--lut", a->lut, "contact look-up table (HDF5, `conforma lut build` with the same profiles and model) "
                                    "instead of the direct contact solver");
+  sub->add_option("--lut-creep", a->lut_creep, "--lut: each patch's creep forces by fastsim (as the direct solver) or "
+                  "polach (closed form on the patch's ellipse, docs/physics-reference.md §17.6: for speed)")
+      ->check(CLI::IsMember({"fastsim", "polach"}));
   sub->add_option("--start-m", a->start, "station s of the leading bogie centre at t = 0, m (the curve begins at s = 0 "
                                          "with its tangent; an irregularity file must cover the whole vehicle)");
   sub->add_option("--offset-mm", a->offset_mm, "initial lateral offset of every wheelset, mm (the disturbance)");
@@ -164,7 +167,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
     RigidPoseFunction pose;  // empty: the geometry's rigid solve
     if (!a->lut.empty()) {  // the table checks profiles, model and material against the query at each evaluation
       const auto table = std::make_shared<const ContactLut>(LoadContactLut(a->lut));
-      contact = MakeLutContactFunction(table);
+      LutEvaluationOptions evaluation;
+      evaluation.creep_force = ParseLutCreepForce(a->lut_creep);
+      contact = MakeLutContactFunction(table, evaluation);
       pose = MakeLutPoseFunction(table);  // the rigid equilibrium from the table too
     }
     const VehicleDynamicsModel m(vehicle, &g, track, o.model, contact, pose);
@@ -192,8 +197,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
       if (!f) throw InputError("--out: cannot write '" + a->out + "'");
       WriteDynamicsHistoryCsv(f, m, r);
     }
+    const std::string source = a->lut.empty() ? ", direct" : ", look-up table, " + a->lut_creep + " creep forces";
     std::printf("dynamics: %s, %s contact (%s%s), stepper %s, V %.1f km/h, %d bogies\n", to_string(r.status),
-                to_string(o.model.contact_kind), to_string(model), a->lut.empty() ? ", direct" : ", look-up table",
+                to_string(o.model.contact_kind), to_string(model), source.c_str(),
                 to_string(o.stepper), a->speed_kmh, vehicle.bogie_count);
     std::printf("  simulated %.3f s (%.1f m) in %.2f s wall: %.3f simulated s per wall s\n", r.simulated_time_s,
                 r.simulated_time_s * o.model.speed_m_s, wall, r.simulated_time_s / wall);

@@ -253,6 +253,7 @@ void RegisterLutCommand(CLI::App& app) {
       LutArgs args;
       std::string file;
       ContactLutCheckOptions o;
+      std::string creep = "fastsim";
       bool json = false;
     };
     auto c = std::make_shared<Check>();
@@ -260,6 +261,8 @@ void RegisterLutCommand(CLI::App& app) {
     sub->add_option("file", c->file, "table file (.h5)")->required();
     c->args.add_to(sub);
     sub->add_option("--samples", c->o.samples, "random poses");
+    sub->add_option("--creep", c->creep, "the table's creep forces: fastsim (as the direct solve) or polach (closed form)")
+        ->check(CLI::IsMember({"fastsim", "polach"}));
     sub->add_option("--seed", c->o.seed, "random seed");
     sub->add_option("--threads", c->o.threads, "OpenMP threads (0: default)");
     sub->add_flag("--json", c->json, "machine-readable output");
@@ -268,6 +271,7 @@ void RegisterLutCommand(CLI::App& app) {
       const auto geometry = c->args.track.make_geometry();
       ContactLutCheckOptions o = c->o;
       o.contact = c->args.options();
+      o.evaluation.creep_force = ParseLutCreepForce(c->creep);
       o.speed_m_s = c->args.contact.speed_m_s;
       const auto t0 = std::chrono::steady_clock::now();
       ProgressReporter progress("lut check", 0.0, "", ProgressModeOf(sub), std::cerr);

@@ -118,7 +118,7 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
     LutCellInfo info;
     WheelContactReport l;
     try {  // e.g. the total balance's effective load leaving the table
-      l = EvaluateContactLut(lut, geometry, s.side, eq.pose, s.velocity, c, &info);
+      l = EvaluateContactLut(lut, geometry, s.side, eq.pose, s.velocity, c, &info, options.evaluation);
     } catch (const InputError&) {
       o.lut_error = true;
       l.status = WheelContactStatus::NotConverged;

@@ -11,6 +11,7 @@
 #include "conforma/error.hpp"
 #include "conforma/fastsim.hpp"
 #include "conforma/friction_law.hpp"
+#include "conforma/polach_creep_force.hpp"
 #include "lut_locate.hpp"
 
 namespace conforma {
@@ -270,11 +271,31 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
   t->status = t->adhesion_area_m2 > 0.0 ? FastsimStatus::Ok : FastsimStatus::FullSlip;
 }
 
+// Polach's creep forces (polach_creep_force.hpp) on the patch's ellipse with FASTSIM's input (creepages already moved
+// to the ellipse centre, in.creepages); the force acts at the ellipse centre: its moment about the reference point
+// as for FASTSIM's forces below.
+void SolvePolachOnEllipse(const LutPatch& q, const FastsimHertzInput& in, double V, PatchReport* p) {
+  PolachInput pi;
+  pi.a_m = in.a_m;
+  pi.b_m = in.b_m;
+  pi.normal_force_N = in.normal_force_N;
+  pi.friction_coefficient = in.friction_coefficient;
+  pi.creepages = in.creepages;
+  pi.material = in.material;
+  const PolachResult r = SolvePolachCreepForce(pi);
+  p->tangential_status = "ok";
+  p->fx_N = r.fx_N;
+  p->fy_N = r.fy_N;
+  p->mz_Nm = q.centre_x_m * r.fy_N - q.centre_s_m * r.fx_N;  // about the reference point (Polach: no spin moment)
+  p->adhesion_area_m2 = p->slip_area_m2 = 0.0;
+  p->frictional_power_W = std::max(0.0, r.frictional_power_per_speed_N) * V;
+}
+
 // Creep forces of one patch: FASTSIM on the stored ellipse, as the hertz model's tangential solve
 // (patch_model_hertz.cpp) does it.
 // u: (1, v_lat / V, yaw_rate / V, axle_rate / V) with the wheelset kinematics, nullptr with given creepages.
 void SolveCreep(const LutPatch& q, const Creepages& cr, const double* u, double V, const WheelContactOptions& options,
-                PatchReport* p) {
+                LutCreepForce law, PatchReport* p) {
   if (!options.solve_tangential || !(q.a_m > 0.0) || !(q.b_m > 0.0)) {
     p->tangential_status = "not_solved";
     return;
@@ -298,6 +319,10 @@ void SolveCreep(const LutPatch& q, const Creepages& cr, const double* u, double 
     const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
     in.creepages.xi -= cr.spin_per_m * q.centre_s_m * L.L1 / L.L3;
     in.creepages.eta += cr.spin_per_m * q.centre_x_m * L.L2 / L.L3;
+  }
+  if (law == LutCreepForce::Polach) {
+    SolvePolachOnEllipse(q, in, V, p);
+    return;
   }
   FastsimResult t;
   if (u != nullptr && q.model != static_cast<int>(ContactModel::Hertz) && options.friction_law.is_constant() &&
@@ -367,7 +392,8 @@ bool IsKpModel(ContactModel m) {
 // The report at the pressure-balanced load Q_eff read at Q_table (= Q_eff; what the direct solve gives with
 // LoadBalance::Pressure).
 WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose& pose, const WheelsetVelocity& velocity,
-                            const WheelContactOptions& options, double Q_table, double Q_eff, LutCellInfo* info) {
+                            const WheelContactOptions& options, double Q_table, double Q_eff, LutCellInfo* info,
+                            LutCreepForce law) {
   const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_table, Q_eff);
   if (info) *info = n.cell;
   WheelContactReport report;
@@ -424,7 +450,7 @@ WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose
     p.xi = cr.longitudinal;
     p.eta = cr.lateral;
     p.phi_per_m = cr.spin_per_m;
-    SolveCreep(q, cr, kinematics && V > 0.0 ? u : nullptr, V, options, &p);
+    SolveCreep(q, cr, kinematics && V > 0.0 ? u : nullptr, V, options, law, &p);
     p.vertical_force_N = q.pressure_vertical_N + p.fy_N * std::sin(q.contact_angle_rad);
     p.lateral_force_N = q.pressure_lateral_N + p.fy_N * std::cos(q.contact_angle_rad);
     report.vertical_force_N += p.vertical_force_N;
@@ -463,8 +489,13 @@ void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometr
 
 WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrackGeometry& geometry, Side side,
                                       const WheelsetPose& pose, const WheelsetVelocity& velocity,
-                                      const WheelContactOptions& options, LutCellInfo* info) {
+                                      const WheelContactOptions& options, LutCellInfo* info,
+                                      const LutEvaluationOptions& evaluation) {
   options.validate();
+  const LutCreepForce law = evaluation.creep_force;
+  if (law == LutCreepForce::Polach && !options.friction_law.is_constant())
+    throw InputError("contact LUT: the polach creep force needs a constant friction coefficient (friction law '" +
+                     std::string(to_string(options.friction_law.kind)) + "' given)");
   CheckCompatible(lut, geometry, options);
   if (options.vertical_load_N < 0.0)
     throw InputError("contact LUT: approach mode (vertical_load_N < 0) is not tabulated; give the wheel load");
@@ -477,7 +508,7 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
   }
   const double Q = options.vertical_load_N;
   const bool total = options.load_balance == LoadBalance::Total && options.solve_tangential;
-  WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, Q, info);
+  WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, Q, info, law);
   if (total && r.status == WheelContactStatus::Ok) {
     // Total-force balance: Q_eff + C(Q_eff) = Q, C = vertical creep forces (header comment); secant iteration
     // from the fixed-point step
@@ -497,7 +528,7 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
                         lut.grid.load_N.back() * 1e-3);
           throw InputError(text);
         }
-        r = ReportAt(lut, side, pose, velocity, options, x1, x1, info);
+        r = ReportAt(lut, side, pose, velocity, options, x1, x1, info, law);
         ++evaluations;
         if (r.status != WheelContactStatus::Ok) break;
         const double g1 = residual(r);
@@ -515,12 +546,26 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
   return r;
 }
 
-LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut) {
+LutContactFunction MakeLutContactFunction(std::shared_ptr<const ContactLut> lut, LutEvaluationOptions evaluation) {
   if (!lut) throw InputError("contact LUT: no table given");
-  return [lut](const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
-               const WheelsetVelocity& velocity, const WheelContactOptions& options) {
-    return EvaluateContactLut(*lut, geometry, side, pose, velocity, options);
+  return [lut, evaluation](const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                           const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+    return EvaluateContactLut(*lut, geometry, side, pose, velocity, options, nullptr, evaluation);
   };
+}
+
+const char* to_string(LutCreepForce law) {
+  switch (law) {
+    case LutCreepForce::Fastsim: return "fastsim";
+    case LutCreepForce::Polach: return "polach";
+  }
+  return "?";
+}
+
+LutCreepForce ParseLutCreepForce(const std::string& text) {
+  for (LutCreepForce l : {LutCreepForce::Fastsim, LutCreepForce::Polach})
+    if (text == to_string(l)) return l;
+  throw InputError("contact LUT: unknown creep force '" + text + "' (fastsim, polach)");
 }
 
 }  // namespace conforma
