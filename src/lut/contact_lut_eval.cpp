@@ -31,7 +31,7 @@ bool SameTopology(const LutNode& a, const LutNode& b, double match_distance_m) {
 // ~ Q^(1/3), area and approach ~ Q^(2/3)): nearly independent of Q, so the interpolation in Q is close to exact.
 constexpr int kScaled = 19, kStationValues = kLutStations * kLutStationFields;
 constexpr int kFields = kScaled + 12 + 32 + kStationValues;
-// nf: the fields used (kHertzFields for a hertz patch, whose slip map and stations are unused and zero; else kFields)
+// nf: the fields used (NumberOfFields: kHertzFields when the creep solve reads no slip map and no stations; else kFields)
 constexpr int kHertzFields = kScaled + 12;
 void Pack(const LutPatch& p, double Q, double* f, int nf) {
   const double q1 = 1.0 / Q, q13 = 1.0 / std::cbrt(Q), q23 = q13 * q13;
@@ -116,8 +116,10 @@ int UnionOfCorners(const LutNode* const corner[8], double match_distance_m,
   return best;
 }
 
-int NumberOfFields(const LutPatch& p) {
-  return p.model == static_cast<int>(ContactModel::Hertz) ? kHertzFields : kFields;
+// The fields a patch's creep solve reads: FASTSIM on a KP patch reads the slip map and the stations too; a hertz
+// patch, and Polach's ellipse on any patch, only the first kHertzFields.
+int NumberOfFields(const LutPatch& p, LutCreepForce law) {
+  return p.model == static_cast<int>(ContactModel::Hertz) || law == LutCreepForce::Polach ? kHertzFields : kFields;
 }
 
 // The interpolated normal solution at (y, psi, Q).
@@ -130,7 +132,8 @@ struct NormalAtPose {
 
 // Q: where the table is read; Q_scale: the load the normalised fields are scaled back to (the same; a Hertzian
 // rescaling of the patches of Q to the total balance's effective load was tried and was worse: see §17.4).
-NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q, double Q_scale) {
+NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, double psi, double Q, double Q_scale,
+                               LutCreepForce law) {
   const ContactLutGrid& g = lut.grid;
   size_t iy, ip, iq;
   double ty, tp, tq;
@@ -182,7 +185,7 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
         missing[j] = 1;
         continue;
       }
-      const int nf = NumberOfFields(ref.patches[j]);
+      const int nf = NumberOfFields(ref.patches[j], law);
       Pack(corner[c]->patches[i], Qc[c], f.data(), nf);
       for (int k = 0; k < nf; ++k) acc[j * kFields + k] += wc * f[k];
       present[j] += wc;
@@ -192,7 +195,7 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   for (size_t j = 0; j < np; ++j) {
     // an emerging patch: its magnitudes averaged with zero where it is missing, its geometry over the corners that
     // have it
-    const int nf = NumberOfFields(ref.patches[j]);
+    const int nf = NumberOfFields(ref.patches[j], law);
     if (missing[j])
       for (int k = 0; k < nf; ++k)
         if (!IsMagnitudeField(k)) acc[j * kFields + k] /= present[j];
@@ -394,7 +397,7 @@ bool IsKpModel(ContactModel m) {
 WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose& pose, const WheelsetVelocity& velocity,
                             const WheelContactOptions& options, double Q_table, double Q_eff, LutCellInfo* info,
                             LutCreepForce law) {
-  const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_table, Q_eff);
+  const NormalAtPose n = InterpolateNormal(lut, side, pose.lateral_m, pose.yaw_rad, Q_table, Q_eff, law);
   if (info) *info = n.cell;
   WheelContactReport report;
   report.side = side;
