@@ -163,7 +163,7 @@ struct LutEvaluationOptions {
   // Polach: every patch's creep forces from Polach's method on its ellipse, with the creepages moved to the
   // ellipse's centre as FASTSIM's are (needs a constant friction coefficient: InputError otherwise); the spin
   // moment is 0 and the adhesion / slip areas are not computed (0), frictional_power_W is V times Polach's creep
-  // power per speed. Tens of times cheaper than FASTSIM's 30 x 30 elements (docs/physics-reference.md §17.6).
+  // power per speed. Tens of times cheaper than FASTSIM's 30 x 30 elements (docs/physics-reference.md §17.3).
   LutCreepForce creep_force = LutCreepForce::Fastsim;
 };
 

@@ -87,7 +87,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--lut", a->lut, "contact look-up table (HDF5, `conforma lut build` with the same profiles and model) "
                                    "instead of the direct contact solver");
   sub->add_option("--lut-creep", a->lut_creep, "--lut: each patch's creep forces by fastsim (as the direct solver) or "
-                  "polach (closed form on the patch's ellipse, docs/physics-reference.md §17.6: for speed)")
+                  "polach (closed form on the patch's ellipse, docs/physics-reference.md §17.3: for speed)")
       ->check(CLI::IsMember({"fastsim", "polach"}));
   sub->add_option("--start-m", a->start, "station s of the leading bogie centre at t = 0, m (the curve begins at s = 0 "
                                          "with its tangent; an irregularity file must cover the whole vehicle)");
