@@ -231,7 +231,7 @@ py::dict ContactAtPose(const Track& track, const std::string& side, double later
 py::dict LutEvaluate(const ContactLut& lut, const Track& track, const std::string& side, double lateral_m,
                      double yaw_rad, double load_N, double speed_m_s, double lateral_velocity_m_s,
                      double yaw_rate_rad_s, std::optional<double> axle_angular_velocity_rad_s, double mu, int grid,
-                     const std::string& load_balance) {
+                     const std::string& load_balance, const std::string& creep_force) {
   Side s = Side::Left;
   if (side == "right") s = Side::Right;
   else if (side != "left") throw InputError("side must be 'left' or 'right', not '" + side + "'");
@@ -246,10 +246,13 @@ py::dict LutEvaluate(const ContactLut& lut, const Track& track, const std::strin
   const double r0 = track.geometry->setup().nominal_radius_m[0];
   const WheelsetVelocity v{speed_m_s, lateral_velocity_m_s, yaw_rate_rad_s,
                            axle_angular_velocity_rad_s.value_or(speed_m_s / r0)};
+  LutEvaluationOptions evaluation;
+  evaluation.creep_force = ParseLutCreepForce(creep_force);
   WheelContactReport r;
   {
     py::gil_scoped_release release;
-    r = EvaluateContactLut(lut, *track.geometry, s, WheelsetPose{lateral_m, 0.0, 0.0, yaw_rad}, v, o);
+    r = EvaluateContactLut(lut, *track.geometry, s, WheelsetPose{lateral_m, 0.0, 0.0, yaw_rad}, v, o, nullptr,
+                           evaluation);
   }
   return WheelDict(*track.geometry, r, false);
 }
@@ -445,10 +448,11 @@ pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear
       .def("evaluate", &LutEvaluate, py::arg("track"), py::arg("side"), py::arg("lateral_m"), py::arg("yaw_rad") = 0.0,
            py::arg("load_N") = 50e3, py::arg("speed_m_s") = 2.0, py::arg("lateral_velocity_m_s") = 0.0,
            py::arg("yaw_rate_rad_s") = 0.0, py::arg("axle_angular_velocity_rad_s") = py::none(), py::arg("mu") = 0.3,
-           py::arg("grid") = 30, py::arg("load_balance") = "total",
+           py::arg("grid") = 30, py::arg("load_balance") = "total", py::arg("creep_force") = "fastsim",
            "One wheel from the table at (lateral_m, yaw_rad) carrying load_N (vertical position and roll of the "
-           "rigid equilibrium, as the table); track must be the one the table was made for. Returns a wheel dict as "
-           "contact() (without fields); outside the table InputError naming the axis.");
+           "rigid equilibrium, as the table); track must be the one the table was made for. creep_force: 'fastsim' "
+           "(as the direct solver) or 'polach' (closed form on each patch's ellipse, for speed). Returns a wheel "
+           "dict as contact() (without fields); outside the table InputError naming the axis.");
   m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,
         py::arg("data_dir") = SharedDataDir(), py::arg("fastsim_elements") = 30,
         "Manchester benchmark A-2.2 (left wheel, 21 cases) against CONTACT's results: one dict per case with the "

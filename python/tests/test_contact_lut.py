@@ -33,6 +33,20 @@ def test_evaluation_matches_the_command_line(cli, table):
         assert a["fy_N"] == pytest.approx(b["fy_N"], rel=1e-9, abs=1e-9)
 
 
+def test_polach_creep_force_keeps_the_normal_solution_and_bounds_the_creep_force(table):
+    lut = conforma.ContactLut(table)
+    kw = dict(load_N=50e3, speed_m_s=10.0, lateral_velocity_m_s=0.02, load_balance="pressure")
+    f = lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, **kw)
+    p = lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, creep_force="polach", **kw)
+    assert len(p["patches"]) == len(f["patches"]) >= 1
+    for a, b in zip(f["patches"], p["patches"]):
+        assert b["fn_N"] == a["fn_N"]  # pressure balance: the creep law does not touch the normal solution
+        assert (b["fx_N"] ** 2 + b["fy_N"] ** 2) ** 0.5 <= 0.3 * b["fn_N"] * (1 + 1e-9)
+        assert b["fy_N"] == pytest.approx(a["fy_N"], abs=0.25 * 0.3 * a["fn_N"])  # physics-reference §7.3
+    with pytest.raises(conforma.InputError, match="creep force"):
+        lut.evaluate(conforma.Track(), "left", 0.7e-3, creep_force="kalker")
+
+
 def test_outside_the_table_is_an_input_error(table):
     lut = conforma.ContactLut(table)
     with pytest.raises(conforma.InputError, match="lateral shift y"):
