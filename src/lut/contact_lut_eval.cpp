@@ -514,12 +514,21 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
   WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, Q, info, law);
   if (total && r.status == WheelContactStatus::Ok) {
     // Total-force balance: Q_eff + C(Q_eff) = Q, C = vertical creep forces (header comment); secant iteration
-    // from the fixed-point step
+    // from the fixed-point step, kept inside the bracket of a sign change once there is one (false position when the
+    // secant leaves it); a bracket narrower than 1e-9 Q without a root is a jump of the forces in Q_eff (a
+    // topology change by the nearest-corner rule, §17.2): not converged, without spending the iteration budget
     auto residual = [&](const WheelContactReport& rep) { return rep.vertical_force_N - Q; };
     double x0 = Q, g0 = residual(r);
     int evaluations = 1;
     const double tolerance = options.load_tolerance * Q;
     if (std::fabs(g0) > tolerance) {
+      double lo = 0.0, g_lo = 0.0, hi = 0.0, g_hi = 0.0;  // bracket: g(lo) < 0 < g(hi)
+      bool has_lo = false, has_hi = false;
+      auto bracket = [&](double x, double g) {
+        if (g < 0.0) lo = x, g_lo = g, has_lo = true;
+        else hi = x, g_hi = g, has_hi = true;
+      };
+      bracket(x0, g0);
       double x1 = Q - g0;
       bool converged = false;
       for (; evaluations < 60; ) {
@@ -536,8 +545,14 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
         if (r.status != WheelContactStatus::Ok) break;
         const double g1 = residual(r);
         if (std::fabs(g1) <= tolerance) { converged = true; break; }
+        bracket(x1, g1);
         const double slope = (g1 - g0) / (x1 - x0);
-        const double x2 = slope > 0.0 && std::isfinite(slope) ? x1 - g1 / slope : x1 - g1;
+        double x2 = slope > 0.0 && std::isfinite(slope) ? x1 - g1 / slope : x1 - g1;
+        if (has_lo && has_hi) {
+          if (std::fabs(hi - lo) < 1e-9 * Q) break;  // a jump: no root
+          const double a = std::min(lo, hi), b = std::max(lo, hi);
+          if (!(x2 > a && x2 < b)) x2 = lo - g_lo * (hi - lo) / (g_hi - g_lo);  // false position
+        }
         x0 = x1, g0 = g1, x1 = x2;
         if (!(x1 > 0.0)) break;
       }
