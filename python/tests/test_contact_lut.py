@@ -42,7 +42,7 @@ def test_polach_creep_force_keeps_the_normal_solution_and_bounds_the_creep_force
     for a, b in zip(f["patches"], p["patches"]):
         assert b["fn_N"] == a["fn_N"]  # pressure balance: the creep law does not touch the normal solution
         assert (b["fx_N"] ** 2 + b["fy_N"] ** 2) ** 0.5 <= 0.3 * b["fn_N"] * (1 + 1e-9)
-        assert b["fy_N"] == pytest.approx(a["fy_N"], abs=0.25 * 0.3 * a["fn_N"])  # physics-reference §7.3
+        assert b["fy_N"] == pytest.approx(a["fy_N"], abs=0.25 * 0.3 * a["fn_N"])  # docs/physics-reference.md §7.3
     with pytest.raises(conforma.InputError, match="creep force"):
         lut.evaluate(conforma.Track(), "left", 0.7e-3, creep_force="kalker")
 
