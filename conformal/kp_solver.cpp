@@ -658,12 +658,12 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   };
   result.strips = strips_on(edges);
   double c_max = c_contact;
-  double influence_sum = 0.0;
+  std::vector<kp_detail::StripLoad> loads(n);
   for (int j = 0; j < n; ++j) {
     const KpStrip& strip = result.strips[j];
     const double low = edges[j].first, high = edges[j].second;
     c_max = std::max(c_max, strip.half_length_m);
-    kp_detail::StripLoad load;
+    kp_detail::StripLoad& load = loads[j];
     load.s_low = low;
     load.s_high = high;
     load.half_length = strip.half_length_m;
@@ -672,9 +672,14 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       load.alpha_low = patch.alpha(low) - alpha_contact;  // alpha = alpha_J - alpha_I (§4.1)
       load.alpha_high = patch.alpha(high) - alpha_contact;
     }
-    influence_sum +=
-        kp_detail::StripNormalDisplacementIntegral(load, s_contact, elastic.poisson_ratio, blanco, coupling_K);
   }
+  // every strip seen from the contact point in one batch (each integral bit-identical to
+  // StripNormalDisplacementIntegral strip by strip), summed in strip order
+  std::vector<double> integrals(n);
+  kp_detail::StripNormalDisplacementIntegrals(loads.data(), n, s_contact, elastic.poisson_ratio, blanco, coupling_K,
+                                              integrals.data());
+  double influence_sum = 0.0;
+  for (int j = 0; j < n; ++j) influence_sum += integrals[j];
   if (!(influence_sum > 0.0)) {
     result.status = KpStatus::InfluenceNotPositive;
     result.strips.clear();
