@@ -310,6 +310,16 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
   std::vector<double> integrals(n);
   loads.reserve(n);
   load_index.reserve(n);
+  // each strip's ends and normal angles there, the same for every observation point (row)
+  std::vector<double> s_low(n), s_high(n), alpha_low(n), alpha_high(n);
+  for (int j = 0; j < n; ++j) {
+    s_low[j] = strips[j].s_m - 0.5 * strips[j].ds_m;
+    s_high[j] = strips[j].s_m + 0.5 * strips[j].ds_m;
+    if (blanco) {
+      alpha_low[j] = patch.alpha(s_low[j]);
+      alpha_high[j] = patch.alpha(s_high[j]);
+    }
+  }
   for (int i = 0; i < n; ++i) {
     const KpStrip& obs = strips[i];
     required(i) = delta * std::cos(obs.alpha_rad) - patch.gap(obs.s_m);
@@ -322,13 +332,13 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
         continue;
       }
       StripLoad load;
-      load.s_low = load_strip.s_m - 0.5 * load_strip.ds_m;
-      load.s_high = load_strip.s_m + 0.5 * load_strip.ds_m;
+      load.s_low = s_low[j];
+      load.s_high = s_high[j];
       load.half_length = load_strip.half_length_m;
       load.centre_offset = load_strip.x_centre_m - obs.x_centre_m;
       if (blanco) {
-        load.alpha_low = patch.alpha(load.s_low) - obs.alpha_rad;
-        load.alpha_high = patch.alpha(load.s_high) - obs.alpha_rad;
+        load.alpha_low = alpha_low[j] - obs.alpha_rad;
+        load.alpha_high = alpha_high[j] - obs.alpha_rad;
       }
       loads.push_back(load);
       load_index.push_back(j);
