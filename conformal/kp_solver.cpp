@@ -209,6 +209,7 @@ std::vector<ContactRange> FindAllRanges(const PatchInterpolant& patch, const F& 
 std::vector<std::pair<double, double>> StripEdges(const std::vector<ContactRange>& lobes, double low, double high,
                                                   int per_lobe) {
   std::vector<std::pair<double, double>> edges;
+  edges.reserve(static_cast<size_t>(per_lobe) * std::max<size_t>(lobes.size(), 1));
   auto lay = [&](double from, double to) {
     const double ds = (to - from) / per_lobe;
     for (int j = 0; j < per_lobe; ++j) {
@@ -356,8 +357,10 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
   std::vector<char> active(n);
   for (int j = 0; j < n; ++j) active[j] = strips[j].half_length_m > 0.0 && required(j) > 0.0;
   peaks.assign(n, 0.0);
+  std::vector<int> index;
+  index.reserve(n);
   for (int pass = 0; pass < n; ++pass) {
-    std::vector<int> index;
+    index.clear();
     for (int j = 0; j < n; ++j)
       if (active[j]) index.push_back(j);
     const int q = static_cast<int>(index.size());
@@ -729,6 +732,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       out.lobes = on;
       out.first.assign(on.size(), -1);
       std::vector<std::pair<double, double>> edges_on;
+      edges_on.reserve(static_cast<size_t>(nodes) * on.size());
       // a lobe far narrower than the range (entering, or cut down to its last positive amplitude) carries no coarse
       // strips: they would be degenerate, and its strips take the ratio of the nearest lobe
       const double narrow = 1e-6 * (on.back().high - on.front().low);
@@ -842,6 +846,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       changed |= final_lobes[l].low != coarse_lobes[l].low || final_lobes[l].high != coarse_lobes[l].high;
     if (changed) {
       std::vector<std::pair<double, double>> final_edges;
+      final_edges.reserve(static_cast<size_t>(per_lobe) * final_lobes.size());
       for (const ContactRange& lobe : final_lobes)
         if (lobe.high > lobe.low)
           for (const auto& e : StripEdges({}, lobe.low, lobe.high, per_lobe)) final_edges.push_back(e);
