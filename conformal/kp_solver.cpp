@@ -209,6 +209,7 @@ std::vector<ContactRange> FindAllRanges(const PatchInterpolant& patch, const F& 
 std::vector<std::pair<double, double>> StripEdges(const std::vector<ContactRange>& lobes, double low, double high,
                                                   int per_lobe) {
   std::vector<std::pair<double, double>> edges;
+  edges.reserve(static_cast<size_t>(per_lobe) * std::max<size_t>(lobes.size(), 1));
   auto lay = [&](double from, double to) {
     const double ds = (to - from) / per_lobe;
     for (int j = 0; j < per_lobe; ++j) {
@@ -310,6 +311,16 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
   std::vector<double> integrals(n);
   loads.reserve(n);
   load_index.reserve(n);
+  // each strip's ends and normal angles there, the same for every observation point (row)
+  std::vector<double> s_low(n), s_high(n), alpha_low(n), alpha_high(n);
+  for (int j = 0; j < n; ++j) {
+    s_low[j] = strips[j].s_m - 0.5 * strips[j].ds_m;
+    s_high[j] = strips[j].s_m + 0.5 * strips[j].ds_m;
+    if (blanco) {
+      alpha_low[j] = patch.alpha(s_low[j]);
+      alpha_high[j] = patch.alpha(s_high[j]);
+    }
+  }
   for (int i = 0; i < n; ++i) {
     const KpStrip& obs = strips[i];
     required(i) = delta * std::cos(obs.alpha_rad) - patch.gap(obs.s_m);
@@ -322,13 +333,13 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
         continue;
       }
       StripLoad load;
-      load.s_low = load_strip.s_m - 0.5 * load_strip.ds_m;
-      load.s_high = load_strip.s_m + 0.5 * load_strip.ds_m;
+      load.s_low = s_low[j];
+      load.s_high = s_high[j];
       load.half_length = load_strip.half_length_m;
       load.centre_offset = load_strip.x_centre_m - obs.x_centre_m;
       if (blanco) {
-        load.alpha_low = patch.alpha(load.s_low) - obs.alpha_rad;
-        load.alpha_high = patch.alpha(load.s_high) - obs.alpha_rad;
+        load.alpha_low = alpha_low[j] - obs.alpha_rad;
+        load.alpha_high = alpha_high[j] - obs.alpha_rad;
       }
       loads.push_back(load);
       load_index.push_back(j);
@@ -346,8 +357,10 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
   std::vector<char> active(n);
   for (int j = 0; j < n; ++j) active[j] = strips[j].half_length_m > 0.0 && required(j) > 0.0;
   peaks.assign(n, 0.0);
+  std::vector<int> index;
+  index.reserve(n);
   for (int pass = 0; pass < n; ++pass) {
-    std::vector<int> index;
+    index.clear();
     for (int j = 0; j < n; ++j)
       if (active[j]) index.push_back(j);
     const int q = static_cast<int>(index.size());
@@ -658,12 +671,12 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
   };
   result.strips = strips_on(edges);
   double c_max = c_contact;
-  double influence_sum = 0.0;
+  std::vector<kp_detail::StripLoad> loads(n);
   for (int j = 0; j < n; ++j) {
     const KpStrip& strip = result.strips[j];
     const double low = edges[j].first, high = edges[j].second;
     c_max = std::max(c_max, strip.half_length_m);
-    kp_detail::StripLoad load;
+    kp_detail::StripLoad& load = loads[j];
     load.s_low = low;
     load.s_high = high;
     load.half_length = strip.half_length_m;
@@ -672,9 +685,14 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       load.alpha_low = patch.alpha(low) - alpha_contact;  // alpha = alpha_J - alpha_I (§4.1)
       load.alpha_high = patch.alpha(high) - alpha_contact;
     }
-    influence_sum +=
-        kp_detail::StripNormalDisplacementIntegral(load, s_contact, elastic.poisson_ratio, blanco, coupling_K);
   }
+  // every strip seen from the contact point in one batch (each integral bit-identical to
+  // StripNormalDisplacementIntegral strip by strip), summed in strip order
+  std::vector<double> integrals(n);
+  kp_detail::StripNormalDisplacementIntegrals(loads.data(), n, s_contact, elastic.poisson_ratio, blanco, coupling_K,
+                                              integrals.data());
+  double influence_sum = 0.0;
+  for (int j = 0; j < n; ++j) influence_sum += integrals[j];
   if (!(influence_sum > 0.0)) {
     result.status = KpStatus::InfluenceNotPositive;
     result.strips.clear();
@@ -714,6 +732,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       out.lobes = on;
       out.first.assign(on.size(), -1);
       std::vector<std::pair<double, double>> edges_on;
+      edges_on.reserve(static_cast<size_t>(nodes) * on.size());
       // a lobe far narrower than the range (entering, or cut down to its last positive amplitude) carries no coarse
       // strips: they would be degenerate, and its strips take the ratio of the nearest lobe
       const double narrow = 1e-6 * (on.back().high - on.front().low);
@@ -827,6 +846,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       changed |= final_lobes[l].low != coarse_lobes[l].low || final_lobes[l].high != coarse_lobes[l].high;
     if (changed) {
       std::vector<std::pair<double, double>> final_edges;
+      final_edges.reserve(static_cast<size_t>(per_lobe) * final_lobes.size());
       for (const ContactRange& lobe : final_lobes)
         if (lobe.high > lobe.low)
           for (const auto& e : StripEdges({}, lobe.low, lobe.high, per_lobe)) final_edges.push_back(e);

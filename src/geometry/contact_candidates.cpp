@@ -62,6 +62,9 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
   p.contact_angle_rad = c.reference.contact_angle_rad;
   double gap_min = std::numeric_limits<double>::infinity();
   y_w = y_w_seed;
+  for (std::vector<double>* v : {&p.s_m, &p.gap_m, &p.longitudinal_curvature_per_m, &p.wheel_radius_m, &p.alpha_rad,
+                                 &p.x_offset_m})
+    v->reserve(n);
   for (int j = 0; j < n; ++j) {
     const double s = s_start + (j + 0.5) * ds;
     const double eta = g.RailEtaAtArcLength(side, s);

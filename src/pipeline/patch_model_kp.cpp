@@ -68,7 +68,7 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
   in.strip_creepages = model == ContactModel::Conformal && !creepages.per_strip.empty()
                            ? creepages.per_strip
                            : std::vector<FastsimCreepages>{creepages.reference};
-  const CurvedFastsimResult t = SolveCurvedFastsim(normal.kp, in, co);
+  CurvedFastsimResult t = SolveCurvedFastsim(normal.kp, in, co);  // not const: its field is moved out below
   PatchTangentialSolution out;
   out.solved = true;
   out.status = to_string(t.status);
