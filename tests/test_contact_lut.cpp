@@ -494,3 +494,31 @@ TEST(ContactLut, PolachCreepForceIsCloseToFastsimAndCarriesTheLoad) {
   EXPECT_EQ(ParseLutCreepForce("polach"), LutCreepForce::Polach);
   EXPECT_THROW(ParseLutCreepForce("kalker"), InputError);
 }
+
+// A query on the face of an emerging-patch cell where only zero-weight corners have the patch (t = 0 exactly): the
+// patch is not there, and nothing is NaN (it was: its geometry averaged over a zero weight).
+TEST(ContactLut, EmergingPatchOnACellFaceIsAbsentNotNaN) {
+  const ContactLut& lut = HertzLut();
+  const ContactLutGrid& g = lut.grid;
+  const std::vector<LutNode>& nodes = lut.nodes[side_index(Side::Left)];
+  int checked = 0;
+  for (size_t iy = 0; iy + 1 < g.lateral_m.size(); ++iy)
+    for (size_t ip = 0; ip + 1 < g.yaw_rad.size(); ++ip) {
+      const size_t n0 = nodes[g.index(iy, ip, 0)].patches.size(), n1 = nodes[g.index(iy + 1, ip, 0)].patches.size();
+      if (n0 >= n1) continue;  // the patch emerges towards iy + 1: query exactly on the iy face
+      const double psi = g.yaw_rad[ip], Q = g.load_N[0];
+      LutCellInfo info;
+      const WheelContactReport r = FromLut(lut, Side::Left, g.lateral_m[iy], psi, Q,
+                                           Options(ContactModel::Hertz, LoadBalance::Pressure), &info);
+      if (r.status != WheelContactStatus::Ok) continue;
+      ++checked;
+      EXPECT_EQ(r.patches.size(), n0) << "y " << g.lateral_m[iy];
+      for (const PatchReport& p : r.patches) {
+        EXPECT_TRUE(std::isfinite(p.y_contact_rail_m) && std::isfinite(p.contact_angle_rad) && std::isfinite(p.fx_N) &&
+                    std::isfinite(p.fy_N));
+        EXPECT_GT(p.fn_N, 0.0);
+      }
+    }
+  std::printf("emerging-patch cells queried on their face: %d\n", checked);
+  EXPECT_GE(checked, 2);
+}

@@ -191,16 +191,17 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
       present[j] += wc;
     }
   }
-  out.patches.resize(np);
+  out.patches.reserve(np);
   for (size_t j = 0; j < np; ++j) {
     // an emerging patch: its magnitudes averaged with zero where it is missing, its geometry over the corners that
-    // have it
+    // have it; where none of the corners with a weight has it (a query on a cell face or edge), it is not there
+    if (missing[j] && !(present[j] > 0.0)) continue;
     const int nf = NumberOfFields(ref.patches[j], law);
     if (missing[j])
       for (int k = 0; k < nf; ++k)
         if (!IsMagnitudeField(k)) acc[j * kFields + k] /= present[j];
-    out.patches[j] = ref.patches[j];  // the integer and non-interpolated fields (model, alpha_c, extents)
-    Unpack(&acc[j * kFields], Q_scale, &out.patches[j], nf);
+    out.patches.push_back(ref.patches[j]);  // the integer and non-interpolated fields (model, alpha_c, extents)
+    Unpack(&acc[j * kFields], Q_scale, &out.patches.back(), nf);
   }
   return out;
 }
