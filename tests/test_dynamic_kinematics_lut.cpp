@@ -130,6 +130,25 @@ TEST(DynamicKinematicsLut, QueryOutsideTheTableFailsTheClassNamingIt) {
   EXPECT_NE(r.failure.find("lateral"), std::string::npos) << r.failure;
 }
 
+// A table whose evaluation gives a non-finite patch (here planted: every left node's contact position NaN) is a
+// refusal too: the NaN is never used and the class fails naming the query.
+TEST(DynamicKinematicsLut, NonFinitePatchFromTheTableFailsTheClass) {
+  const Scenario sc = ParseScenario(
+      ScenarioText("{duration_s: 0.1, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none, contact: lut}", "0", "0"),
+      "test");
+  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
+  ContactLutBuildOptions o;
+  o.grid = ParseContactLutGrid({"-2:2:0.5", "-8:8:4", "20:95:15"});
+  o.contact = ScenarioQuasiStaticOptions(sc, ContactModel::Hertz).contact;
+  ContactLut table = BuildContactLut(g, o);
+  for (LutNode& n : table.nodes[0])
+    for (LutPatch& p : n.patches) p.y_contact_rail_m = std::nan("");
+  const auto planted = std::make_shared<const ContactLut>(std::move(table));
+  const DynamicClassKinematics r = SimulateClassKinematicsWithLut(sc, g, sc.classes[0], ContactModel::Hertz, planted);
+  EXPECT_TRUE(r.series.samples.empty());
+  EXPECT_NE(r.failure.find("non-finite patch from the table"), std::string::npos) << r.failure;
+}
+
 TEST(DynamicKinematicsLut, GridCoversTheFlangeTheYawAndTheLoads) {
   const Scenario sc = ParseScenario(ScenarioText("{contact: lut}", "300"), "test");
   const WheelsetTrackGeometry g(sc.MakeTrackSetup());

@@ -13,8 +13,9 @@
 // Q0 -/+ m |a_nc| h / (2 b0) (the model's load transfer): the effective load of the total-force balance differs
 // from Q by up to +/- 50 % at a flange (§17.4).
 //
-// A QUERY THE TABLE REFUSES (outside the grid, InputError of the evaluation) is never used: the contact / pose
-// function records it and answers "not converged" (the integrator rejects the step), and the class then FAILS with
+// A QUERY THE TABLE REFUSES (outside the grid, InputError of the evaluation; or a report with a non-finite force,
+// position or angle of a patch) is never used: the contact / pose function records it and answers "not converged"
+// (the integrator rejects the step), and the class then FAILS with
 // the first refusal named (DynamicClassKinematics::failure), even when the integrator recovered with a smaller
 // step: the provider falls back as for any failure (steps.csv kinematics_fallbacks).
 #include <memory>

@@ -40,6 +40,15 @@ std::vector<double> GeometryKey(const WheelsetTrackGeometry& g) {
   return k;
 }
 
+// Every force, position and angle of the wheel's patches and sums finite.
+bool FiniteReport(const WheelContactReport& r) {
+  for (const PatchReport& p : r.patches)
+    for (double x : {p.fn_N, p.fx_N, p.fy_N, p.mz_Nm, p.contact_angle_rad, p.y_contact_rail_m, p.z_contact_rail_m,
+                     p.y_contact_wheel_m, p.rolling_radius_m, p.lead_m, p.vertical_force_N, p.lateral_force_N})
+      if (!std::isfinite(x)) return false;
+  return std::isfinite(r.vertical_force_N) && std::isfinite(r.lateral_force_N);
+}
+
 }  // namespace
 
 ContactLutGrid DynamicKinematicsLutGrid(const Scenario& sc, const WheelsetTrackGeometry& g, ContactModel model) {
@@ -88,14 +97,24 @@ DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const 
   const WheelContactFunction contact = [lut_contact, refusals](const WheelsetTrackGeometry& geometry, Side side,
                                                                 const WheelsetPose& pose, const WheelsetVelocity& velocity,
                                                                 const WheelContactOptions& options) {
+    WheelContactReport r;
     try {
-      return lut_contact(geometry, side, pose, velocity, options);
+      r = lut_contact(geometry, side, pose, velocity, options);
     } catch (const InputError& e) {
       refusals->add(std::string(to_string(side)) + " wheel: " + e.what());
-      WheelContactReport r;
+      r = WheelContactReport{};
       r.status = WheelContactStatus::NotConverged;
       return r;
     }
+    if (!FiniteReport(r)) {  // never used: a refusal as well, named with its query
+      char b[200];
+      std::snprintf(b, sizeof b, "%s wheel: a non-finite patch from the table at y = %.6g mm, psi = %.6g mrad, Q = %.6g N",
+                    to_string(side), 1e3 * pose.lateral_m, 1e3 * pose.yaw_rad, options.vertical_load_N);
+      refusals->add(b);
+      r = WheelContactReport{};
+      r.status = WheelContactStatus::NotConverged;
+    }
+    return r;
   };
   const RigidPoseFunction pose = [lut_pose, refusals](const WheelsetTrackGeometry& geometry, double y, double psi,
                                                       const EquilibriumOptions& options) {
