@@ -25,6 +25,8 @@
 //              two-rail equilibrium there (elastic flange rule of the contact); velocity V, dy/dt - V y_irr'(s),
 //              dpsi/dt + V c(s), axle V / r0 (1 + w_j); loads Q0 -/+ m a_nc(s) h / (2 b0) with the cross-level in
 //              a_nc (the model's own loads); weight 1 / (number of samples); curvature c(s).
+// CONTACT: kinematics.dynamic.contact `direct` (default) as above, `lut` a contact look-up table of the wheel step's
+//              geometry for the contact forces and the rigid equilibrium of the dynamics (dynamic_kinematics_lut.hpp).
 // FAILURES are never silent: an integration that stops early (DynamicsResult status), a sample without rigid
 // equilibrium or an unloaded wheel makes the class fall back like a rejected quasi-static solve (wear_simulation.hpp
 // MakeScenarioKinematics): to the last accepted series of the class, else the kinematic curving estimate, with the
@@ -50,14 +52,18 @@ struct DynamicClassKinematics {
   long steps = 0, contact_evaluations = 0;            // of the integration (DynamicsResult)
 };
 
-// Runs one class with the scenario's kinematics.dynamic settings; `model` is the curving contact model and
-// `contact` the wheel contact function. InputError for bad input; failures are in `failure`.
+// Runs one class with the scenario's kinematics.dynamic settings; `model` is the curving contact model, `contact`
+// the wheel contact function and `pose` the rigid equilibrium of the dynamics (empty: the geometry's solve; the
+// samples' vertical position and roll are always the geometry's). InputError for bad input; failures are in
+// `failure`. With `contact: lut` the provider calls SimulateClassKinematicsWithLut (dynamic_kinematics_lut.hpp).
 DynamicClassKinematics SimulateClassKinematics(const Scenario& scenario, const WheelsetTrackGeometry& geometry,
                                                const TrackClass& track_class, ContactModel model,
-                                               const WheelContactFunction& contact);
+                                               const WheelContactFunction& contact, const RigidPoseFunction& pose = {});
 
 // The `dynamic` provider as a KinematicsFunction, with the fallback described above (per-class memory: one function
-// per run; `fallbacks` optional).
+// per run; `fallbacks` optional). With kinematics.dynamic.contact: lut, `contact` is not used: each wheel step's
+// table is built once for all classes (DynamicKinematicsLutCache) and the classes run on it; a table that cannot be
+// built or a query it refuses is a failure of the class like the others (dynamic_kinematics_lut.hpp).
 KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel model, const WearContactFunction& contact,
                                          std::shared_ptr<KinematicsFallbackLog> fallbacks = nullptr);
 

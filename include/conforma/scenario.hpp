@@ -8,6 +8,7 @@
 //   kinematics: { provider: quasistatic | centred | kinematic | dynamic, tangent_amplitude_mm: 3, tangent_phases: 8,
 //                 cant_base_m: 1.5, free_axle_rotation: true, axle_torque_Nm: 0, contact_model: hertz,
 //                 dynamic: { duration_s: 4, settle_s: 1, sample_interval_s: 0.02, stepper: rosenbrock4,
+//                            contact: direct | lut, lut_creep: polach | fastsim (with contact: lut),
 //                            irregularity: { spectrum: ore_b176_low, seed: 1, wavelength_min_m: 3,
 //                                            wavelength_max_m: 70 } | none } }
 //       quasistatic: kinematics_quasistatic.hpp (Ceres, contact model in the loop) -- the default;
@@ -79,6 +80,11 @@ struct ScenarioDynamicKinematics {
   double settle_s = 1.0;            // simulated time discarded at the start (transient from the initial state), s, >= 0
   double sample_interval_s = 0.02;  // time between kept samples, s, > 0 and <= duration_s
   std::string stepper = "rosenbrock4";  // rosenbrock4 | dopri5 (vehicle_dynamics.hpp DynamicsStepper)
+  // Contact of the runs: `direct` (the curving contact model solved at every evaluation, SolveWheelContact) or `lut`
+  // (a contact look-up table of each wheel step's geometry built in memory, contact_lut.hpp; its rigid equilibrium
+  // and contact forces from the table; dynamic_kinematics_lut.hpp).
+  bool lut_contact = false;         // contact: lut
+  std::string lut_creep = "polach"; // lut_creep (contact: lut only): polach | fastsim (contact_lut.hpp LutCreepForce)
   // Track irregularity (track_irregularity.hpp SynthesizeTrackIrregularity) under every class; `irregularity: none`
   // gives the perfect track (the samples then settle on the steady curving state).
   bool irregularity = true;

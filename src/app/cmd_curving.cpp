@@ -73,6 +73,7 @@ void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const 
 void PrintSampleSummary(const KinematicsSeries& s) {
   std::map<int, std::vector<const KinematicsSample*>> by_ws;
   for (const KinematicsSample& k : s.samples) by_ws[k.wheelset].push_back(&k);
+  std::printf("    %s\n", s.source.c_str());
   for (const auto& [ws, v] : by_ws) {
     auto stats = [&v](auto f, double scale, const char* name, const char* unit) {
       double mean = 0.0, lo = 1e300, hi = -1e300;

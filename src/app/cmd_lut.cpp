@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "conforma/contact_lut.hpp"
 #include "conforma/contact_lut_check.hpp"
+#include "conforma/contact_lut_grid.hpp"
 #include "conforma/contact_lut_io.hpp"
 #include "conforma/error.hpp"
 #include "contact_status.hpp"
@@ -20,41 +21,6 @@
 namespace conforma::cli {
 
 namespace {
-
-// Comma-separated items, each a value or "min:max:step" (inclusive; max itself when reached within step/1000),
-// scaled to SI, sorted, values closer than 1e-9 of the span merged: "-10:10:0.1,5.5:8:0.05" refines a range.
-std::vector<double> ParseAxis(const std::string& text, const char* option, double scale) {
-  std::vector<double> v;
-  try {
-    for (const std::string& item : SplitCommaList(text)) {
-      if (item.find(':') == std::string::npos) {
-        size_t used = 0;
-        v.push_back(std::stod(item, &used) * scale);
-        if (used != item.size()) throw InputError("");
-        continue;
-      }
-      double lo, hi, step;
-      char c1, c2;
-      std::istringstream in(item);
-      if (!(in >> lo >> c1 >> hi >> c2 >> step) || c1 != ':' || c2 != ':' || !(step > 0.0) || !(hi > lo))
-        throw InputError("");
-      const long n = std::lround(std::floor((hi - lo) / step + 1e-3));
-      if (n > 100000) throw InputError("");
-      for (long k = 0; k <= n; ++k) v.push_back((lo + k * step) * scale);
-    }
-  } catch (const std::exception&) {
-    throw InputError(std::string(option) + " '" + text + "': expected values and min:max:step ranges, comma-separated");
-  }
-  std::sort(v.begin(), v.end());
-  if (!v.empty()) {
-    const double tol = 1e-9 * std::max(1e-30, v.back() - v.front());
-    std::vector<double> merged{v[0]};
-    for (double x : v)
-      if (x - merged.back() > tol) merged.push_back(x);
-    v = merged;
-  }
-  return v;
-}
 
 struct LutArgs {
   TrackArgs track;
@@ -135,10 +101,9 @@ void RegisterLutCommand(CLI::App& app) {
   {
     struct Build {
       LutArgs args;
-      // default grid: the default scenario's pair (docs/architecture.md "Contact look-up table"); y refined where
-      // S1002 meets the flange (|y| 5.5-8 mm, contact point moving fast)
-      std::string out = "contact_lut.h5", y_mm = "-10:10:0.1,-8:-5.5:0.05,5.5:8:0.05", yaw_mrad = "-8:8:2",
-                  load_kN = "20:95:15";
+      // default grid: the default scenario's pair (contact_lut_grid.hpp, docs/architecture.md "Contact look-up table")
+      std::string out = "contact_lut.h5";
+      ContactLutGridText grid;
       double match_mm = 3.0;
       int threads = 0;
     };
@@ -146,18 +111,16 @@ void RegisterLutCommand(CLI::App& app) {
     CLI::App* sub = lut->add_subcommand("build", "solve the table and write it (HDF5)");
     b->args.add_to(sub);
     sub->add_option("--out", b->out, "output file (.h5)");
-    sub->add_option("--y-mm", b->y_mm, "lateral shift axis: min:max:step or a comma list [mm]");
-    sub->add_option("--yaw-mrad", b->yaw_mrad, "yaw axis: min:max:step or a comma list [mrad]");
-    sub->add_option("--load-kN", b->load_kN, "wheel load axis: min:max:step or a comma list [kN]");
+    sub->add_option("--y-mm", b->grid.lateral_mm, "lateral shift axis: min:max:step or a comma list [mm]");
+    sub->add_option("--yaw-mrad", b->grid.yaw_mrad, "yaw axis: min:max:step or a comma list [mrad]");
+    sub->add_option("--load-kN", b->grid.load_kN, "wheel load axis: min:max:step or a comma list [kN]");
     sub->add_option("--match-mm", b->match_mm, "patches farther apart along the rail are different patches [mm]");
     sub->add_option("--threads", b->threads, "OpenMP threads (0: default)");
     sub->callback([b, sub]() {
       const auto geometry = b->args.track.make_geometry();
       ContactLutBuildOptions o;
       o.contact = b->args.options();
-      o.grid.lateral_m = ParseAxis(b->y_mm, "--y-mm", 1e-3);
-      o.grid.yaw_rad = ParseAxis(b->yaw_mrad, "--yaw-mrad", 1e-3);
-      o.grid.load_N = ParseAxis(b->load_kN, "--load-kN", 1e3);
+      o.grid = ParseContactLutGrid(b->grid);
       o.match_distance_m = b->match_mm * 1e-3;
       o.threads = b->threads;
       o.wheel_profile = b->args.track.wheel;

@@ -7,6 +7,7 @@
 #include <map>
 #include <mutex>
 
+#include "conforma/dynamic_kinematics_lut.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kinematics_quasistatic.hpp"
 #include "conforma/track_irregularity.hpp"
@@ -67,7 +68,8 @@ void CurveStart(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackC
 }  // namespace
 
 DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackClass& tc,
-                                               ContactModel model, const WheelContactFunction& contact) {
+                                               ContactModel model, const WheelContactFunction& contact,
+                                               const RigidPoseFunction& pose) {
   const ScenarioDynamicKinematics& d = sc.kinematics.dynamic;
   const VehicleParameters& v = sc.vehicle;
   const QuasiStaticOptions qo = ScenarioQuasiStaticOptions(sc, model);
@@ -114,7 +116,7 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
     io.length_m = std::max(s_end + 10.0, d.wavelength_max_m);
     SetTrackIrregularity(track, SynthesizeTrackIrregularity(io), qo.cant_base_m);
   }
-  const VehicleDynamicsModel m(v, &g, track, o.model, contact);
+  const VehicleDynamicsModel m(v, &g, track, o.model, contact, pose);
   DynamicClassKinematics out;
   if (c != 0.0) CurveStart(sc, g, tc, qo, contact, m, &o, &out.quasistatic_start);
   if (d.irregularity) {
@@ -206,9 +208,22 @@ KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel 
     std::map<int, KinematicsSeries> series;
   };
   auto accepted = std::make_shared<AcceptedSolutions>();
-  return [scenario, model, contact, fallbacks, accepted](const WheelsetTrackGeometry& g, const TrackClass& tc,
-                                                         int class_index) {
-    const DynamicClassKinematics r = SimulateClassKinematics(scenario, g, tc, model, contact);
+  // contact: lut: one table per wheel step, shared by the classes
+  auto tables = scenario.kinematics.dynamic.lut_contact ? std::make_shared<DynamicKinematicsLutCache>() : nullptr;
+  return [scenario, model, contact, fallbacks, accepted, tables](const WheelsetTrackGeometry& g, const TrackClass& tc,
+                                                                 int class_index) {
+    DynamicClassKinematics r;
+    if (tables) {
+      std::shared_ptr<const ContactLut> table;
+      try {
+        table = tables->get(scenario, g, model);
+      } catch (const std::exception& e) {
+        r.failure = std::string("contact look-up table not built: ") + e.what();
+      }
+      if (table) r = SimulateClassKinematicsWithLut(scenario, g, tc, model, table);
+    } else {
+      r = SimulateClassKinematics(scenario, g, tc, model, contact);
+    }
     std::lock_guard<std::mutex> lock(accepted->mutex);
     if (r.failure.empty()) {
       accepted->series[class_index] = r.series;

@@ -274,7 +274,8 @@ std::vector<TrackClass> ClassesFromCsv(const Reader& r, const YAML::Node& n, dou
 
 // kinematics.dynamic (ScenarioDynamicKinematics); every bad value names its key.
 void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynamicKinematics* d) {
-  r.check_keys(n, "kinematics.dynamic", {"duration_s", "settle_s", "sample_interval_s", "stepper", "irregularity"});
+  r.check_keys(n, "kinematics.dynamic",
+               {"duration_s", "settle_s", "sample_interval_s", "stepper", "contact", "lut_creep", "irregularity"});
   if (n["duration_s"]) d->duration_s = r.number(n["duration_s"], "kinematics.dynamic.duration_s");
   if (!(d->duration_s > 0)) r.fail("kinematics.dynamic.duration_s", "must be > 0");
   if (n["settle_s"]) d->settle_s = r.number(n["settle_s"], "kinematics.dynamic.settle_s");
@@ -285,6 +286,17 @@ void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynami
   if (n["stepper"]) d->stepper = r.text(n["stepper"], "kinematics.dynamic.stepper");
   if (d->stepper != "rosenbrock4" && d->stepper != "dopri5")
     r.fail("kinematics.dynamic.stepper", "unknown stepper '" + d->stepper + "' (rosenbrock4, dopri5)");
+  if (n["contact"]) {
+    const std::string c = r.text(n["contact"], "kinematics.dynamic.contact");
+    if (c != "direct" && c != "lut") r.fail("kinematics.dynamic.contact", "unknown contact '" + c + "' (direct, lut)");
+    d->lut_contact = c == "lut";
+  }
+  if (n["lut_creep"]) {
+    if (!d->lut_contact) r.fail("kinematics.dynamic.lut_creep", "only with contact: lut");
+    d->lut_creep = r.text(n["lut_creep"], "kinematics.dynamic.lut_creep");
+    if (d->lut_creep != "polach" && d->lut_creep != "fastsim")
+      r.fail("kinematics.dynamic.lut_creep", "unknown creep force '" + d->lut_creep + "' (polach, fastsim)");
+  }
   if (const YAML::Node i = n["irregularity"]) {
     if (i.IsScalar()) {
       if (r.text(i, "kinematics.dynamic.irregularity") != "none")

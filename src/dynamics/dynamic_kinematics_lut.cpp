@@ -1,0 +1,157 @@
+// The `dynamic` kinematics provider with a contact look-up table (dynamic_kinematics_lut.hpp).
+#include "conforma/dynamic_kinematics_lut.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "conforma/contact_lut_grid.hpp"
+#include "conforma/error.hpp"
+#include "conforma/kinematics_quasistatic.hpp"
+
+namespace conforma {
+
+namespace {
+
+// The first query the table refused and how many; one per class run (the run is single-threaded).
+struct LutRefusals {
+  long count = 0;
+  std::string first;
+  void add(const std::string& what) {
+    if (count++ == 0) first = what;
+  }
+};
+
+// Every profile sample of both sides, the nominal radii and the mounting: equal keys, equal geometry.
+std::vector<double> GeometryKey(const WheelsetTrackGeometry& g) {
+  const TrackSetup& s = g.setup();
+  std::vector<double> k{s.gauge_m, s.gauge_height_m, s.flange_back_distance_m, s.flange_back_position_m,
+                        s.nominal_radius_m[0], s.nominal_radius_m[1], s.rail_inclination_rad, s.roller_radius_m[0],
+                        s.roller_radius_m[1]};
+  for (const std::array<Profile, 2>* pair : {&s.wheel, &s.rail})
+    for (const Profile& p : *pair) {
+      k.push_back(static_cast<double>(p.sample_count()));
+      for (size_t i = 0; i < p.sample_count(); ++i) {
+        const Eigen::Vector2d q = p.sample_at(i);
+        k.push_back(q.x());
+        k.push_back(q.y());
+      }
+    }
+  return k;
+}
+
+// Every force, position and angle of the wheel's patches and sums finite.
+bool FiniteReport(const WheelContactReport& r) {
+  for (const PatchReport& p : r.patches)
+    for (double x : {p.fn_N, p.fx_N, p.fy_N, p.mz_Nm, p.contact_angle_rad, p.y_contact_rail_m, p.z_contact_rail_m,
+                     p.y_contact_wheel_m, p.rolling_radius_m, p.lead_m, p.vertical_force_N, p.lateral_force_N})
+      if (!std::isfinite(x)) return false;
+  return std::isfinite(r.vertical_force_N) && std::isfinite(r.lateral_force_N);
+}
+
+}  // namespace
+
+ContactLutGrid DynamicKinematicsLutGrid(const Scenario& sc, const WheelsetTrackGeometry& g, ContactModel model) {
+  const QuasiStaticOptions qo = ScenarioQuasiStaticOptions(sc, model);
+  const VehicleParameters& v = sc.vehicle;
+  // lateral: up to the flange contact of either wheel + 3 mm
+  const double y_flange = std::max(std::fabs(FlangeContactShift(g, 1.0, qo.flange_contact_angle_rad)),
+                                   std::fabs(FlangeContactShift(g, -1.0, qo.flange_contact_angle_rad)));
+  // yaw and loads over the classes: a |c| + 5 mrad; Q0 -/+ m |a_nc| h / (2 b0) (vehicle_dynamics_model.cpp)
+  const double Q0 = v.static_wheel_load_N(qo.gravity_m_s2);
+  double c_max = 0.0, dQ_max = 0.0;
+  for (const TrackClass& tc : sc.classes) {
+    const double c = TrackClassCurvature(tc);
+    const double a_nc = tc.speed_m_s * tc.speed_m_s * c - qo.gravity_m_s2 * (c > 0 ? tc.cant_m : -tc.cant_m) / qo.cant_base_m;
+    c_max = std::max(c_max, std::fabs(c));
+    dQ_max = std::max(dQ_max, std::fabs(v.carried_mass_per_wheelset_kg() * a_nc * v.load_transfer_height_m /
+                                        (2.0 * v.contact_half_distance_m)));
+  }
+  if (!(Q0 - dQ_max > 0.0))
+    throw InputError("dynamic provider with contact: lut: a wheel is unloaded by the load transfer of a class");
+  return CoverContactLutGrid(DefaultContactLutGrid(), y_flange + 3e-3, 0.5 * v.wheelbase_m * c_max + 5e-3,
+                             0.5 * (Q0 - dQ_max), 1.5 * (Q0 + dQ_max));
+}
+
+std::shared_ptr<const ContactLut> BuildDynamicKinematicsLut(const Scenario& sc, const WheelsetTrackGeometry& g,
+                                                            ContactModel model) {
+  ContactLutBuildOptions o;
+  o.grid = DynamicKinematicsLutGrid(sc, g, model);
+  o.contact = ScenarioQuasiStaticOptions(sc, model).contact;
+  o.wheel_profile = "wear-step wheel of " + sc.source;
+  o.rail_profile = "rail of " + sc.source;
+  o.track = "kinematics provider dynamic";
+  return std::make_shared<const ContactLut>(BuildContactLut(g, o));
+}
+
+DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const WheelsetTrackGeometry& g,
+                                                      const TrackClass& tc, ContactModel model,
+                                                      std::shared_ptr<const ContactLut> table) {
+  if (!table) throw InputError("dynamic provider with contact: lut: no table");
+  LutEvaluationOptions evaluation;
+  evaluation.creep_force = ParseLutCreepForce(sc.kinematics.dynamic.lut_creep);
+  const LutContactFunction lut_contact = MakeLutContactFunction(table, evaluation);
+  const LutPoseFunction lut_pose = MakeLutPoseFunction(table);
+  auto refusals = std::make_shared<LutRefusals>();
+  // a refused query is recorded and answered "not converged": never used (dynamic_kinematics_lut.hpp)
+  const WheelContactFunction contact = [lut_contact, refusals](const WheelsetTrackGeometry& geometry, Side side,
+                                                                const WheelsetPose& pose, const WheelsetVelocity& velocity,
+                                                                const WheelContactOptions& options) {
+    WheelContactReport r;
+    try {
+      r = lut_contact(geometry, side, pose, velocity, options);
+    } catch (const InputError& e) {
+      refusals->add(std::string(to_string(side)) + " wheel: " + e.what());
+      r = WheelContactReport{};
+      r.status = WheelContactStatus::NotConverged;
+      return r;
+    }
+    if (!FiniteReport(r)) {  // never used: a refusal as well, named with its query
+      char b[200];
+      std::snprintf(b, sizeof b, "%s wheel: a non-finite patch from the table at y = %.6g mm, psi = %.6g mrad, Q = %.6g N",
+                    to_string(side), 1e3 * pose.lateral_m, 1e3 * pose.yaw_rad, options.vertical_load_N);
+      refusals->add(b);
+      r = WheelContactReport{};
+      r.status = WheelContactStatus::NotConverged;
+    }
+    return r;
+  };
+  const RigidPoseFunction pose = [lut_pose, refusals](const WheelsetTrackGeometry& geometry, double y, double psi,
+                                                      const EquilibriumOptions& options) {
+    try {
+      return lut_pose(geometry, y, psi, options);
+    } catch (const InputError& e) {
+      refusals->add(std::string("rigid pose: ") + e.what());
+      EquilibriumResult r;
+      r.status = EquilibriumStatus::NotConverged;
+      return r;
+    }
+  };
+  DynamicClassKinematics out = SimulateClassKinematics(sc, g, tc, model, contact, pose);
+  char b[160];
+  std::snprintf(b, sizeof b, ", contact look-up table %zu x %zu x %zu (built in %.2f s), %s creep forces",
+                table->grid.lateral_m.size(), table->grid.yaw_rad.size(), table->grid.load_N.size(),
+                table->header.generation_s, sc.kinematics.dynamic.lut_creep.c_str());
+  out.series.source += b;
+  if (refusals->count > 0) {
+    out.failure = "contact look-up table refused " + std::to_string(refusals->count) + " queries, the first: " +
+                  refusals->first + (out.failure.empty() ? std::string() : "; " + out.failure);
+    out.series.samples.clear();
+  }
+  return out;
+}
+
+std::shared_ptr<const ContactLut> DynamicKinematicsLutCache::get(const Scenario& sc, const WheelsetTrackGeometry& g,
+                                                                 ContactModel model, bool* built) {
+  std::vector<double> key = GeometryKey(g);
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (built) *built = false;
+  if (!table_ || key != key_) {
+    table_ = BuildDynamicKinematicsLut(sc, g, model);
+    key_ = std::move(key);
+    if (built) *built = true;
+  }
+  return table_;
+}
+
+}  // namespace conforma
