@@ -15,14 +15,15 @@
 // EVALUATION (EvaluateContactLut, MakeLutContactFunction): inside a grid cell whose eight corner nodes have one
 // patch topology (same status, patch count, model per patch, each patch within match_distance_m along the rail of
 // its partner) every patch field is interpolated tri-linearly, the load-dependent fields normalised by their
-// Hertzian power of Q (forces / Q; lengths and pressures / Q^(1/3); area, approach / Q^(2/3)). Where a patch
-// EMERGES inside the cell (one corner's patches include every other corner's: a flange patch appearing with more
-// load or lateral shift), that corner's topology is taken and the patch enters with zero force (normal force,
-// pressures, area, semi-axes, strip lengths) at the corners that lack it, its geometry averaged over the corners
-// that have it: the forces stay continuous, as the elastic contact's are (a total-force balance then has a root).
-// Where the topology otherwise changes inside the cell (a contact jump, patches merging), the topology of the
-// nearest corner node is taken and only the corners with that topology are interpolated (weights renormalised): a
-// tread patch and a flange patch are never averaged and a contact jump is placed within one grid step. Creep forces are solved at evaluation time for the actual velocity: hertz patches
+// Hertzian power of Q (forces / Q; lengths and pressures / Q^(1/3); area, approach / Q^(2/3)). Where the topology
+// changes inside a cell whose corners are all Ok, the corners' patches are matched into PATCH TRACKS (same model,
+// reference points within match_distance_m along the rail): a patch missing at a corner enters there with zero
+// force (normal force, pressures, area, semi-axes, strip lengths), its geometry averaged over the corners that have
+// it. A flange patch that appears, or a tread contact point that moves elsewhere, then changes the forces
+// continuously across the cell, as the elastic contact does (a total-force balance has a root; the dynamics'
+// integrator meets no force jump); two patches are never averaged into one. In a cell with a corner that is not
+// Ok the topology of the nearest corner node is taken and only the corners with that topology are interpolated
+// (weights renormalised): the change is placed within one grid step. Creep forces are solved at evaluation time for the actual velocity: hertz patches
 // by FASTSIM on the stored ellipse with the interpolated creepages (the pipeline's hertz tangential solve); KP
 // patches (kp, kpec, conformal) by the curved-patch FASTSIM scheme on the interpolated stations with per-strip rigid
 // slip and the SDEC flexibilities (with given creepages or a slip-dependent friction law: FASTSIM on the SDEC
@@ -170,8 +171,8 @@ struct LutEvaluationOptions {
 // The location of a query in the table (which cell, whether its corners share one topology).
 struct LutCellInfo {
   bool single_topology = false;  // the 8 corners all Ok with one topology
-  // the corners differ only by patches some of them lack (an emerging patch): interpolated with zero force where
-  // missing (header comment)
+  // the corners' topologies differ and are all Ok: interpolated by patch tracks, a patch with zero force where a
+  // corner lacks it (header comment)
   bool union_topology = false;
   size_t iy = 0, ipsi = 0, iq = 0;  // lower corner of the cell
 };

@@ -88,32 +88,44 @@ bool IsMagnitudeField(int k) {
   return i == 0 || i == 2;
 }
 
-// The corner whose patches include every other corner's (all corners Ok, each patch matched in order along the rail
-// to one of its patches with the same model within the match distance): its index, and per corner the index of the
-// corner's patch matched to each of its patches (-1: missing there). -1 when no corner does, or when patches
-// merge or split (a corner with a patch the superset lacks).
-constexpr int kMaxUnionPatches = 8;
-int UnionOfCorners(const LutNode* const corner[8], double match_distance_m,
-                   std::array<std::array<int, kMaxUnionPatches>, 8>* map) {
+// Patch tracks of a cell whose 8 corners are all Ok: every corner's patches matched to tracks (same model, reference
+// points closer than the match distance along the rail, the nearest free track; a patch without one starts a track),
+// the tracks ordered along the rail as the nodes' patches. index[c]: the corner's patch on the track, -1 where the
+// corner has none. false when a corner is not Ok or there are more than kMaxTracks tracks.
+constexpr int kMaxTracks = 8;
+struct PatchTrack {
+  double rail_s_m = 0.0;
+  int model = 0;
+  std::array<int, 8> index{-1, -1, -1, -1, -1, -1, -1, -1};
+};
+bool TracksOfCorners(const LutNode* const corner[8], double match_distance_m, std::vector<PatchTrack>* tracks) {
   const int ok = static_cast<int>(WheelContactStatus::Ok);
-  int best = 0;
+  tracks->clear();
   for (int c = 0; c < 8; ++c) {
-    if (corner[c]->status != ok) return -1;
-    if (corner[c]->patches.size() > corner[best]->patches.size()) best = c;
-  }
-  const std::vector<LutPatch>& u = corner[best]->patches;
-  if (u.size() > static_cast<size_t>(kMaxUnionPatches)) return -1;
-  for (int c = 0; c < 8; ++c) {
-    const std::vector<LutPatch>& p = corner[c]->patches;
-    size_t i = 0;
-    for (size_t j = 0; j < u.size(); ++j) {
-      const bool match = i < p.size() && p[i].model == u[j].model &&
-                         std::fabs(p[i].rail_s_m - u[j].rail_s_m) < match_distance_m;
-      (*map)[c][j] = match ? static_cast<int>(i++) : -1;
+    if (corner[c]->status != ok) return false;
+    for (size_t i = 0; i < corner[c]->patches.size(); ++i) {
+      const LutPatch& p = corner[c]->patches[i];
+      int best = -1;
+      double best_distance = match_distance_m;
+      for (size_t t = 0; t < tracks->size(); ++t) {
+        const PatchTrack& k = (*tracks)[t];
+        const double d = std::fabs(k.rail_s_m - p.rail_s_m);
+        if (k.model == p.model && k.index[c] < 0 && d < best_distance) best = static_cast<int>(t), best_distance = d;
+      }
+      if (best < 0) {
+        if (static_cast<int>(tracks->size()) == kMaxTracks) return false;
+        PatchTrack k;
+        k.rail_s_m = p.rail_s_m;
+        k.model = p.model;
+        tracks->push_back(k);
+        best = static_cast<int>(tracks->size()) - 1;
+      }
+      (*tracks)[best].index[c] = static_cast<int>(i);
     }
-    if (i != p.size()) return -1;  // a patch of this corner has no partner: not an emerging patch
   }
-  return best;
+  std::stable_sort(tracks->begin(), tracks->end(),
+                   [](const PatchTrack& x, const PatchTrack& y) { return x.rail_s_m < y.rail_s_m; });
+  return true;
 }
 
 // The fields a patch's creep solve reads: FASTSIM on a KP patch reads the slip map and the stations too; a hertz
@@ -154,24 +166,39 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   bool single = true;
   for (int c = 1; c < 8; ++c) single = single && SameTopology(*corner[0], *corner[c], lut.header.match_distance_m);
   out.cell.single_topology = single && corner[0]->status == static_cast<int>(WheelContactStatus::Ok);
-  // Emerging patches: when one corner's patches include every other corner's (all Ok; a flange patch that appears
-  // with more load or more lateral shift), that corner's topology is taken and a patch missing at a corner enters
-  // there with zero force (UnionOfCorners): the forces stay continuous across the cell. Otherwise the topology of
-  // the nearest corner (largest weight; the first on a tie) and the corners sharing it.
+  // A cell with a topology change whose corners are all Ok: the patch tracks of its corners (TracksOfCorners); a
+  // patch missing at a corner enters there with zero force, so a flange patch that appears, or a contact point
+  // that moves to another place on the tread, changes the forces continuously across the cell (the multi-Hertz
+  // solve is continuous in the pose in the same way: a new gap minimum enters with zero force). Otherwise (a corner
+  // not Ok) the topology of the nearest corner (largest weight; the first on a tie) and the corners sharing it.
   int nearest = 0;
   for (int c = 1; c < 8; ++c)
     if (w[c] > w[nearest]) nearest = c;
-  std::array<std::array<int, kMaxUnionPatches>, 8> map{};
-  const int superset = out.cell.single_topology ? -1 : UnionOfCorners(corner, lut.header.match_distance_m, &map);
-  out.cell.union_topology = superset >= 0;
-  const LutNode& ref = *corner[superset >= 0 ? superset : nearest];
+  std::vector<PatchTrack> tracks;
+  const bool union_rule =
+      !out.cell.single_topology && TracksOfCorners(corner, lut.header.match_distance_m, &tracks);
+  out.cell.union_topology = union_rule;
+  const LutNode& ref = *corner[nearest];
   double wsum = 0.0;
   for (int c = 0; c < 8; ++c) {
-    if (superset < 0 && !SameTopology(ref, *corner[c], lut.header.match_distance_m)) w[c] = 0.0;
+    if (!union_rule && !SameTopology(ref, *corner[c], lut.header.match_distance_m)) w[c] = 0.0;
     wsum += w[c];
   }
-  out.status = ref.status;
-  const size_t np = ref.patches.size();
+  out.status = union_rule ? static_cast<int>(WheelContactStatus::Ok) : ref.status;
+  const size_t np = union_rule ? tracks.size() : ref.patches.size();
+  // the patch whose integer and non-interpolated fields (model, alpha_c, extents) a result patch takes: the nearest
+  // corner's, or on a track that of the corner with the largest weight that has it
+  std::vector<const LutPatch*> rep(np, nullptr);
+  for (size_t j = 0; j < np; ++j) {
+    if (!union_rule) {
+      rep[j] = &ref.patches[j];
+      continue;
+    }
+    int best = -1;
+    for (int c = 0; c < 8; ++c)
+      if (tracks[j].index[c] >= 0 && (best < 0 || w[c] > w[best])) best = c;
+    rep[j] = &corner[best]->patches[tracks[j].index[best]];
+  }
   std::vector<double> acc(np * kFields, 0.0), f(kFields), present(np, 0.0);
   std::vector<char> missing(np, 0);
   for (int c = 0; c < 8; ++c) {
@@ -180,12 +207,12 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
     out.vertical_m += wc * corner[c]->vertical_m;
     out.roll_rad += wc * corner[c]->roll_rad;
     for (size_t j = 0; j < np; ++j) {
-      const int i = superset >= 0 ? map[c][j] : static_cast<int>(j);
+      const int i = union_rule ? tracks[j].index[c] : static_cast<int>(j);
       if (i < 0) {
         missing[j] = 1;
         continue;
       }
-      const int nf = NumberOfFields(ref.patches[j], law);
+      const int nf = NumberOfFields(*rep[j], law);
       Pack(corner[c]->patches[i], Qc[c], f.data(), nf);
       for (int k = 0; k < nf; ++k) acc[j * kFields + k] += wc * f[k];
       present[j] += wc;
@@ -193,14 +220,14 @@ NormalAtPose InterpolateNormal(const ContactLut& lut, Side side, double y, doubl
   }
   out.patches.reserve(np);
   for (size_t j = 0; j < np; ++j) {
-    // an emerging patch: its magnitudes averaged with zero where it is missing, its geometry over the corners that
+    // a patch missing at some corners: its magnitudes averaged with zero there, its geometry over the corners that
     // have it; where none of the corners with a weight has it (a query on a cell face or edge), it is not there
     if (missing[j] && !(present[j] > 0.0)) continue;
-    const int nf = NumberOfFields(ref.patches[j], law);
+    const int nf = NumberOfFields(*rep[j], law);
     if (missing[j])
       for (int k = 0; k < nf; ++k)
         if (!IsMagnitudeField(k)) acc[j * kFields + k] /= present[j];
-    out.patches.push_back(ref.patches[j]);  // the integer and non-interpolated fields (model, alpha_c, extents)
+    out.patches.push_back(*rep[j]);
     Unpack(&acc[j * kFields], Q_scale, &out.patches.back(), nf);
   }
   return out;
