@@ -115,6 +115,28 @@ void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input,
   if (nf > 1 && nf != ns)
     throw InputError("SolveCurvedFastsim: strip_flexibilities has " + std::to_string(nf) + " entries, expected 0, 1 or " +
                      std::to_string(ns));
+  // Spin about the patch centre (curved_fastsim.hpp, docs/physics-reference.md §5.4): the origin moved to the
+  // c^2-weighted centroid (x_c, s_c) of the strips, the creepages moved with it (w_x = xi - phi y, w_s = eta + phi x
+  // unchanged: xi' = xi - phi (s_c - s_o), eta' = eta + phi (x_c - x_o)).
+  CurvedFastsimOptions centred = options;
+  const std::vector<FastsimCreepages>* creepages = &input.strip_creepages;
+  if (options.spin_about_patch_centre) {
+    double w = 0.0, ws = 0.0, wx = 0.0;
+    for (const KpStrip& k : normal.strips) {
+      if (!(k.half_length_m > 0.0) || !(k.ds_m > 0.0)) continue;
+      const double weight = k.half_length_m * k.half_length_m * k.ds_m;
+      w += weight, ws += weight * k.s_m, wx += weight * k.x_centre_m;
+    }
+    if (w > 0.0) {
+      centred.spin_origin_s_m = ws / w;
+      centred.spin_origin_x_m = wx / w;
+      const double ds = centred.spin_origin_s_m - options.spin_origin_s_m;
+      const double dx = centred.spin_origin_x_m - options.spin_origin_x_m;
+      workspace->centred_creepages = input.strip_creepages;
+      for (FastsimCreepages& c : workspace->centred_creepages) c.xi -= c.phi_per_m * ds, c.eta += c.phi_per_m * dx;
+      creepages = &workspace->centred_creepages;
+    }
+  }
   CurvedFastsimResult& r = *result;
   r.fx_N = r.fs_N = r.mz_Nm = 0.0;
   r.force_reference_N.setZero();
@@ -123,7 +145,7 @@ void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input,
   r.status = FastsimStatus::NoContact;
   r.sdec = ReduceToSdec(normal, input.material);
 
-  double load = BuildPatch(normal, options, workspace, &r.strip_first_element);
+  double load = BuildPatch(normal, centred, workspace, &r.strip_first_element);
   if (options.load_N > 0.0 && load > 0.0) {
     const double scale = options.load_N / load;
     for (double& p : workspace->patch.bound_pressure_Pa) p *= scale;
@@ -147,23 +169,40 @@ void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input,
     for (size_t j = 0; j < ns; ++j)
       if (std::abs(normal.strips[j].s_m - r.sdec.longest_strip_s_m) < std::abs(normal.strips[ref].s_m - r.sdec.longest_strip_s_m)) ref = j;
     uniform = BlendedFlexibilities(uniform, r.sdec.a_m, r.sdec.b_m, r.sdec.coefficients, input.material.shear_modulus_Pa,
-                                   input.friction.static_value(), load, input.strip_creepages[nc == 1 ? 0 : ref]);
+                                   input.friction.static_value(), load, (*creepages)[nc == 1 ? 0 : ref]);
   }
   r.flexibilities = uniform;
+  // Strip-wise flexibilities from the local half-length (curved_fastsim.hpp, docs/physics-reference.md §5.4): the
+  // uniform (SDEC, reduced, blended) values scaled by kappa_i c_j / a, kappa_1 = kappa_2 = 3 pi/8 (L1_j = pi c_j/(C11 G)),
+  // kappa_3 = 32/(9 pi) (L3_j = 8 c_j sqrt(a/b)/(9 C23 G)).
+  std::vector<FastsimFlexibilities>& local = workspace->strip_flexibilities;
+  const bool use_local = options.local_flexibilities && nf == 0;
+  if (use_local) {
+    const double kappa12 = 3.0 * M_PI / 8.0, kappa3 = 32.0 / (9.0 * M_PI);
+    local.assign(ns, uniform);
+    for (size_t j = 0; j < ns; ++j) {
+      const double c = normal.strips[j].half_length_m;
+      if (!(c > 0.0)) continue;  // not in contact: no elements
+      const double ratio = c / r.sdec.a_m;
+      local[j].L1 = uniform.L1 * kappa12 * ratio;
+      local[j].L2 = uniform.L2 * kappa12 * ratio;
+      local[j].L3 = uniform.L3 * kappa3 * ratio;
+    }
+  }
 
   FastsimOptions core_options;
   core_options.marching = options.marching;
   FastsimPatch& patch = workspace->patch;
-  if (nc == 1 && nf <= 1) {  // uniform: one call of the strip core for the whole patch
+  if (nc == 1 && nf <= 1 && !use_local) {  // uniform: one call of the strip core for the whole patch
     patch.strips.assign(workspace->strips.begin(), workspace->strips.end());
-    SolveFastsimStripsWithLaw(patch, uniform, input.strip_creepages[0], input.friction, input.rolling_speed_m_per_s,
+    SolveFastsimStripsWithLaw(patch, uniform, (*creepages)[0], input.friction, input.rolling_speed_m_per_s,
                               core_options, &r.field);
-  } else if (nc == ns && nf <= 1 && input.friction.is_constant()) {
+  } else if (nc == ns && nf <= 1 && !use_local && input.friction.is_constant()) {
     // per-strip creepages, one flexibility, constant friction: the core marches every strip with its own creepages
     // (as one call per strip below, the same arithmetic), strip totals summed in strip order
     input.friction.validate();
     patch.strips.assign(workspace->strips.begin(), workspace->strips.end());
-    SolveFastsimStripsEach(patch, uniform, input.strip_creepages, input.friction.parameters[0],
+    SolveFastsimStripsEach(patch, uniform, *creepages, input.friction.parameters[0],
                            input.rolling_speed_m_per_s, core_options, &r.field, &workspace->strip_totals);
     StripSums sums;
     for (const FastsimStripTotals& t : workspace->strip_totals) sums.Add(t);
@@ -173,12 +212,20 @@ void SolveCurvedFastsim(const KpResult& normal, const CurvedFastsimInput& input,
     StripSums sums;
     for (size_t j = 0; j < ns; ++j) {
       patch.strips[0] = workspace->strips[j];
-      const FastsimFlexibilities L = nf > 1 ? flexibility_of(j) : uniform;
-      SolveFastsimStripsWithLaw(patch, L, input.strip_creepages[nc == 1 ? 0 : j], input.friction,
+      const FastsimFlexibilities L = use_local ? local[j] : nf > 1 ? flexibility_of(j) : uniform;
+      SolveFastsimStripsWithLaw(patch, L, (*creepages)[nc == 1 ? 0 : j], input.friction,
                                 input.rolling_speed_m_per_s, core_options, &r.field);
       sums.Add(r.field);
     }
     sums.WriteTo(&r.field);
+  }
+  if (centred.spin_origin_s_m != options.spin_origin_s_m || centred.spin_origin_x_m != options.spin_origin_x_m) {
+    // the field and the curvilinear moment back to the given origin (CurvedFastsimResult's frame)
+    const double ds = centred.spin_origin_s_m - options.spin_origin_s_m;
+    const double dx = centred.spin_origin_x_m - options.spin_origin_x_m;
+    for (double& x : r.field.x_m) x += dx;
+    for (double& y : r.field.y_m) y += ds;
+    r.field.mz_Nm += dx * r.field.fy_N - ds * r.field.fx_N;
   }
   r.status = r.field.status;
   r.fx_N = r.field.fx_N;

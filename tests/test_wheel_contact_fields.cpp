@@ -160,6 +160,8 @@ TEST(WheelContactFields, CacheKeysKeepTheFormerContentsAndOrder) {
   expected.insert(expected.end(), tail.begin(), tail.end());
   expected.push_back(static_cast<double>(o.friction_law.kind));  // added after the hand-written key
   for (double parameter : o.friction_law.parameters) expected.push_back(parameter);
+  expected.push_back(o.kp_spin_about_patch_centre ? 1.0 : 0.0);  // FASTSIM variants on KP patches (issue 15 item 2)
+  expected.push_back(o.kp_local_flexibilities ? 1.0 : 0.0);
   EXPECT_EQ(ReportCacheKey(normal, v, o), expected);
 }
 

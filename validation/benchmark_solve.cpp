@@ -40,6 +40,8 @@ WheelContactOptions ContactOptionsFor(const BenchCase& c, const PatchSolveOption
   w.fastsim_elements = o.fastsim_elements;
   w.load_tolerance = o.load_tolerance;
   w.conformal_variable_penetration = o.variable_epsilon;
+  w.kp_spin_about_patch_centre = o.kp_spin_about_patch_centre;
+  w.kp_local_flexibilities = o.kp_local_flexibilities;
   return w;
 }
 
@@ -238,6 +240,8 @@ std::vector<BenchRow> RunBench(const std::vector<BenchCase>& cases, const BenchO
         PatchSolveOptions o;
         o.model = v.model;
         o.variable_epsilon = v.variable_epsilon;
+        o.kp_spin_about_patch_centre = options.kp_spin_about_patch_centre;
+        o.kp_local_flexibilities = options.kp_local_flexibilities;
         o.kp_strips = grid.kp_strips;
         o.fastsim_elements = grid.fastsim_elements;
         BenchPatchResult s;

@@ -73,6 +73,8 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
   contact.vertical_load_N = 10e3;
   contact.fastsim_elements = options.fastsim_elements;
   contact.creepages_given = options.creepages_from_file;
+  contact.kp_spin_about_patch_centre = options.kp_spin_about_patch_centre;
+  contact.kp_local_flexibilities = options.kp_local_flexibilities;
   std::vector<ManchesterComparison> out(cases.size());
   ProgressCounter progress(options.on_progress, static_cast<double>(cases.size()));
 #pragma omp parallel for schedule(dynamic)

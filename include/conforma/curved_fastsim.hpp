@@ -49,6 +49,17 @@ struct CurvedFastsimOptions {
   double slope_reduction = 1.0;                              // k of paper 002 eq. 9 (L -> L / k), > 0; 1: none
   bool blend_flexibilities = false;  // CONTACT blending (fastsim.hpp) with the SDEC a, b and the creepages of the
                                      // strip at the longest-strip line; only with uniform flexibilities
+  // Strip-wise flexibilities from the local half-length c_j (docs/physics-reference.md §5.4): L1_j = pi c_j/(C11 G),
+  // L2_j = pi c_j/(C22 G), L3_j = 8 c_j sqrt(a/b)/(9 C23 G) (C_ij, a/b of the SDEC; then k and blending as above).
+  // They reproduce Kalker's linear theory on an elliptic patch like the uniform SDEC values, and Carter's 2-D strip
+  // (L = 4 c (1 - nu)/(pi G)) as a/b -> 0. Only when CurvedFastsimInput::strip_flexibilities is empty. false: uniform.
+  bool local_flexibilities = false;
+  // Spin about the patch centre (docs/physics-reference.md §5.4): Kalker's three-flexibility form (w_x = xi - phi y
+  // L1/L3) is calibrated with the spin origin at the centre of the ellipse; elsewhere the translation part -phi y_c of
+  // the spin's slip acts through L3 instead of L1 and the forces depend on the origin. true: the spin origin is moved
+  // to the c^2-weighted centroid of the strips (where FASTSIM's pure spin gives no F_x) and the creepages with it
+  // (the rigid slip is unchanged); spin_origin_x_m/_s_m then only say where the given creepages refer to.
+  bool spin_about_patch_centre = false;
   // N, >= 0. > 0: rescale the bound so sum p_n dA = load_N (e.g. KpResult::fn_surface_N); 0 (default): as given
   double load_N = 0.0;
   double spin_origin_x_m = 0.0;  // origin of the spin lever arms (x^r, s^r) in patch coordinates, m; default (0, 0)
@@ -95,6 +106,8 @@ struct CurvedFastsimWorkspace {
   std::vector<FastsimStrip> strips;  // one per KP strip
   std::vector<double> shape_means;   // element means of the normalised semi-ellipse
   std::vector<FastsimStripTotals> strip_totals;  // per strip (per-strip creepages)
+  std::vector<FastsimFlexibilities> strip_flexibilities;  // per strip (CurvedFastsimOptions::local_flexibilities)
+  std::vector<FastsimCreepages> centred_creepages;        // CurvedFastsimOptions::spin_about_patch_centre
 };
 
 // Throws InputError for a bad KP result (NaN, negative sizes), creepage/flexibility vectors of the wrong size,

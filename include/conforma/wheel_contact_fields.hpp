@@ -187,6 +187,8 @@ constexpr void VisitTangentialOptionFields(Options& o, Visitor&& v) {
   v("friction_law.parameters[1]", o.friction_law.parameters[1]);
   v("friction_law.parameters[2]", o.friction_law.parameters[2]);
   v("friction_law.parameters[3]", o.friction_law.parameters[3]);
+  v("kp_spin_about_patch_centre", o.kp_spin_about_patch_centre);  // issue 15 item 2
+  v("kp_local_flexibilities", o.kp_local_flexibilities);
 }
 
 // ---- the guard ----------------------------------------------------------------------------------------------

@@ -71,6 +71,12 @@ struct WheelContactOptions {
   // `conformal` model: virtual-penetration rule. true (default): CONTACT's variable eps (ConformalKpecOptions);
   // false: Kik-Piotrowski's constant eps = 0.55 (ConformalKpOptions). See kik_piotrowski.hpp.
   bool conformal_variable_penetration = true;
+  // kp, kpec, conformal: FASTSIM variants on the KP patch (curved_fastsim.hpp, docs/physics-reference.md §5.4), both
+  // off by default (Kalker's three flexibilities of the SDEC, spin about the patch reference point):
+  // spin about the patch centre (CurvedFastsimOptions::spin_about_patch_centre) and strip-wise flexibilities from the
+  // local half-length (CurvedFastsimOptions::local_flexibilities)
+  bool kp_spin_about_patch_centre = false;
+  bool kp_local_flexibilities = false;
   // `auto` model: thresholds of the per-patch choice (model_selection.hpp; its conformity threshold, 17.7 deg by
   // default, is separate from conformity_threshold_deg, which only sets the KP models' is_conformal flag).
   ModelSelectionOptions auto_selection;

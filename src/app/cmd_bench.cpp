@@ -153,6 +153,8 @@ void RegisterBenchCommand(CLI::App& app) {
   auto families = std::make_shared<std::string>("mbench,groove,worn,flange_root,flange,gauge_corner");
   auto plot = std::make_shared<bool>(true);
   auto default_grid = std::make_shared<std::string>("s31e30");
+  auto spin_centre = std::make_shared<bool>(false);
+  auto local_flex = std::make_shared<bool>(false);
   CLI::App* sub = app.add_subcommand("bench", "run time against error per model and grid (bench.csv, Pareto plot)");
   sub->add_option("--out", *out_dir, "output folder");
   sub->add_option("--data", *data, kDataHelp);
@@ -160,8 +162,14 @@ void RegisterBenchCommand(CLI::App& app) {
   sub->add_option("--families", *families, "comma-separated case families");
   sub->add_option("--default-grid", *default_grid, "grid label of the models' default resolution (summary)");
   sub->add_flag("!--no-plot", *plot, "do not run scripts/plot_bench.py");
+  sub->add_flag("--kp-spin-about-centre", *spin_centre,
+                "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
+  sub->add_flag("--kp-local-flexibilities", *local_flex,
+                "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
   sub->callback([=]() {
     BenchOptions options;
+    options.kp_spin_about_patch_centre = *spin_centre;
+    options.kp_local_flexibilities = *local_flex;
     options.models.clear();
     std::stringstream ms(*models);
     for (std::string name; std::getline(ms, name, ',');)

@@ -15,6 +15,8 @@ void RegisterMbenchCommand(CLI::App& app) {
   auto data = std::make_shared<std::string>();
   auto kinematics = std::make_shared<bool>(false);
   auto origin = std::make_shared<std::string>("ours");
+  auto spin_centre = std::make_shared<bool>(false);
+  auto local_flex = std::make_shared<bool>(false);
   CLI::App* sub = app.add_subcommand("mbench", "Manchester benchmark A-2.2 (left wheel) against CONTACT");
   sub->add_option("--models", *models, "comma-separated models");
   sub->add_option("--data", *data, kDataHelp);
@@ -23,12 +25,18 @@ void RegisterMbenchCommand(CLI::App& app) {
                   "where the file's creepages apply: ours (at our contact reference point, default) or contact (moved "
                   "from CONTACT's reference point y_cp to ours, xi' = xi + phi (y_cp,ours - y_cp,CONTACT))")
       ->check(CLI::IsMember({"ours", "contact"}));
-  sub->callback([models, data, kinematics, origin, sub]() {
+  sub->add_flag("--kp-spin-about-centre", *spin_centre,
+                "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
+  sub->add_flag("--kp-local-flexibilities", *local_flex,
+                "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
+  sub->callback([models, data, kinematics, origin, spin_centre, local_flex, sub]() {
     std::stringstream ss(*models);
     for (std::string name; std::getline(ss, name, ',');) {
       ManchesterOptions o;
       o.model = ParseContactModel(name);
       o.creepages_from_file = !*kinematics;
+      o.kp_spin_about_patch_centre = *spin_centre;
+      o.kp_local_flexibilities = *local_flex;
       o.creepage_origin = *origin == "contact" ? ManchesterCreepageOrigin::ContactReferencePoint
                                                : ManchesterCreepageOrigin::OurReferencePoint;
       ProgressReporter progress("mbench " + name, 0.0, "", ProgressModeOf(sub), std::cerr);

@@ -58,6 +58,8 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
   co.elements_per_strip = options.fastsim_elements;
   co.marching = options.fastsim.marching;
   co.load_N = normal.kp.fn_surface_N;
+  co.spin_about_patch_centre = options.kp_spin_about_patch_centre;  // curved_fastsim.hpp, off by default
+  co.local_flexibilities = options.kp_local_flexibilities;
   // kp, kpec: FASTSIM with the SDEC flexibilities over the KP patch with the reference creepages (what
   // SolveFastsimOnKpPatch does), called directly to pass the rolling speed for the frictional power; conformal:
   // the per-strip rigid slip

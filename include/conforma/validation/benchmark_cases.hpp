@@ -70,6 +70,8 @@ struct PatchSolveOptions {
   // Kik-Piotrowski's eps = 0.55 (ConformalKpOptions), reported by the bench as the model "conformal_eps055".
   bool variable_epsilon = true;
   bool solve_tangential = true;  // false: normal problem only
+  bool kp_spin_about_patch_centre = false;  // WheelContactOptions::kp_spin_about_patch_centre
+  bool kp_local_flexibilities = false;      // WheelContactOptions::kp_local_flexibilities
   void validate() const;         // InputError naming the option
 };
 
@@ -158,6 +160,8 @@ struct BenchOptions {
   double min_time_per_measurement_s = 0.02;  // repeats per timing until this much time has passed (>= 5 repeats)
   int max_repeats = 201;                     // ... but at most this many (and at least 5)
   double reference_load_tolerance = 1e-8;    // BenchReferenceOptions::load_tolerance of the exact reference
+  bool kp_spin_about_patch_centre = false;  // PatchSolveOptions::kp_spin_about_patch_centre of every timed solve
+  bool kp_local_flexibilities = false;      // PatchSolveOptions::kp_local_flexibilities of every timed solve
   // progress (progress.hpp), 2 units per case: its exact reference ("reference <case>"), then its timed models
   // ("timed <case>"); empty: none
   ProgressFunction on_progress;

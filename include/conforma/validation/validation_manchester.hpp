@@ -53,6 +53,8 @@ struct ManchesterOptions {
   bool creepages_from_file = true;  // use each case's xi, eta, phi (as the issue asks); else the kinematics
   ManchesterCreepageOrigin creepage_origin = ManchesterCreepageOrigin::OurReferencePoint;  // see above
   int fastsim_elements = kDefaultFastsimElements;  // WheelContactOptions::fastsim_elements, >= 2
+  bool kp_spin_about_patch_centre = false;  // WheelContactOptions::kp_spin_about_patch_centre
+  bool kp_local_flexibilities = false;      // WheelContactOptions::kp_local_flexibilities
   ProgressFunction on_progress;  // progress (progress.hpp), one unit per case ("case <id>"); empty: none
 };
 
