@@ -22,7 +22,9 @@
 //   samples    every history sample at t = settle_s, settle_s + sample_interval_s, ... up to settle_s + duration_s:
 //              per wheelset j at its station s = s0 + V t + x_j the pose RELATIVE TO THE ACTUAL (IRREGULAR) TRACK
 //              as the contact saw it, y - y_irr(s) and psi - y_irr'(s), vertical position and roll of the rigid
-//              two-rail equilibrium there (elastic flange rule of the contact); velocity V, dy/dt - V y_irr'(s),
+//              two-rail equilibrium there (elastic flange rule of the contact; the rigid solve warm-started from the
+//              previous sample, from the neutral start when that fails; with a table, the table's equilibrium that
+//              the run used, EvaluateLutRigidPose); velocity V, dy/dt - V y_irr'(s),
 //              dpsi/dt + V c(s), axle V / r0 (1 + w_j); loads Q0 -/+ m a_nc(s) h / (2 b0) with the cross-level in
 //              a_nc (the model's own loads); weight 1 / (number of samples); curvature c(s).
 // CONTACT: kinematics.dynamic.contact `direct` (default) as above, `lut` a contact look-up table of the wheel step's
