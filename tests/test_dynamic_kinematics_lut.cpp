@@ -51,23 +51,37 @@ Difference Compare(const KinematicsSeries& a, const KinematicsSeries& b) {
   return d;
 }
 
+// One class run three ways with the same kinematics.dynamic keys: the direct contact, the table with FASTSIM and the
+// table with Polach (class 0 of ScenarioText's scenario with `radius` and `cant_mm`).
+struct ThreeRuns {
+  DynamicClassKinematics direct, fastsim, polach;
+};
+ThreeRuns RunThreeWays(const std::string& keys, const std::string& radius, const std::string& cant_mm) {
+  auto parse = [&](const std::string& extra) {
+    return ParseScenario(ScenarioText("{" + keys + extra + "}", radius, cant_mm), "test");
+  };
+  const Scenario direct = parse(""), fastsim = parse(", contact: lut, lut_creep: fastsim"), polach = parse(", contact: lut");
+  const WheelsetTrackGeometry g(direct.MakeTrackSetup());
+  const TrackClass& tc = direct.classes[0];
+  const auto table = BuildDynamicKinematicsLut(fastsim, g, ContactModel::Hertz);
+  ThreeRuns r;
+  r.direct = SimulateClassKinematics(direct, g, tc, ContactModel::Hertz, &SolveWheelContact);
+  r.fastsim = SimulateClassKinematicsWithLut(fastsim, g, tc, ContactModel::Hertz, table);
+  r.polach = SimulateClassKinematicsWithLut(polach, g, tc, ContactModel::Hertz, table);
+  EXPECT_TRUE(r.direct.failure.empty()) << r.direct.failure;
+  EXPECT_TRUE(r.fastsim.failure.empty()) << r.fastsim.failure;
+  EXPECT_TRUE(r.polach.failure.empty()) << r.polach.failure;
+  return r;
+}
+
 // R 300 m at 54 km/h with 40 mm cant: the leading wheelset runs in flange contact (two-point contact on the outer
 // wheel, the table's hardest region), the trailing one on the tread. Perfect track: the samples are the steady
 // curving state.
 TEST(DynamicKinematicsLut, CurveClassMatchesTheDirectContact) {
   const std::string keys = "duration_s: 0.2, settle_s: 0.4, sample_interval_s: 0.05, irregularity: none";
-  const Scenario direct = ParseScenario(ScenarioText("{" + keys + "}", "300"), "test");
-  const Scenario fastsim = ParseScenario(ScenarioText("{" + keys + ", contact: lut, lut_creep: fastsim}", "300"), "test");
-  const Scenario polach = ParseScenario(ScenarioText("{" + keys + ", contact: lut}", "300"), "test");
-  const WheelsetTrackGeometry g(direct.MakeTrackSetup());
-  const TrackClass& tc = direct.classes[0];
-  const auto table = BuildDynamicKinematicsLut(fastsim, g, ContactModel::Hertz);
-  const DynamicClassKinematics d = SimulateClassKinematics(direct, g, tc, ContactModel::Hertz, &SolveWheelContact);
-  const DynamicClassKinematics f = SimulateClassKinematicsWithLut(fastsim, g, tc, ContactModel::Hertz, table);
-  const DynamicClassKinematics p = SimulateClassKinematicsWithLut(polach, g, tc, ContactModel::Hertz, table);
-  ASSERT_TRUE(d.failure.empty()) << d.failure;
-  ASSERT_TRUE(f.failure.empty()) << f.failure;
-  ASSERT_TRUE(p.failure.empty()) << p.failure;
+  const ThreeRuns r = RunThreeWays(keys, "300", "40");
+  ASSERT_FALSE(HasFailure());
+  const DynamicClassKinematics &d = r.direct, &f = r.fastsim, &p = r.polach;
   EXPECT_LT(d.series.samples.front().pose.lateral_m, -5e-3) << "the leading wheelset is expected at its flange";
   const Difference df = Compare(d.series, f.series), dp = Compare(d.series, p.series);
   std::printf("curve R300: LUT+fastsim vs direct max |dy| %.4f mm, |dpsi| %.4f mrad; LUT+polach %.4f mm, %.4f mrad\n",
@@ -90,18 +104,9 @@ TEST(DynamicKinematicsLut, CurveClassMatchesTheDirectContact) {
 TEST(DynamicKinematicsLut, TangentClassWithIrregularityMatchesTheDirectContact) {
   const std::string keys = "duration_s: 0.4, settle_s: 0.2, sample_interval_s: 0.02, "
                            "irregularity: {spectrum: ore_b176_high, seed: 7}";
-  const Scenario direct = ParseScenario(ScenarioText("{" + keys + "}", "0", "0"), "test");
-  const Scenario fastsim = ParseScenario(ScenarioText("{" + keys + ", contact: lut, lut_creep: fastsim}", "0", "0"), "test");
-  const Scenario polach = ParseScenario(ScenarioText("{" + keys + ", contact: lut}", "0", "0"), "test");
-  const WheelsetTrackGeometry g(direct.MakeTrackSetup());
-  const TrackClass& tc = direct.classes[0];
-  const auto table = BuildDynamicKinematicsLut(fastsim, g, ContactModel::Hertz);
-  const DynamicClassKinematics d = SimulateClassKinematics(direct, g, tc, ContactModel::Hertz, &SolveWheelContact);
-  const DynamicClassKinematics f = SimulateClassKinematicsWithLut(fastsim, g, tc, ContactModel::Hertz, table);
-  const DynamicClassKinematics p = SimulateClassKinematicsWithLut(polach, g, tc, ContactModel::Hertz, table);
-  ASSERT_TRUE(d.failure.empty()) << d.failure;
-  ASSERT_TRUE(f.failure.empty()) << f.failure;
-  ASSERT_TRUE(p.failure.empty()) << p.failure;
+  const ThreeRuns r = RunThreeWays(keys, "0", "0");
+  ASSERT_FALSE(HasFailure());
+  const DynamicClassKinematics &d = r.direct, &f = r.fastsim, &p = r.polach;
   double lo = 1e300, hi = -1e300;
   for (const KinematicsSample& k : d.series.samples) lo = std::min(lo, k.pose.lateral_m), hi = std::max(hi, k.pose.lateral_m);
   const Difference df = Compare(d.series, f.series), dp = Compare(d.series, p.series);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -253,26 +254,20 @@ TEST(PolachCreepForce, BadInputNamesTheField) {
       EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
     }
   };
+  const std::pair<const char*, double PolachInput::*> fields[] = {
+      {"a_m", &PolachInput::a_m},
+      {"b_m", &PolachInput::b_m},
+      {"normal_force_N", &PolachInput::normal_force_N},
+      {"friction_coefficient", &PolachInput::friction_coefficient},
+      {"adhesion_reduction", &PolachInput::adhesion_reduction},
+      {"slip_reduction", &PolachInput::slip_reduction}};
   for (double bad : {0.0, -1.0, nan}) {
+    for (const auto& [name, field] : fields) {
+      PolachInput in = Contact(1.0, 1e-3);
+      in.*field = bad;
+      expect_error(in, name);
+    }
     PolachInput in = Contact(1.0, 1e-3);
-    in.a_m = bad;
-    expect_error(in, "a_m");
-    in = Contact(1.0, 1e-3);
-    in.b_m = bad;
-    expect_error(in, "b_m");
-    in = Contact(1.0, 1e-3);
-    in.normal_force_N = bad;
-    expect_error(in, "normal_force_N");
-    in = Contact(1.0, 1e-3);
-    in.friction_coefficient = bad;
-    expect_error(in, "friction_coefficient");
-    in = Contact(1.0, 1e-3);
-    in.adhesion_reduction = bad;
-    expect_error(in, "adhesion_reduction");
-    in = Contact(1.0, 1e-3);
-    in.slip_reduction = bad;
-    expect_error(in, "slip_reduction");
-    in = Contact(1.0, 1e-3);
     in.material.shear_modulus_Pa = bad;
     expect_error(in, "shear_modulus_Pa");
   }
