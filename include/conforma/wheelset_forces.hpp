@@ -31,9 +31,10 @@ using WheelContactFunction = std::function<WheelContactReport(const WheelsetTrac
 using RigidPoseFunction =
     std::function<EquilibriumResult(const WheelsetTrackGeometry&, double y_m, double psi_rad, const EquilibriumOptions&)>;
 
-// The rigid equilibrium by `pose` or, when empty, by the geometry's own solve.
+// The rigid equilibrium by `pose` or, when empty, by the geometry's own solve started from `guess` (a pose function
+// needs no start).
 EquilibriumResult SolveRigidPose(const WheelsetTrackGeometry& geometry, const RigidPoseFunction& pose, double y_m,
-                                 double psi_rad, const EquilibriumOptions& options);
+                                 double psi_rad, const EquilibriumOptions& options, const WheelsetPose& guess = {});
 
 struct WheelsetContactForces {
   bool ok = false;                           // equilibrium converged and both wheels' contact status Ok

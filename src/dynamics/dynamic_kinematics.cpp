@@ -166,10 +166,9 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
       // the rigid equilibrium the run's contact saw: the given pose function's (a table's), else the rigid solve
       // warm-started from the previous sample; that start can put the roll search on the wrong side of a contact
       // jump: from the neutral start then, as the run's own contact evaluation does (wheelset_forces.cpp)
-      EquilibriumResult eq = pose ? SolveRigidPose(g, pose, y - track.alignment(s), psi - slope, eo)
-                                  : g.SolveRigidEquilibrium(y - track.alignment(s), psi - slope, guess[j], eo);
+      EquilibriumResult eq = SolveRigidPose(g, pose, y - track.alignment(s), psi - slope, eo, guess[j]);
       if (!pose && eq.status != EquilibriumStatus::Converged)
-        eq = g.SolveRigidEquilibrium(y - track.alignment(s), psi - slope, WheelsetPose{}, eo);
+        eq = SolveRigidPose(g, pose, y - track.alignment(s), psi - slope, eo);
       if (eq.status != EquilibriumStatus::Converged) {
         out.failure = "no rigid equilibrium of wheelset " + std::to_string(j) + " at t = " + std::to_string(h.time_s) + " s";
         out.series.samples.clear();

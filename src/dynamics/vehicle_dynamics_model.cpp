@@ -184,8 +184,7 @@ WheelsetDynamicsForces VehicleDynamicsModel::WheelsetForces(const Eigen::VectorX
     const double h = 1e-5;
     EquilibriumOptions eo;
     eo.max_touching_contact_angle_rad = options_.contact.max_touching_contact_angle_rad;
-    const EquilibriumResult eq = pose_ ? pose_(*geometry_, y_r + h, psi_r, eo)
-                                       : geometry_->SolveRigidEquilibrium(y_r + h, psi_r, f.pose, eo);
+    const EquilibriumResult eq = SolveRigidPose(*geometry_, pose_, y_r + h, psi_r, eo, f.pose);
     if (eq.status == EquilibriumStatus::Converged)
       out.gyroscopic_moment_Nm = -vehicle_.wheelset_spin_inertia_kgm2 * Omega * (eq.pose.roll_rad - f.pose.roll_rad) / h * yd_r;
   }

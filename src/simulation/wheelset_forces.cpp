@@ -6,9 +6,9 @@
 namespace conforma {
 
 EquilibriumResult SolveRigidPose(const WheelsetTrackGeometry& geometry, const RigidPoseFunction& pose, double y_m,
-                                 double psi_rad, const EquilibriumOptions& options) {
+                                 double psi_rad, const EquilibriumOptions& options, const WheelsetPose& guess) {
   if (pose) return pose(geometry, y_m, psi_rad, options);
-  return geometry.SolveRigidEquilibrium(y_m, psi_rad, WheelsetPose{}, options);
+  return geometry.SolveRigidEquilibrium(y_m, psi_rad, guess, options);
 }
 
 WheelsetContactForces EvaluateWheelsetContactForces(const WheelsetTrackGeometry& geometry,
