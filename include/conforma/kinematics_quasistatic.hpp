@@ -192,4 +192,12 @@ inline QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicl
 // Curvature 1/R of a class (0 for tangent track: radius 0 or infinite).
 double TrackClassCurvature(const TrackClass& track_class);
 
+// Unbalanced lateral acceleration a_nc of a class in the track plane, + towards the curve centre (+y for c > 0):
+// V^2 c - g h sign(c) / cant_base (docs/physics-reference.md §12.1).
+double TrackClassUnbalancedAcceleration(const TrackClass& track_class, double gravity_m_s2, double cant_base_m);
+
+// Quasi-static lateral load transfer per wheel under a_nc: m a_nc h / (2 b0) (vehicle.hpp; the outer wheel, -y side
+// for a_nc > 0, carries Q0 + dQ).
+double WheelLoadTransferN(const VehicleParameters& vehicle, double unbalanced_acceleration_m_s2);
+
 }  // namespace conforma

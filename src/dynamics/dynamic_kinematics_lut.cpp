@@ -57,15 +57,13 @@ ContactLutGrid DynamicKinematicsLutGrid(const Scenario& sc, const WheelsetTrackG
   // lateral: up to the flange contact of either wheel + 3 mm
   const double y_flange = std::max(std::fabs(FlangeContactShift(g, 1.0, qo.flange_contact_angle_rad)),
                                    std::fabs(FlangeContactShift(g, -1.0, qo.flange_contact_angle_rad)));
-  // yaw and loads over the classes: a |c| + 5 mrad; Q0 -/+ m |a_nc| h / (2 b0) (vehicle_dynamics_model.cpp)
+  // yaw and loads over the classes: a |c| + 5 mrad; Q0 -/+ the largest load transfer
   const double Q0 = v.static_wheel_load_N(qo.gravity_m_s2);
   double c_max = 0.0, dQ_max = 0.0;
   for (const TrackClass& tc : sc.classes) {
-    const double c = TrackClassCurvature(tc);
-    const double a_nc = tc.speed_m_s * tc.speed_m_s * c - qo.gravity_m_s2 * (c > 0 ? tc.cant_m : -tc.cant_m) / qo.cant_base_m;
-    c_max = std::max(c_max, std::fabs(c));
-    dQ_max = std::max(dQ_max, std::fabs(v.carried_mass_per_wheelset_kg() * a_nc * v.load_transfer_height_m /
-                                        (2.0 * v.contact_half_distance_m)));
+    c_max = std::max(c_max, std::fabs(TrackClassCurvature(tc)));
+    const double a_nc = TrackClassUnbalancedAcceleration(tc, qo.gravity_m_s2, qo.cant_base_m);
+    dQ_max = std::max(dQ_max, std::fabs(WheelLoadTransferN(v, a_nc)));
   }
   if (!(Q0 - dQ_max > 0.0))
     throw InputError("dynamic provider with contact: lut: a wheel is unloaded by the load transfer of a class");

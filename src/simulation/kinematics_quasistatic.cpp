@@ -44,6 +44,17 @@ double TrackClassCurvature(const TrackClass& c) {
   return 1.0 / c.curve_radius_m;
 }
 
+double TrackClassUnbalancedAcceleration(const TrackClass& track_class, double gravity_m_s2, double cant_base_m) {
+  const double c = TrackClassCurvature(track_class);
+  const double sign_c = c > 0.0 ? 1.0 : c < 0.0 ? -1.0 : 0.0;
+  return track_class.speed_m_s * track_class.speed_m_s * c - gravity_m_s2 * track_class.cant_m * sign_c / cant_base_m;
+}
+
+double WheelLoadTransferN(const VehicleParameters& vehicle, double unbalanced_acceleration_m_s2) {
+  return vehicle.carried_mass_per_wheelset_kg() * unbalanced_acceleration_m_s2 * vehicle.load_transfer_height_m /
+         (2.0 * vehicle.contact_half_distance_m);
+}
+
 namespace {
 
 constexpr int kUnknowns = 8;  // y0 [mm], psi0 [mrad], w0 [1e-3], y1, psi1, w1, y_b [mm], psi_b [mrad]
@@ -338,11 +349,8 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
                        " m) differs from the track set-up's nominal wheel radius (" + std::to_string(r) + " m)");
   const double c = TrackClassCurvature(track_class);
   const double g = options.gravity_m_s2;
-  const double sign_c = c > 0.0 ? 1.0 : c < 0.0 ? -1.0 : 0.0;
   QuasiStaticResult result;
-  // a_nc: unbalanced lateral acceleration in the track plane, + towards the curve centre (+y for c > 0)
-  result.unbalanced_acceleration_m_s2 = track_class.speed_m_s * track_class.speed_m_s * c -
-                                        g * track_class.cant_m * sign_c / options.cant_base_m;
+  result.unbalanced_acceleration_m_s2 = TrackClassUnbalancedAcceleration(track_class, g, options.cant_base_m);
 
   BogieContext base;
   base.geometry = &geometry;
@@ -358,8 +366,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
   base.Q0 = vehicle.static_wheel_load_N(g);
   base.axle_torque_Nm = options.axle_torque_Nm + track_class.axle_torque_Nm;
   // load transfer: the outer wheel (-y side for a_nc > 0) carries more
-  const double dQ = vehicle.carried_mass_per_wheelset_kg() * result.unbalanced_acceleration_m_s2 *
-                    vehicle.load_transfer_height_m / (2.0 * vehicle.contact_half_distance_m);
+  const double dQ = WheelLoadTransferN(vehicle, result.unbalanced_acceleration_m_s2);
   base.Q = {base.Q0 - dQ, base.Q0 + dQ};
   if (base.Q[0] <= 0.0 || base.Q[1] <= 0.0) {
     result.status = QuasiStaticStatus::NoContact;  // a wheel is unloaded: overturning, not a steady curving case
