@@ -167,5 +167,8 @@ void SolveFastsimHertz(const FastsimHertzInput& input, const FastsimOptions& opt
 // flexibilities (Kalker's three, blended at input.friction_coefficient when options.blend_flexibilities).
 void BuildFastsimHertzPatch(const FastsimHertzInput& input, const FastsimOptions& options, FastsimPatch* patch);
 FastsimFlexibilities FastsimHertzFlexibilities(const FastsimHertzInput& input, const FastsimOptions& options);
+// The same with KalkerCoefficients(a_m / b_m, material.poisson_ratio) already at hand.
+FastsimFlexibilities FastsimHertzFlexibilities(const FastsimHertzInput& input, const FastsimOptions& options,
+                                               const CreepCoefficients& coefficients);
 
 }  // namespace conforma

@@ -55,5 +55,8 @@ struct PolachResult {
 // 0 < k_S <= k_A <= 1 (Polach 2005's range; k_S > k_A would let F exceed mu N), a non-finite creepage, or a material
 // Material::validate rejects. The reductions scale the creep part only; the spin part F_yS is the 1999 form (§7.3).
 PolachResult SolvePolachCreepForce(const PolachInput& input);
+// The same with Kalker's coefficients of the input's ellipse already at hand (KalkerCoefficients(a_m / b_m,
+// material.poisson_ratio)), for a caller that needs them too (the look-up table's centre shift): not computed twice.
+PolachResult SolvePolachCreepForce(const PolachInput& input, const CreepCoefficients& coefficients);
 
 }  // namespace conforma

@@ -88,8 +88,12 @@ void BuildFastsimHertzPatch(const FastsimHertzInput& input, const FastsimOptions
 }
 
 FastsimFlexibilities FastsimHertzFlexibilities(const FastsimHertzInput& input, const FastsimOptions& options) {
+  return FastsimHertzFlexibilities(input, options, KalkerCoefficients(input.a_m / input.b_m, input.material.poisson_ratio));
+}
+
+FastsimFlexibilities FastsimHertzFlexibilities(const FastsimHertzInput& input, const FastsimOptions& options,
+                                               const CreepCoefficients& coefficients) {
   const double a = input.a_m, b = input.b_m;
-  const CreepCoefficients coefficients = KalkerCoefficients(a / b, input.material.poisson_ratio);
   FastsimFlexibilities flexibilities = KalkerFlexibilities(a, b, coefficients, input.material.shear_modulus_Pa);
   if (options.blend_flexibilities)
     flexibilities = BlendedFlexibilities(flexibilities, a, b, coefficients, input.material.shear_modulus_Pa,

@@ -31,7 +31,10 @@ double SpinFactor(double eps) {
 
 }  // namespace
 
-PolachResult SolvePolachCreepForce(const PolachInput& input) {
+namespace {
+
+// given: Kalker's coefficients of the input's ellipse, or null to compute them here
+PolachResult Solve(const PolachInput& input, const CreepCoefficients* given) {
   require_positive(input.a_m, "Polach a_m");
   require_positive(input.b_m, "Polach b_m");
   require_positive(input.normal_force_N, "Polach normal_force_N");
@@ -64,7 +67,7 @@ PolachResult SolvePolachCreepForce(const PolachInput& input) {
   const double sc = std::hypot(sx, syc);
   if (!(sc > 0.0)) return r;  // only when psi a underflows to 0 with s_x = s_y = 0: the forces underflow too
 
-  const CreepCoefficients c = KalkerCoefficients(a / b, input.material.poisson_ratio);
+  const CreepCoefficients c = given ? *given : KalkerCoefficients(a / b, input.material.poisson_ratio);
   const double s = std::hypot(sx, sy);
   double force = 0.0;  // Polach's F >= 0, the creep force of s_x, s_y (no spin part), along the creepage
   if (s > 0.0) {
@@ -88,6 +91,14 @@ PolachResult SolvePolachCreepForce(const PolachInput& input) {
   }
   r.frictional_power_per_speed_N = -(r.fx_N * sx + r.fy_N * sy);
   return r;
+}
+
+}  // namespace
+
+PolachResult SolvePolachCreepForce(const PolachInput& input) { return Solve(input, nullptr); }
+
+PolachResult SolvePolachCreepForce(const PolachInput& input, const CreepCoefficients& coefficients) {
+  return Solve(input, &coefficients);
 }
 
 }  // namespace conforma

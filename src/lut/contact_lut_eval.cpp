@@ -305,7 +305,8 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
 // Polach's creep forces (polach_creep_force.hpp) on the patch's ellipse with FASTSIM's input (creepages already moved
 // to the ellipse centre, in.creepages); the force acts at the ellipse centre: its moment about the reference point
 // as for FASTSIM's forces below.
-void SolvePolachOnEllipse(const LutPatch& q, const FastsimHertzInput& in, double V, PatchReport* p) {
+void SolvePolachOnEllipse(const LutPatch& q, const FastsimHertzInput& in, const CreepCoefficients& coefficients,
+                          double V, PatchReport* p) {
   PolachInput pi;
   pi.a_m = in.a_m;
   pi.b_m = in.b_m;
@@ -313,7 +314,7 @@ void SolvePolachOnEllipse(const LutPatch& q, const FastsimHertzInput& in, double
   pi.friction_coefficient = in.friction_coefficient;
   pi.creepages = in.creepages;
   pi.material = in.material;
-  const PolachResult r = SolvePolachCreepForce(pi);
+  const PolachResult r = SolvePolachCreepForce(pi, coefficients);
   p->tangential_status = "ok";
   p->fx_N = r.fx_N;
   p->fy_N = r.fy_N;
@@ -344,15 +345,20 @@ void SolveCreep(const LutPatch& q, const Creepages& cr, const double* u, double 
   in.material = options.material;
   in.nx = in.ny = options.fastsim_elements;
   in.rolling_speed_m_per_s = V;
+  // Polach needs Kalker's coefficients of the ellipse, and so does the centre shift below: computed once
+  const bool polach = law == LutCreepForce::Polach;
+  CreepCoefficients kalker;
+  if (polach) kalker = KalkerCoefficients(in.a_m / in.b_m, in.material.poisson_ratio);
   if (q.centre_x_m != 0.0 || q.centre_s_m != 0.0) {
     // creepages at the ellipse centre (x_c, s_c) such that FASTSIM's rigid slip (xi - phi y L1/L3,
     // eta + phi x L2/L3; docs/physics-reference.md §2.4) equals the one about the reference point
-    const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+    const FastsimFlexibilities L = polach ? FastsimHertzFlexibilities(in, options.fastsim, kalker)
+                                          : FastsimHertzFlexibilities(in, options.fastsim);
     in.creepages.xi -= cr.spin_per_m * q.centre_s_m * L.L1 / L.L3;
     in.creepages.eta += cr.spin_per_m * q.centre_x_m * L.L2 / L.L3;
   }
-  if (law == LutCreepForce::Polach) {
-    SolvePolachOnEllipse(q, in, V, p);
+  if (polach) {
+    SolvePolachOnEllipse(q, in, kalker, V, p);
     return;
   }
   FastsimResult t;
