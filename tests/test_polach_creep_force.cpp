@@ -39,6 +39,18 @@ CreepCoefficients Coefficients(const PolachInput& in) {
   return KalkerCoefficients(in.a_m / in.b_m, in.material.poisson_ratio);
 }
 
+// FASTSIM's input for the same contact (ellipse, load, friction, creepages, material).
+FastsimHertzInput FastsimInputOf(const PolachInput& in) {
+  FastsimHertzInput f;
+  f.a_m = in.a_m;
+  f.b_m = in.b_m;
+  f.normal_force_N = in.normal_force_N;
+  f.friction_coefficient = in.friction_coefficient;
+  f.creepages = in.creepages;
+  f.material = in.material;
+  return f;
+}
+
 // Kalker's linear theory (§2.1) on the wheel.
 double KalkerFx(const PolachInput& in) {
   return -in.material.shear_modulus_Pa * in.a_m * in.b_m * Coefficients(in).c11 * in.creepages.xi;
@@ -310,14 +322,7 @@ Comparison Compare(double ab, double psi_n) {
       PolachInput in = base;
       in.creepages = {s * std::cos(t), s * std::sin(t), phi};
       const PolachResult p = SolvePolachCreepForce(in);
-      FastsimHertzInput fin;
-      fin.a_m = in.a_m;
-      fin.b_m = in.b_m;
-      fin.normal_force_N = in.normal_force_N;
-      fin.friction_coefficient = in.friction_coefficient;
-      fin.creepages = in.creepages;
-      fin.material = in.material;
-      const FastsimResult f = SolveFastsimHertz(fin, FastsimOptions{});
+      const FastsimResult f = SolveFastsimHertz(FastsimInputOf(in), FastsimOptions{});
       const double dabs = std::abs(std::hypot(p.fx_N, p.fy_N) - std::hypot(f.fx_N, f.fy_N)) / muN;
       const double dvec = std::hypot(p.fx_N - f.fx_N, p.fy_N - f.fy_N) / muN;
       out.max_abs = std::max(out.max_abs, dabs);
@@ -368,13 +373,7 @@ TEST(PolachCreepForce, AgainstFastsimLargeSpin) {
     const CreepCoefficients c = Coefficients(in);
     const double c2 = in.a_m * in.b_m, muN = in.friction_coefficient * in.normal_force_N;
     in.creepages.phi_per_m = muN / (in.material.shear_modulus_Pa * c2 * std::sqrt(c2) * c.c23);
-    FastsimHertzInput fin;
-    fin.a_m = in.a_m;
-    fin.b_m = in.b_m;
-    fin.normal_force_N = in.normal_force_N;
-    fin.friction_coefficient = in.friction_coefficient;
-    fin.creepages = in.creepages;
-    const double fp = SolvePolachCreepForce(in).fy_N, ff = SolveFastsimHertz(fin, FastsimOptions{}).fy_N;
+    const double fp = SolvePolachCreepForce(in).fy_N, ff = SolveFastsimHertz(FastsimInputOf(in), FastsimOptions{}).fy_N;
     std::printf("  pure spin psi_n 1: F_y/(mu N) Polach %.4f FASTSIM %.4f\n", fp / muN, ff / muN);
     EXPECT_LT(std::abs(fp - ff) / muN, 0.25);
     EXPECT_LT(std::abs(fp), muN);
