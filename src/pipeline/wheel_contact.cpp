@@ -187,10 +187,12 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
 // Stage 1: candidates, model per patch, normal problem (load control); with total-force load control also the
 // tangential problem at every push-down (NormalStage::coupled). In load control the candidates are found for
 // candidate_load_N (the wheel load, or the fixed point's load of LoadBalance::TotalConsistent, SolveNormalStage);
-// the load control balances options.vertical_load_N. Options validated by the caller.
+// the load control balances options.vertical_load_N. start_vertical_m (total-force balance only): the wheel's vertical
+// position where the direct total-force balance (step 0 of §3.6.1) starts; NaN: the candidates' Hertz push-down.
+// Options validated by the caller.
 NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
                                 const WheelsetVelocity& velocity, const WheelContactOptions& options,
-                                double candidate_load_N) {
+                                double candidate_load_N, double start_vertical_m = std::nan("")) {
   NormalStage stage;
   WheelContactReport& report = stage.report;
   report.side = side;
@@ -362,6 +364,8 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
       // first: accepted when it converges (Ok); otherwise (F_z <= 0 there, no rising bracket, a jump over the
       // load) the two phases below decide, from the pressure-balanced push.
       stage.finished = false;
+      // (TotalConsistent's later candidate searches start at the last solution: §3.6.1 step 4)
+      if (std::isfinite(start_vertical_m)) base_push = candidates_pose.vertical_m - start_vertical_m;
       const double total_at_hertz = total_at(0.0);
       LoadControlResult direct;
       if (total_at_hertz > 0.0) direct = solve_total_from_base(total_at_hertz);
@@ -375,7 +379,7 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
         return stage;
       }
       report.pose = candidates_pose;
-      best_push = 0.0, best_error = 1e300;
+      base_push = 0.0, best_push = 0.0, best_error = 1e300;
     }
     // Phase 1, the one load control (load_control.hpp) on the pressure forces alone (monotone in the push: every
     // patch's approach grows with it): the Hertz push-down of the candidates is close, so the first bracket is the
@@ -468,6 +472,8 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   double previous_load = 0.0, previous_g = 0.0;
   bool has_previous = false, converged = std::fabs(g) <= tolerance;
   double failed_load = 0.0;  // > 0: the last trial load, whose total balance failed
+  // where the next total balance starts: the last balanced solution (the push changes little with the candidates)
+  double start_vertical_m = best.coupled->pose.vertical_m;
   bool bisect = false;       // the last bracketed step shrank the bracket by less than half
   std::optional<IllinoisBracket> bracket;  // root_finding.hpp: a sign change of g
   while (!converged && searches < kMaxCandidateSearches) {
@@ -485,7 +491,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       if (std::isfinite(slope) && slope < 0.0) next = load - g / slope;
     }
     if (!(next > 0.0 && std::isfinite(next))) break;  // no positive load for the candidates: not converged
-    NormalStage trial = SolveNormalStageFor(geometry, side, pose, velocity, options, next);
+    NormalStage trial = SolveNormalStageFor(geometry, side, pose, velocity, options, next, start_vertical_m);
     ++searches;
     evaluations += trial.report.load_iterations;
     if (!balanced(trial)) {
@@ -493,6 +499,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       continue;
     }
     failed_load = 0.0;
+    start_vertical_m = trial.coupled->pose.vertical_m;
     const double g_next = residual(trial);
     if (bracket) {
       const double width = std::fabs(bracket->high() - bracket->low());
