@@ -181,6 +181,34 @@ TEST(ConsistentCandidates, HertzPressureAndApproachModeAreUnchanged) {
   EXPECT_EQ(n.candidate_load_N, 45.4e3);
 }
 
+// Where a patch appears with the candidates' load, P(L) jumps over L and there is no fixed point: a sample of the
+// conformal table's lut check (§17.5, seed 2: right wheel, y -5.88 mm, yaw 7.11 mrad, 54.1 kN, P jumps from 58.4 to
+// 57.3 kN at L = 57.44 kN). Never silent: not_converged with the warning, the iterate nearest to a fixed point
+// reported, which still carries Q in total (so the wear loop takes it as approximate).
+TEST(ConsistentCandidates, NoFixedPointIsNotConvergedWithAWarning) {
+  WheelsetPose pose;  // the lut check sample's rigid equilibrium
+  pose.lateral_m = -0.0058785325527768093;
+  pose.yaw_rad = 0.0071082848624362052;
+  pose.vertical_m = -0.00014714690538635282;
+  pose.roll_rad = -0.00018598162809840762;
+  const WheelsetVelocity v{10.0, -0.0068276868529075574, 0.043677091764444391, 28.154383113512633};
+  const double Q = 54068.556325772879;
+  const WheelContactReport r = SolveWheelContact(Track(), Side::Right, pose, v, Options(LoadBalance::TotalConsistent, Q));
+  EXPECT_EQ(r.status, WheelContactStatus::NotConverged);
+  ASSERT_FALSE(r.patches.empty());
+  EXPECT_NEAR(r.vertical_force_N, Q, 10 * kDefaultLoadTolerance * Q);
+  const double g = r.pressure_vertical_force_N - r.candidate_load_N;
+  std::printf("no fixed point: L %.1f N, P %.1f N (g %.2e Q), %d candidate searches\n", r.candidate_load_N,
+              r.pressure_vertical_force_N, g / Q, r.candidate_searches);
+  EXPECT_GT(std::fabs(g), kCandidateLoadTolerance * Q);
+  EXPECT_LT(std::fabs(g), 1e-2 * Q);  // the iterate next to the jump, not the first one (g 8 % of Q there)
+  EXPECT_GT(r.candidate_searches, 2);
+  EXPECT_LE(r.candidate_searches, 16);
+  bool warned = false;
+  for (const std::string& w : r.warnings) warned |= w.rfind("candidates_not_consistent", 0) == 0;
+  EXPECT_TRUE(warned);
+}
+
 TEST(ConsistentCandidates, LoadBalanceNames) {
   for (LoadBalance b : {LoadBalance::Total, LoadBalance::Pressure, LoadBalance::TotalConsistent})
     EXPECT_EQ(ParseLoadBalance(to_string(b)), b);
