@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "conforma/error.hpp"
 #include "conforma/geometry.hpp"
@@ -207,6 +208,43 @@ TEST(ConsistentCandidates, NoFixedPointIsNotConvergedWithAWarning) {
   bool warned = false;
   for (const std::string& w : r.warnings) warned |= w.rfind("candidates_not_consistent", 0) == 0;
   EXPECT_TRUE(warned);
+}
+
+// Where the total balance with the candidates for Q fails (no contact; a creep force pulling the wheel down its
+// flange with mu tan(delta) > 1, §3.6.1 step 2) there is no P to start the fixed point from: reported exactly as with
+// Total.
+TEST(ConsistentCandidates, FailedTotalBalanceIsReportedAsWithTotal) {
+  int failed = 0;
+  struct Case {
+    WheelsetPose pose;
+    WheelsetVelocity velocity;
+    double mu;
+  };
+  std::vector<Case> cases;
+  for (double yaw : {-6.38e-3, 6.38e-3})
+    for (double vy : {-0.05, 0.05})
+      for (double mu : {0.3, 0.9}) cases.push_back({RigidPose(6.533e-3, yaw), {10.0, vy, 0.0, 10.0 / kR0}, mu});
+  WheelsetPose off_rail;  // the wheel beside the rail: no contact
+  off_rail.lateral_m = 0.2;
+  cases.push_back({off_rail, kRolling, 0.3});
+  for (const Case& c : cases) {
+    WheelContactOptions o = Options(LoadBalance::Total, 45.4e3);
+    o.friction_coefficient = c.mu;
+    const WheelContactReport t = SolveWheelContact(Track(), Side::Left, c.pose, c.velocity, o);
+    o.load_balance = LoadBalance::TotalConsistent;
+    const WheelContactReport r = SolveWheelContact(Track(), Side::Left, c.pose, c.velocity, o);
+    std::printf("y %.1f mm yaw %+.2f mrad vy %+.2f mu %.1f: total %s, total-consistent %s (%d searches)\n",
+                c.pose.lateral_m * 1e3, c.pose.yaw_rad * 1e3, c.velocity.lateral_velocity_m_s, c.mu,
+                to_string(t.status), to_string(r.status), r.candidate_searches);
+    if (t.status == WheelContactStatus::Ok) continue;
+    ++failed;
+    EXPECT_EQ(r.status, t.status);
+    EXPECT_EQ(r.candidate_searches, t.candidate_searches);
+    EXPECT_EQ(r.vertical_force_N, t.vertical_force_N);
+    EXPECT_EQ(r.pressure_vertical_force_N, t.pressure_vertical_force_N);
+    EXPECT_EQ(r.patches.size(), t.patches.size());
+  }
+  EXPECT_GE(failed, 2);  // the no-contact wheel and at least one flange case
 }
 
 TEST(ConsistentCandidates, LoadBalanceNames) {

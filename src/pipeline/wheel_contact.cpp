@@ -466,6 +466,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   auto residual = [](const NormalStage& s) { return s.coupled->pressure_vertical_force_N - s.report.candidate_load_N; };
   NormalStage best = SolveNormalStageFor(geometry, side, pose, velocity, options, Q);
   // the total balance with the candidates for Q failed (or no contact): reported as with Total
+  if (!balanced(best)) return best;
   const double tolerance = std::max(options.load_tolerance, kCandidateLoadTolerance) * Q;
   int searches = 1, evaluations = best.report.load_iterations;
   double load = Q, g = residual(best), best_g = g;  // the last load whose total balance succeeded, and its g
