@@ -115,6 +115,7 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("profiles: {rail: /nonexistent/rail.prr}\n") + kClasses, "rail.prr");
   ExpectError(std::string("load_tolerance: 0\n") + kClasses, "load_tolerance");
   ExpectError(std::string("load_acceptance: -0.1\n") + kClasses, "load_acceptance");
+  ExpectError(std::string("load_balance: consistent\n") + kClasses, "load_balance");
 }
 
 TEST(Scenario, MinimalFileTakesTheDefaults) {
@@ -126,6 +127,9 @@ TEST(Scenario, MinimalFileTakesTheDefaults) {
   EXPECT_FALSE(s.kinematics.contact_model_set);  // the curving solve uses the wear step's model
   EXPECT_NEAR(s.load_tolerance, 1e-6, 0.0);         // WheelContactOptions' default
   EXPECT_NEAR(s.load_acceptance, 0.10, 0.0);        // StepWearOptions' default
+  EXPECT_EQ(s.load_balance, LoadBalance::Total);    // WheelContactOptions' default
+  EXPECT_EQ(ParseScenario(std::string("load_balance: total-consistent\n") + kClasses, "c.yaml").load_balance,
+            LoadBalance::TotalConsistent);
 }
 
 TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {

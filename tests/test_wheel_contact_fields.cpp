@@ -288,7 +288,7 @@ TEST(WheelContactFields, CachedEqualsUncachedForPosesModelsAndVelocities) {
   WheelContactCache cache;
   // pressure balance: the normal stage is reused for another axle speed; total balance (it holds the tangential
   // solution): keyed by the whole report
-  for (LoadBalance balance : {LoadBalance::Pressure, LoadBalance::Total})
+  for (LoadBalance balance : {LoadBalance::Pressure, LoadBalance::Total, LoadBalance::TotalConsistent})
   for (ContactModel m : {ContactModel::Hertz, ContactModel::Kpec, ContactModel::Conformal, ContactModel::Auto}) {
     WheelContactOptions o;
     o.model = m;

@@ -75,6 +75,7 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
   contact.creepages_given = options.creepages_from_file;
   contact.kp_spin_about_patch_centre = options.kp_spin_about_patch_centre;
   contact.kp_local_flexibilities = options.kp_local_flexibilities;
+  contact.load_balance = options.load_balance;
   std::vector<ManchesterComparison> out(cases.size());
   ProgressCounter progress(options.on_progress, static_cast<double>(cases.size()));
 #pragma omp parallel for schedule(dynamic)

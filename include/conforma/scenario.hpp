@@ -31,6 +31,8 @@
 //   load_tolerance: 1e-6                (optional: relative tolerance of every wheel's load control,
 //                                        WheelContactOptions::load_tolerance; a contact that misses it by more
 //                                        than 10x is not converged)
+//   load_balance: total                 (optional: total | pressure | total-consistent, WheelContactOptions::
+//                                        load_balance of the curving and wear solves, docs/physics-reference.md §3.6.1)
 //   load_acceptance: 0.10               (optional: a not converged wheel contact still gives wear when its carried
 //                                        load is within this fraction of the wheel load; else it is a failed one)
 //   wear_law: usfd | <wear-law file>    (wear_law.hpp; the same law for wheel and rail unless rail_wear_law given)
@@ -62,6 +64,7 @@
 #include "conforma/profile.hpp"
 #include "conforma/published_study.hpp"
 #include "conforma/track_irregularity_psd.hpp"
+#include "conforma/wheel_contact_options.hpp"
 #include "conforma/vehicle.hpp"
 #include "conforma/wear_distribution.hpp"
 
@@ -146,6 +149,8 @@ struct Scenario {
   double elastic_flange_angle_rad = 1e300;
   // load_tolerance: WheelContactOptions::load_tolerance of the curving and wear solves
   double load_tolerance = kDefaultLoadTolerance;
+  // load_balance: WheelContactOptions::load_balance of the curving and wear solves (default total)
+  LoadBalance load_balance = LoadBalance::Total;
   double load_acceptance = 0.10;  // load_acceptance: StepWearOptions::load_acceptance
   WearModel wear;
   ContactModel model = ContactModel::Conformal;

@@ -98,7 +98,8 @@ struct PatchReport {
 // interpenetration, the wheel does not face the rail, or vertical_load_N == 0). NotConverged: load control failed:
 // no load bracket (no patches reported), the load missed by more than 10x its tolerance (the last iterate's
 // patches reported), or (total-force balance) the creep forces pull the wheel down so that no push-down carries the
-// load, or its bracket was not found (the pressure-balanced solution reported; docs/physics-reference.md §3.6.1).
+// load, or its bracket was not found (the pressure-balanced solution reported; docs/physics-reference.md §3.6.1), or
+// (LoadBalance::TotalConsistent) the candidates' load found no fixed point (the solution nearest to one reported).
 enum class WheelContactStatus { Ok, NoContact, NotConverged };
 const char* to_string(WheelContactStatus status);  // "ok", "no_contact", "not_converged"
 
@@ -115,6 +116,12 @@ struct WheelContactReport {
   double pressure_vertical_force_N = 0.0;
   double lateral_force_N = 0.0;      // sum over patches (side frame eta, + towards the field side), N
   int load_iterations = 0;           // root-finder evaluations of the load control (total balance: §3.6.1); 0 in approach mode
+  // Load control: the load the contact candidates (the patches' interpenetration regions) were found for, N: the
+  // wheel load, or with LoadBalance::TotalConsistent the pressure forces' vertical load L of the fixed point
+  // (§3.6.1 step 4; 0 in approach mode and for an unloaded wheel), and the number of candidate searches made (1, or
+  // one per fixed-point iteration; 0 in approach mode and for an unloaded wheel)
+  double candidate_load_N = 0.0;
+  int candidate_searches = 0;
   // Plausibility warnings, one "code: message" line each (contact_plausibility.hpp): nominal radius far from the
   // profile's, friction outside 0.05-1, pressure above the material limit, load control not converged
   std::vector<std::string> warnings;

@@ -129,6 +129,8 @@ void VisitWheelReportFields(const WheelContactReport& r, Visitor&& v) {
   v("pressure_vertical_force_N", r.pressure_vertical_force_N);
   v("lateral_force_N", r.lateral_force_N);
   v("load_iterations", r.load_iterations);
+  v("candidate_load_N", r.candidate_load_N);
+  v("candidate_searches", r.candidate_searches);
   v("warnings", r.warnings);  // std::vector<std::string>
 }
 

@@ -28,8 +28,20 @@ constexpr double kMaxWheelLoadN = 1e7;
 //             evaluation solves the normal and the tangential problem at its push-down.
 //   Pressure: the vertical component of the pressure forces alone (WheelContactReport::pressure_vertical_force_N),
 //             the creep forces solved afterwards (the behaviour before issue 15; cheaper, wrong at a flange).
-enum class LoadBalance { Total, Pressure };
-const char* to_string(LoadBalance balance);             // "total", "pressure"
+//   TotalConsistent: the total balance of Total with the contact candidates (interpenetration regions -> patches)
+//             found for the load L the pressure forces carry at the solution (L = pressure_vertical_force_N, a fixed
+//             point in L, §3.6.1 step 4) instead of for the wheel load Q: the patches are those of the wheel where it
+//             actually stands, which at a flange with the creep force carrying part of the load lies far below the
+//             Hertz push-down for Q; the solution is then the pressure-balanced solve at L (the contact look-up
+//             table's node definition, §17.4) carrying Q in total. Costs one more candidate search and total
+//             balance per fixed-point iteration (the hertz model, whose patches do not depend on the candidates'
+//             load, is solved as with Total).
+enum class LoadBalance { Total, Pressure, TotalConsistent };
+// TotalConsistent: the fixed point stops at |P - L| <= max(load_tolerance, this) Q (§3.6.1 step 4). L enters the
+// solution only through the candidates' Hertz push-down (delta ~ L^(2/3)): 1e-4 Q moves the candidates' pose by
+// 7e-5 of the push-down (~10 nm at 0.1 mm), far below the 0.1 mm strips of the patches.
+constexpr double kCandidateLoadTolerance = 1e-4;
+const char* to_string(LoadBalance balance);             // "total", "pressure", "total-consistent"
 LoadBalance ParseLoadBalance(const std::string& name);  // InputError for another name
 
 // validate() throws InputError outside the ranges given below.
@@ -88,8 +100,8 @@ struct WheelContactOptions {
   // slip for the conformal model, and the velocity's forward speed need not be > 0).
   bool creepages_given = false;
   Creepages creepages;                 // xi, eta (-), phi (1/m); finite; read only with creepages_given
-  // Load control: what is balanced against vertical_load_N (see LoadBalance); default total. With Total (and
-  // solve_tangential) the normal problem depends on the velocity and the tangential options too.
+  // Load control: what is balanced against vertical_load_N (see LoadBalance); default total. With Total or
+  // TotalConsistent (and solve_tangential) the normal problem depends on the velocity and the tangential options too.
   LoadBalance load_balance = LoadBalance::Total;
   void validate() const;  // InputError naming the option
   // The law every FASTSIM uses: friction_law, or Constant(friction_coefficient) when friction_law is constant.

@@ -106,8 +106,10 @@ void ContactArgs::add_to(CLI::App* app) {
       ->check(CLI::IsMember({"variable", "constant"}));
   app->add_option("--load-balance", load_balance,
                   "load control: balance the load with the wheel's total vertical force, pressure and creep forces "
-                  "(total, default), or with the pressure forces alone (pressure, the creep forces solved afterwards)")
-      ->check(CLI::IsMember({"total", "pressure"}));
+                  "(total, default), or with the pressure forces alone (pressure, the creep forces solved afterwards), or "
+                  "total with the patches found for the load the pressure forces carry (total-consistent, a fixed point; "
+                  "docs/physics-reference.md §3.6.1)")
+      ->check(CLI::IsMember({"total", "pressure", "total-consistent"}));
   app->add_option("--friction-law", friction_law,
                   "slip-dependent friction law mu(gamma), gamma = slip / rolling speed (paper 002): constant (mu); "
                   "exponential (f1a: mu [r + (1 - r) exp(-decay gamma)]); piecewise-linear (f1b: from mu down to "

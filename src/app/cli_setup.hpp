@@ -44,7 +44,7 @@ struct ContactArgs {
   double exact_element_mm = WheelContactOptions{}.exact_element_size_m * 1e3;  // --exact-element-mm
   double combine_mm = WheelContactOptions{}.patch_combine_distance_m * 1e3;  // --combine-mm
   std::string penetration = "variable";  // conformal model: variable (KPEC rule) or constant (eps = 0.55)
-  std::string load_balance = "total";    // --load-balance: total (pressure + creep forces) or pressure (LoadBalance)
+  std::string load_balance = "total";    // --load-balance: total (pressure + creep forces), pressure, total-consistent (LoadBalance)
   // Slip-dependent friction law (friction_law.hpp, docs/physics-reference.md §7.4): constant (mu = --mu),
   // exponential (paper 002 f1a), piecewise-linear (f1b), static-dynamic (f2); the paper's names are accepted too.
   // --mu is the static value mu(0) of every law; the other parameters only where the law has them.

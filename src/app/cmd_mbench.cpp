@@ -17,6 +17,7 @@ void RegisterMbenchCommand(CLI::App& app) {
   auto origin = std::make_shared<std::string>("ours");
   auto spin_centre = std::make_shared<bool>(false);
   auto local_flex = std::make_shared<bool>(false);
+  auto load_balance = std::make_shared<std::string>("total");
   CLI::App* sub = app.add_subcommand("mbench", "Manchester benchmark A-2.2 (left wheel) against CONTACT");
   sub->add_option("--models", *models, "comma-separated models");
   sub->add_option("--data", *data, kDataHelp);
@@ -29,7 +30,10 @@ void RegisterMbenchCommand(CLI::App& app) {
                 "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
   sub->add_flag("--kp-local-flexibilities", *local_flex,
                 "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
-  sub->callback([models, data, kinematics, origin, spin_centre, local_flex, sub]() {
+  sub->add_option("--load-balance", *load_balance,
+                  "load control: total (default), pressure or total-consistent (docs/physics-reference.md §3.6.1)")
+      ->check(CLI::IsMember({"total", "pressure", "total-consistent"}));
+  sub->callback([models, data, kinematics, origin, spin_centre, local_flex, load_balance, sub]() {
     std::stringstream ss(*models);
     for (std::string name; std::getline(ss, name, ',');) {
       ManchesterOptions o;
@@ -37,6 +41,7 @@ void RegisterMbenchCommand(CLI::App& app) {
       o.creepages_from_file = !*kinematics;
       o.kp_spin_about_patch_centre = *spin_centre;
       o.kp_local_flexibilities = *local_flex;
+      o.load_balance = ParseLoadBalance(*load_balance);
       o.creepage_origin = *origin == "contact" ? ManchesterCreepageOrigin::ContactReferencePoint
                                                : ManchesterCreepageOrigin::OurReferencePoint;
       ProgressReporter progress("mbench " + name, 0.0, "", ProgressModeOf(sub), std::cerr);

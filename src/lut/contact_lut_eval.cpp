@@ -544,7 +544,8 @@ WheelContactReport EvaluateContactLut(const ContactLut& lut, const WheelsetTrack
     return r;
   }
   const double Q = options.vertical_load_N;
-  const bool total = options.load_balance == LoadBalance::Total && options.solve_tangential;
+  // (LoadBalance::TotalConsistent: the same balance; the table's nodes are its definition, §17.4)
+  const bool total = options.load_balance != LoadBalance::Pressure && options.solve_tangential;
   WheelContactReport r = ReportAt(lut, side, pose, velocity, options, Q, Q, info, law);
   if (total && r.status == WheelContactStatus::Ok) {
     // Total-force balance: Q_eff + C(Q_eff) = Q, C = vertical creep forces (header comment); secant iteration

@@ -1,6 +1,7 @@
 // Plausibility warnings of one wheel's contact (contact_plausibility.hpp; limits: docs/physics-reference.md §13).
 #include "conforma/contact_plausibility.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -30,6 +31,18 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
                          law ? "the friction law's static value mu(0)" : "the friction coefficient mu", mu,
                          kMinPlausibleFriction, kMaxPlausibleFriction));
   if (report.status == WheelContactStatus::NotConverged) {
+    const double consistency = report.pressure_vertical_force_N - report.candidate_load_N;
+    if (options.load_balance == LoadBalance::TotalConsistent && report.candidate_searches > 1 &&
+        !report.patches.empty() &&
+        std::fabs(consistency) > std::max(options.load_tolerance, kCandidateLoadTolerance) * options.vertical_load_N)
+      // docs/physics-reference.md §3.6.1 step 4: the patches' candidates were found for another load than the one
+      // the pressure forces carry
+      out.push_back(Format("candidates_not_consistent: the contact candidates were found for %.1f N, the pressure "
+                           "forces carry %.1f N (%+.3f %% of the wheel load) after %d candidate searches (no fixed "
+                           "point: the patches change with the candidates' load); the solution nearest to one is "
+                           "reported",
+                           report.candidate_load_N, report.pressure_vertical_force_N,
+                           100.0 * consistency / options.vertical_load_N, report.candidate_searches));
     if (options.vertical_load_N >= 0.0 && !report.patches.empty()) {
       // the balanced force (WheelContactOptions::load_balance): the total vertical force by default
       const bool total = BalancesTotalVerticalForce(options);

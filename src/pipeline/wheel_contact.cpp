@@ -9,19 +9,21 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "conforma/contact_plausibility.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kik_piotrowski.hpp"
 #include "conforma/local_creepage.hpp"
 #include "conforma/model_selection.hpp"
+#include "conforma/root_finding.hpp"
 #include "wheel_contact_key.hpp"
 #include "wheel_motion.hpp"
 
 namespace conforma {
 
 bool BalancesTotalVerticalForce(const WheelContactOptions& options) {
-  return options.load_balance == LoadBalance::Total && options.vertical_load_N > 0.0 && options.solve_tangential;
+  return options.load_balance != LoadBalance::Pressure && options.vertical_load_N > 0.0 && options.solve_tangential;
 }
 
 const PatchReport* MainPatch(const WheelContactReport& report) {
@@ -48,6 +50,7 @@ const char* to_string(LoadBalance balance) {
   switch (balance) {
     case LoadBalance::Total: return "total";
     case LoadBalance::Pressure: return "pressure";
+    case LoadBalance::TotalConsistent: return "total-consistent";
   }
   return "?";
 }
@@ -55,7 +58,8 @@ const char* to_string(LoadBalance balance) {
 LoadBalance ParseLoadBalance(const std::string& name) {
   if (name == "total") return LoadBalance::Total;
   if (name == "pressure") return LoadBalance::Pressure;
-  throw InputError("load balance: unknown name '" + name + "' (expected total or pressure)");
+  if (name == "total-consistent") return LoadBalance::TotalConsistent;
+  throw InputError("load balance: unknown name '" + name + "' (expected total, pressure or total-consistent)");
 }
 
 void WheelContactOptions::validate() const {
@@ -181,9 +185,14 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
                                       const WheelsetVelocity& velocity, const WheelContactOptions& options);
 
 // Stage 1: candidates, model per patch, normal problem (load control); with total-force load control also the
-// tangential problem at every push-down (NormalStage::coupled). Options validated by the caller.
-NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
-                             const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+// tangential problem at every push-down (NormalStage::coupled). In load control the candidates are found for
+// candidate_load_N (the wheel load, or the fixed point's load of LoadBalance::TotalConsistent, SolveNormalStage);
+// the load control balances options.vertical_load_N. start_vertical_m (total-force balance only): the wheel's vertical
+// position where the direct total-force balance (step 0 of §3.6.1) starts; NaN: the candidates' Hertz push-down.
+// Options validated by the caller.
+NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                const WheelsetVelocity& velocity, const WheelContactOptions& options,
+                                double candidate_load_N, double start_vertical_m = std::nan("")) {
   NormalStage stage;
   WheelContactReport& report = stage.report;
   report.side = side;
@@ -199,7 +208,8 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   stage.finished = true;
   if (load_control && options.vertical_load_N == 0.0) return stage;  // unloaded wheel: no contact
   CandidateResult& candidates = stage.candidates;
-  candidates = load_control ? FindContactCandidatesForLoad(geometry, side, pose, options.vertical_load_N,
+  if (load_control) report.candidate_load_N = candidate_load_N, report.candidate_searches = 1;
+  candidates = load_control ? FindContactCandidatesForLoad(geometry, side, pose, candidate_load_N,
                                                            options.material, candidate_options)
                             : FindContactCandidates(geometry, side, pose, candidate_options);
   if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return stage;
@@ -354,6 +364,8 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
       // first: accepted when it converges (Ok); otherwise (F_z <= 0 there, no rising bracket, a jump over the
       // load) the two phases below decide, from the pressure-balanced push.
       stage.finished = false;
+      // (TotalConsistent's later candidate searches start at the last solution: §3.6.1 step 4)
+      if (std::isfinite(start_vertical_m)) base_push = candidates_pose.vertical_m - start_vertical_m;
       const double total_at_hertz = total_at(0.0);
       LoadControlResult direct;
       if (total_at_hertz > 0.0) direct = solve_total_from_base(total_at_hertz);
@@ -367,7 +379,7 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
         return stage;
       }
       report.pose = candidates_pose;
-      best_push = 0.0, best_error = 1e300;
+      base_push = 0.0, best_push = 0.0, best_error = 1e300;
     }
     // Phase 1, the one load control (load_control.hpp) on the pressure forces alone (monotone in the push: every
     // patch's approach grows with it): the Hertz push-down of the candidates is close, so the first bracket is the
@@ -429,6 +441,90 @@ NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, c
   }
   stage.finished = false;
   return stage;
+}
+
+// LoadBalance::TotalConsistent (docs/physics-reference.md §3.6.1 step 4, §17.4): the total balance of
+// SolveNormalStageFor with its candidates found for the load L that the pressure forces carry at its own solution.
+// P(L) = pressure_vertical_force_N of the total balance to Q with the candidates for L; the fixed point
+// g(L) = P(L) - L = 0 is the pressure-balanced solve at L (candidates for L, pushed until the pressure carries L: the
+// push is unique, the pressure force rising with it) that carries Q in total. The hertz model's patches (one per
+// rigid gap minimum at first touch, §1) do not depend on the candidates' load: solved as with Total.
+bool SeeksConsistentCandidates(const WheelContactOptions& options) {
+  return options.load_balance == LoadBalance::TotalConsistent && BalancesTotalVerticalForce(options) &&
+         options.model != ContactModel::Hertz;
+}
+
+// The fixed point's budget of candidate searches (each one candidate search and one total balance,
+// SolveNormalStageFor), §3.6.1 step 4: 2.2 on average on the lut check samples of §17.5, 13 at most.
+constexpr int kMaxCandidateSearches = 16;
+
+NormalStage SolveNormalStage(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                             const WheelsetVelocity& velocity, const WheelContactOptions& options) {
+  const double Q = options.vertical_load_N;
+  if (!SeeksConsistentCandidates(options)) return SolveNormalStageFor(geometry, side, pose, velocity, options, Q);
+  auto balanced = [](const NormalStage& s) { return s.coupled && s.coupled->status == WheelContactStatus::Ok; };
+  auto residual = [](const NormalStage& s) { return s.coupled->pressure_vertical_force_N - s.report.candidate_load_N; };
+  NormalStage best = SolveNormalStageFor(geometry, side, pose, velocity, options, Q);
+  // the total balance with the candidates for Q failed (or no contact): reported as with Total
+  if (!balanced(best)) return best;
+  const double tolerance = std::max(options.load_tolerance, kCandidateLoadTolerance) * Q;
+  int searches = 1, evaluations = best.report.load_iterations;
+  double load = Q, g = residual(best), best_g = g;  // the last load whose total balance succeeded, and its g
+  double previous_load = 0.0, previous_g = 0.0;
+  bool has_previous = false, converged = std::fabs(g) <= tolerance;
+  double failed_load = 0.0;  // > 0: the last trial load, whose total balance failed
+  // where the next total balance starts: the last balanced solution (the push changes little with the candidates)
+  double start_vertical_m = best.coupled->pose.vertical_m;
+  bool bisect = false;       // the last bracketed step shrank the bracket by less than half
+  std::optional<IllinoisBracket> bracket;  // root_finding.hpp: a sign change of g
+  while (!converged && searches < kMaxCandidateSearches) {
+    // The next load: the fixed-point step L = P first (P = Q - the creep forces' vertical part depends weakly on L),
+    // then the secant on g, and once a sign change brackets the root Illinois false position, bisecting where a step
+    // shrank the bracket by less than half. A load whose total balance fails (the balance's own not_converged: a
+    // jump of the forces in the push, or no bracket) is backed off from by halving the step.
+    double next = load + g;
+    if (failed_load > 0.0) {
+      next = 0.5 * (load + failed_load);
+    } else if (bracket) {
+      next = bisect ? 0.5 * (bracket->low() + bracket->high()) : bracket->FalsePosition();
+    } else if (has_previous) {
+      const double slope = (g - previous_g) / (load - previous_load);
+      if (std::isfinite(slope) && slope < 0.0) next = load - g / slope;
+    }
+    if (!(next > 0.0 && std::isfinite(next))) break;  // no positive load for the candidates: not converged
+    NormalStage trial = SolveNormalStageFor(geometry, side, pose, velocity, options, next, start_vertical_m);
+    ++searches;
+    evaluations += trial.report.load_iterations;
+    if (!balanced(trial)) {
+      failed_load = next;
+      continue;
+    }
+    failed_load = 0.0;
+    start_vertical_m = trial.coupled->pose.vertical_m;
+    const double g_next = residual(trial);
+    if (bracket) {
+      const double width = std::fabs(bracket->high() - bracket->low());
+      bracket->Replace(next, g_next, (g_next > 0.0) == (bracket->f_low() > 0.0));
+      bisect = std::fabs(bracket->high() - bracket->low()) > 0.5 * width;
+    } else if ((g_next > 0.0) != (g > 0.0)) {
+      bracket.emplace(load, g, next, g_next);
+    }
+    previous_load = load, previous_g = g, has_previous = true;
+    load = next, g = g_next;
+    converged = std::fabs(g) <= tolerance;
+    if (std::fabs(g) < std::fabs(best_g)) best = std::move(trial), best_g = g;
+    // the candidates' load pinned within the tolerance by a sign change of g without |g| within it: P jumps over L
+    // (a patch appears, merges or leaves with the candidates' load): no fixed point
+    if (!converged && bracket && std::fabs(bracket->high() - bracket->low()) <= tolerance) break;
+  }
+  best.report.load_iterations = evaluations;
+  best.report.candidate_searches = searches;
+  WheelContactReport coupled = *best.coupled;
+  coupled.load_iterations = evaluations;
+  coupled.candidate_searches = searches;
+  if (!converged) best.report.status = coupled.status = WheelContactStatus::NotConverged;
+  best.coupled = std::make_shared<const WheelContactReport>(std::move(coupled));
+  return best;
 }
 
 // Stage 2: creepages and the tangential problem, patch by patch, on a solved normal stage.

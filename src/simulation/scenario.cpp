@@ -430,7 +430,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   }
   r.check_keys(root, "top level",
                {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "elastic_flange_deg",
-                "load_tolerance", "load_acceptance", "wear_law",
+                "load_tolerance", "load_balance", "load_acceptance", "wear_law",
                 "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv", "published"});
   Scenario s;
   s.source = source;
@@ -505,6 +505,13 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   if (root["load_tolerance"]) {
     s.load_tolerance = r.number(root["load_tolerance"], "load_tolerance");
     if (!(s.load_tolerance > 0.0 && s.load_tolerance < 1.0)) r.fail("load_tolerance", "must lie in (0, 1)");
+  }
+  if (root["load_balance"]) {
+    try {
+      s.load_balance = ParseLoadBalance(r.text(root["load_balance"], "load_balance"));
+    } catch (const InputError& e) {
+      r.fail("load_balance", e.what());
+    }
   }
   if (root["load_acceptance"]) {
     s.load_acceptance = r.number(root["load_acceptance"], "load_acceptance");

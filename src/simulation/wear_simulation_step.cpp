@@ -265,6 +265,7 @@ QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactM
   qo.contact.material = scenario.material;
   qo.contact.max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
   qo.contact.load_tolerance = scenario.load_tolerance;
+  qo.contact.load_balance = scenario.load_balance;
   qo.tangent_amplitude_m = scenario.kinematics.tangent_amplitude_m;
   qo.tangent_phases = scenario.kinematics.tangent_phases;
   qo.cant_base_m = scenario.kinematics.cant_base_m;

@@ -1,6 +1,7 @@
 // One wheel through the pipeline (SolveWheelContact) with load control, balancing the pressure alone (the behaviour
 // before issue 15) or the total vertical force (pressure and creep forces, the default; docs/physics-reference.md
-// §3.6.1): the cost of the coupling per wheel and the load-control iterations. S1002 on 60E1 at 1:40, 10 kN, the
+// §3.6.1), or the total one with the candidates found for the pressure forces' load (total_consistent, §3.6.1 step 4):
+// the cost of the coupling per wheel and the load-control iterations. S1002 on 60E1 at 1:40, 10 kN, the
 // wheelset at its rigid equilibrium with yaw 1 mrad, 20 m/s, creepages from the kinematics (left wheel).
 #include <benchmark/benchmark.h>
 
@@ -32,6 +33,7 @@ void BM_WheelLoadBalance(benchmark::State& state, ContactModel model, LoadBalanc
   state.counters["load_iterations"] = r.load_iterations;
   state.counters["patches"] = static_cast<double>(r.patches.size());
   state.counters["Fz_over_load"] = r.vertical_force_N / o.vertical_load_N;
+  state.counters["candidate_searches"] = r.candidate_searches;
 }
 
 }  // namespace
@@ -48,4 +50,10 @@ BENCHMARK_CAPTURE(BM_WheelLoadBalance, conformal_total_y7mm_flange, ContactModel
 BENCHMARK_CAPTURE(BM_WheelLoadBalance, hertz_pressure_y7mm_flange, ContactModel::Hertz, LoadBalance::Pressure, 7e-3)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_WheelLoadBalance, hertz_total_y7mm_flange, ContactModel::Hertz, LoadBalance::Total, 7e-3)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_WheelLoadBalance, conformal_total_consistent_y3mm, ContactModel::Conformal,
+                  LoadBalance::TotalConsistent, 3e-3)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_WheelLoadBalance, conformal_total_consistent_y7mm_flange, ContactModel::Conformal,
+                  LoadBalance::TotalConsistent, 7e-3)
     ->Unit(benchmark::kMicrosecond);

@@ -55,6 +55,7 @@ struct ManchesterOptions {
   int fastsim_elements = kDefaultFastsimElements;  // WheelContactOptions::fastsim_elements, >= 2
   bool kp_spin_about_patch_centre = false;  // WheelContactOptions::kp_spin_about_patch_centre
   bool kp_local_flexibilities = false;      // WheelContactOptions::kp_local_flexibilities
+  LoadBalance load_balance = LoadBalance::Total;  // WheelContactOptions::load_balance
   ProgressFunction on_progress;  // progress (progress.hpp), one unit per case ("case <id>"); empty: none
 };
 
