@@ -116,6 +116,8 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("load_tolerance: 0\n") + kClasses, "load_tolerance");
   ExpectError(std::string("load_acceptance: -0.1\n") + kClasses, "load_acceptance");
   ExpectError(std::string("load_balance: consistent\n") + kClasses, "load_balance");
+  ExpectError(std::string("kp_spin_about_centre: maybe\n") + kClasses, "kp_spin_about_centre");
+  ExpectError(std::string("kp_local_flexibilities: [1]\n") + kClasses, "kp_local_flexibilities");
 }
 
 TEST(Scenario, MinimalFileTakesTheDefaults) {
@@ -130,6 +132,20 @@ TEST(Scenario, MinimalFileTakesTheDefaults) {
   EXPECT_EQ(s.load_balance, LoadBalance::Total);    // WheelContactOptions' default
   EXPECT_EQ(ParseScenario(std::string("load_balance: total-consistent\n") + kClasses, "c.yaml").load_balance,
             LoadBalance::TotalConsistent);
+  // the KP FASTSIM variants: off as in WheelContactOptions, and what ApplyScenarioContact passes on
+  WheelContactOptions o;
+  ApplyScenarioContact(s, &o);
+  EXPECT_FALSE(o.kp_spin_about_patch_centre);
+  EXPECT_FALSE(o.kp_local_flexibilities);
+  EXPECT_EQ(o.load_balance, LoadBalance::Total);
+  const Scenario v =
+      ParseScenario(std::string("kp_spin_about_centre: true\nkp_local_flexibilities: true\nload_tolerance: 2e-6\n") +
+                        kClasses,
+                    "v.yaml");
+  ApplyScenarioContact(v, &o);
+  EXPECT_TRUE(o.kp_spin_about_patch_centre);
+  EXPECT_TRUE(o.kp_local_flexibilities);
+  EXPECT_NEAR(o.load_tolerance, 2e-6, 0.0);
 }
 
 TEST(Scenario, CurvingContactModelIsSeparateFromTheWearModel) {

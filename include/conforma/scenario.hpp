@@ -33,6 +33,8 @@
 //                                        than 10x is not converged)
 //   load_balance: total                 (optional: total | pressure | total-consistent, WheelContactOptions::
 //                                        load_balance of the curving and wear solves, docs/physics-reference.md §3.6.1)
+//   kp_spin_about_centre: false         (optional: WheelContactOptions::kp_spin_about_patch_centre of the curving and
+//   kp_local_flexibilities: false        wear solves, FASTSIM variants on the KP patches, docs/physics-reference.md §5.4)
 //   load_acceptance: 0.10               (optional: a not converged wheel contact still gives wear when its carried
 //                                        load is within this fraction of the wheel load; else it is a failed one)
 //   wear_law: usfd | <wear-law file>    (wear_law.hpp; the same law for wheel and rail unless rail_wear_law given)
@@ -151,6 +153,10 @@ struct Scenario {
   double load_tolerance = kDefaultLoadTolerance;
   // load_balance: WheelContactOptions::load_balance of the curving and wear solves (default total)
   LoadBalance load_balance = LoadBalance::Total;
+  // kp_spin_about_centre, kp_local_flexibilities: WheelContactOptions::kp_spin_about_patch_centre,
+  // kp_local_flexibilities of the curving and wear solves (default off, as there)
+  bool kp_spin_about_patch_centre = WheelContactOptions{}.kp_spin_about_patch_centre;
+  bool kp_local_flexibilities = WheelContactOptions{}.kp_local_flexibilities;
   double load_acceptance = 0.10;  // load_acceptance: StepWearOptions::load_acceptance
   WearModel wear;
   ContactModel model = ContactModel::Conformal;
@@ -165,6 +171,9 @@ struct Scenario {
 
 // Throws InputError "<file>: <what>" for unreadable/malformed files, unknown keys and bad values.
 Scenario LoadScenario(const std::string& path);
+// The scenario's contact settings on `options` (material, elastic flange, load tolerance and balance, the KP FASTSIM
+// variants): what the curving solve, the wear step and the curving command share. Model and load are not touched.
+void ApplyScenarioContact(const Scenario& scenario, WheelContactOptions* options);
 Scenario ParseScenario(const std::string& yaml_text, const std::string& source, const std::string& base_dir = ".");
 
 }  // namespace conforma

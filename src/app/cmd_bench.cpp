@@ -155,6 +155,7 @@ void RegisterBenchCommand(CLI::App& app) {
   auto default_grid = std::make_shared<std::string>("s31e30");
   auto spin_centre = std::make_shared<bool>(false);
   auto local_flex = std::make_shared<bool>(false);
+  auto creepage_scale = std::make_shared<double>(1.0);
   CLI::App* sub = app.add_subcommand("bench", "run time against error per model and grid (bench.csv, Pareto plot)");
   sub->add_option("--out", *out_dir, "output folder");
   sub->add_option("--data", *data, kDataHelp);
@@ -162,10 +163,10 @@ void RegisterBenchCommand(CLI::App& app) {
   sub->add_option("--families", *families, "comma-separated case families");
   sub->add_option("--default-grid", *default_grid, "grid label of the models' default resolution (summary)");
   sub->add_flag("!--no-plot", *plot, "do not run scripts/plot_bench.py");
-  sub->add_flag("--kp-spin-about-centre", *spin_centre,
-                "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
-  sub->add_flag("--kp-local-flexibilities", *local_flex,
-                "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
+  AddKpFastsimFlags(sub, spin_centre.get(), local_flex.get());
+  sub->add_option("--creepage-scale", *creepage_scale,
+                  "every case's creepages (xi, eta, phi) times this factor, for the models and the exact reference; "
+                  "e.g. 0.01 probes the linear range (docs/physics-reference.md §5.4)");
   sub->callback([=]() {
     BenchOptions options;
     options.kp_spin_about_patch_centre = *spin_centre;
@@ -192,9 +193,16 @@ void RegisterBenchCommand(CLI::App& app) {
       wanted.push_back(f);
     }
     if (wanted.empty()) throw InputError("option --families: no case family given");
+    if (!(std::isfinite(*creepage_scale) && *creepage_scale > 0.0))
+      throw InputError("option --creepage-scale: must be finite and > 0 (got " + std::to_string(*creepage_scale) + ")");
     std::vector<BenchCase> cases;
     for (const BenchCase& c : all_cases)
       if (std::find(wanted.begin(), wanted.end(), c.family) != wanted.end()) cases.push_back(c);
+    for (BenchCase& c : cases) {  // the same rigid slip field scaled: creepages and spin alike
+      c.creepages.xi *= *creepage_scale;
+      c.creepages.eta *= *creepage_scale;
+      c.creepages.phi_per_m *= *creepage_scale;
+    }
     std::printf("bench: %zu patches, %zu models x %zu grids\n", cases.size(), options.models.size(), options.grids.size());
     std::fflush(stdout);  // before the progress lines on stderr
     std::vector<BenchReference> refs;

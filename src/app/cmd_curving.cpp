@@ -25,8 +25,7 @@ namespace {
 void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const KinematicsSeries& s, ContactModel model) {
   WheelContactOptions o;
   o.model = model;
-  o.material = sc.material;
-  o.max_touching_contact_angle_rad = sc.elastic_flange_angle_rad;
+  ApplyScenarioContact(sc, &o);
   for (const KinematicsSample& k : s.samples) {
     std::printf("    ws %d w %.3f: y %+7.3f mm  psi %+7.3f mrad  Omega r0/V-1 %+.2e\n", k.wheelset, k.weight,
                 k.pose.lateral_m * 1e3, k.pose.yaw_rad * 1e3,

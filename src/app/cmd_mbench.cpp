@@ -26,10 +26,7 @@ void RegisterMbenchCommand(CLI::App& app) {
                   "where the file's creepages apply: ours (at our contact reference point, default) or contact (moved "
                   "from CONTACT's reference point y_cp to ours, xi' = xi + phi (y_cp,ours - y_cp,CONTACT))")
       ->check(CLI::IsMember({"ours", "contact"}));
-  sub->add_flag("--kp-spin-about-centre", *spin_centre,
-                "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
-  sub->add_flag("--kp-local-flexibilities", *local_flex,
-                "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
+  AddKpFastsimFlags(sub, spin_centre.get(), local_flex.get());
   sub->add_option("--load-balance", *load_balance,
                   "load control: total (default), pressure or total-consistent (docs/physics-reference.md §3.6.1)")
       ->check(CLI::IsMember({"total", "pressure", "total-consistent"}));

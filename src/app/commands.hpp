@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "conforma/wheel_contact_options.hpp"
+
 namespace conforma::cli {
 
 void RegisterContactCommand(CLI::App& app);  // conforma contact: one wheelset pose, any model
@@ -33,6 +35,17 @@ std::string DataDirOr(const std::string& given);
 std::string PythonOr(const std::string& given);
 inline constexpr const char* kDataHelp =
     "shared data folder (default: $CONFORMA_DATA_DIR, else the build's CONFORMA_SHARED_DATA)";
+// --kp-spin-about-centre and --kp-local-flexibilities: the FASTSIM variants on the KP patches
+// (WheelContactOptions::kp_spin_about_patch_centre, kp_local_flexibilities; docs/physics-reference.md §5.4), off by
+// default as in WheelContactOptions.
+inline void AddKpFastsimFlags(CLI::App* sub, bool* spin_centre, bool* local_flex) {
+  *spin_centre = WheelContactOptions{}.kp_spin_about_patch_centre;
+  *local_flex = WheelContactOptions{}.kp_local_flexibilities;
+  sub->add_flag("--kp-spin-about-centre", *spin_centre,
+                "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
+  sub->add_flag("--kp-local-flexibilities", *local_flex,
+                "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
+}
 inline constexpr const char* kPythonHelp =
     "python interpreter with matplotlib for the plots (default: $CONFORMA_PYTHON, else python3 on PATH)";
 

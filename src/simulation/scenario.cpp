@@ -430,7 +430,7 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   }
   r.check_keys(root, "top level",
                {"name", "vehicle", "kinematics", "track", "profiles", "material", "friction", "elastic_flange_deg",
-                "load_tolerance", "load_balance", "load_acceptance", "wear_law",
+                "load_tolerance", "load_balance", "kp_spin_about_centre", "kp_local_flexibilities", "load_acceptance", "wear_law",
                 "rail_wear_law", "contact_model", "update", "rail", "track_classes", "track_classes_csv", "published"});
   Scenario s;
   s.source = source;
@@ -513,6 +513,10 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
       r.fail("load_balance", e.what());
     }
   }
+  if (root["kp_spin_about_centre"])
+    s.kp_spin_about_patch_centre = r.boolean(root["kp_spin_about_centre"], "kp_spin_about_centre");
+  if (root["kp_local_flexibilities"])
+    s.kp_local_flexibilities = r.boolean(root["kp_local_flexibilities"], "kp_local_flexibilities");
   if (root["load_acceptance"]) {
     s.load_acceptance = r.number(root["load_acceptance"], "load_acceptance");
     if (!(s.load_acceptance >= 0.0 && s.load_acceptance < 1.0)) r.fail("load_acceptance", "must lie in [0, 1)");
@@ -572,6 +576,15 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
     throw InputError(source + ": " + msg);
   }
   return s;
+}
+
+void ApplyScenarioContact(const Scenario& scenario, WheelContactOptions* options) {
+  options->material = scenario.material;
+  options->max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
+  options->load_tolerance = scenario.load_tolerance;
+  options->load_balance = scenario.load_balance;
+  options->kp_spin_about_patch_centre = scenario.kp_spin_about_patch_centre;
+  options->kp_local_flexibilities = scenario.kp_local_flexibilities;
 }
 
 Scenario LoadScenario(const std::string& path) {

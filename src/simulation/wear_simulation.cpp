@@ -156,10 +156,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
 
   StepWearOptions step_options;
   step_options.contact = options.contact;
-  step_options.contact.material = scenario.material;
-  step_options.contact.max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
-  step_options.contact.load_tolerance = scenario.load_tolerance;
-  step_options.contact.load_balance = scenario.load_balance;
+  ApplyScenarioContact(scenario, &step_options.contact);
   step_options.load_acceptance = scenario.load_acceptance;
   step_options.wear = scenario.wear;
   step_options.grid_spacing_m = options.grid_spacing_m;

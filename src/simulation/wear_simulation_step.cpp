@@ -262,10 +262,7 @@ KinematicsSeries CentredKinematics(const Scenario& scenario, const WheelsetTrack
 QuasiStaticOptions ScenarioQuasiStaticOptions(const Scenario& scenario, ContactModel model) {
   QuasiStaticOptions qo;
   qo.contact.model = model;
-  qo.contact.material = scenario.material;
-  qo.contact.max_touching_contact_angle_rad = scenario.elastic_flange_angle_rad;
-  qo.contact.load_tolerance = scenario.load_tolerance;
-  qo.contact.load_balance = scenario.load_balance;
+  ApplyScenarioContact(scenario, &qo.contact);
   qo.tangent_amplitude_m = scenario.kinematics.tangent_amplitude_m;
   qo.tangent_phases = scenario.kinematics.tangent_phases;
   qo.cant_base_m = scenario.kinematics.cant_base_m;
