@@ -108,6 +108,9 @@ class Wheel(TypedDict):
     pressure_vertical_force_N: float
     lateral_force_N: float
     load_iterations: int
+    candidate_load_N: float   # load the contact candidates were found for (the wheel load, or the fixed point of
+                              # load_balance "total-consistent"); 0 in approach mode
+    candidate_searches: int   # candidate searches of the solve (1; more with "total-consistent")
     patches: List[Patch]
     warnings: List[str]       # plausibility warnings "code: message" (docs/physics-reference.md §13)
     complete: bool            # no problem below
