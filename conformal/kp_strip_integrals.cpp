@@ -18,6 +18,25 @@ namespace kp_detail {
 
 namespace {
 
+// CosOfSmallAngle's range and polynomial: cos x = 1 - x^2/2 + x^4 R(x^2), R(z) = sum_n (-1)^n z^(n-2) / (2n)!,
+// n = 2..9 (the factorials are exact doubles, 18! < 2^53, so each coefficient is their correctly rounded quotient),
+// R by Horner; 1 - x^2/2 with its rounding error carried into the small rest (as fdlibm's __kernel_cos).
+constexpr double kSmallAngle = 0.25 * M_PI;
+inline double CosPolynomial(double x) {
+  const double z = x * x;
+  double r = 1.0 / 6402373705728000.0;  // 1/18!
+  r = -1.0 / 20922789888000.0 + z * r;
+  r = 1.0 / 87178291200.0 + z * r;
+  r = -1.0 / 479001600.0 + z * r;
+  r = 1.0 / 3628800.0 + z * r;
+  r = -1.0 / 40320.0 + z * r;
+  r = 1.0 / 720.0 + z * r;
+  r = -1.0 / 24.0 + z * r;  // -R(z)
+  const double half_z = 0.5 * z;
+  const double w = 1.0 - half_z;
+  return w + (((1.0 - w) - half_z) - z * z * r);
+}
+
 // Gauss-Legendre nodes and weights on [-1, 1] (positive half; symmetric).
 constexpr double kGauss2Node[1] = {0.5773502691896257};
 constexpr double kGauss2Weight[1] = {1.0};
@@ -378,6 +397,10 @@ double SemiEllipseOverDistance(double half_length, double centre_offset, double 
   return value;
 }
 
+double CosOfSmallAngle(double alpha) {
+  return std::abs(alpha) <= kSmallAngle ? CosPolynomial(alpha) : std::cos(alpha);  // (NaN: std::cos)
+}
+
 double SemiEllipseCoupling(double half_length, double centre_offset, double u) {
   const double c = half_length;
   if (c <= 0.0) return 0.0;
@@ -424,13 +447,17 @@ void IntegralsOfStrips(const StripLoad* strips, int count, double s_observation,
   ScratchArray<StripPlan, kStackStrips> plans(count);
   const int max_lanes = 16 * count;  // at most 16 nodes per strip
   ScratchArray<double, 16 * kStackStrips> lane_c(max_lanes), lane_d(max_lanes), lane_u(max_lanes), lane_s(max_lanes);
+  ScratchArray<double, 16 * kStackStrips> lane_alpha(blanco ? max_lanes : 0), lane_cos(blanco ? max_lanes : 0);
   int lanes = 0;
   auto add_lanes = [&](const StripLoad& strip, const double* s, int n) {
+    // alpha at the node, linear across the strip (paper 003 eq. 5: the weight cos(alpha_J - alpha_I))
+    const double alpha_slope = (strip.alpha_high - strip.alpha_low) / (strip.s_high - strip.s_low);
     for (int i = 0; i < n; ++i, ++lanes) {
       lane_c[lanes] = strip.half_length;
       lane_d[lanes] = strip.centre_offset;
       lane_s[lanes] = s[i];
       lane_u[lanes] = std::abs(s[i] - s_observation);
+      if (blanco) lane_alpha[lanes] = strip.alpha_low + alpha_slope * (s[i] - strip.s_low);
     }
   };
   for (int k = 0; k < count; ++k) {
@@ -471,6 +498,11 @@ void IntegralsOfStrips(const StripLoad* strips, int count, double s_observation,
   }
   ScratchArray<double, 16 * kStackStrips> f1(lanes);
   SemiEllipseLanes(lane_c.data(), lane_d.data(), lane_u.data(), lanes, f1.data());
+  if (blanco) {  // the weights cos(alpha) of all lanes: the polynomial in one vectorisable loop, std::cos beyond
+    for (int i = 0; i < lanes; ++i) lane_cos[i] = CosPolynomial(lane_alpha[i]);
+    for (int i = 0; i < lanes; ++i)
+      if (!(std::abs(lane_alpha[i]) <= kSmallAngle)) lane_cos[i] = std::cos(lane_alpha[i]);
+  }
 
   for (int k = 0; k < count; ++k) {
     const StripLoad& strip = strips[k];
@@ -488,8 +520,8 @@ void IntegralsOfStrips(const StripLoad* strips, int count, double s_observation,
         const double s = lane_s[first + i];
         double value = (1.0 - poisson_ratio) * f1[first + i];
         if (blanco) {
-          const double alpha = alpha_at(s);
-          value *= std::cos(alpha);
+          const double alpha = lane_alpha[first + i];
+          value *= lane_cos[first + i];
           if (coupled)
             value += coupling_K * std::sin(alpha) * (s > s_observation ? 1.0 : -1.0) *
                      SemiEllipseCoupling(c, d, lane_u[first + i]);

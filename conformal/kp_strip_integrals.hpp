@@ -23,6 +23,12 @@ double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offse
 // (Stieltjes transform of the semicircle); bounded as u -> 0.
 double SemiEllipseCoupling(double half_length, double centre_offset, double u);
 
+// cos(alpha) for the small relative normal rotations alpha of a patch (§4.1): for |alpha| <= pi/4 the Taylor series
+// through alpha^18 (truncation below 3.3e-21, far under half an ulp of cos >= 0.707) in Horner form in alpha^2,
+// within 1 ulp of the correctly rounded cosine (tests/test_kp_strip_closed_form.cpp); beyond, std::cos. A plain
+// polynomial, so a loop over many angles vectorises, where the library call does not.
+double CosOfSmallAngle(double alpha);
+
 // One strip of load: s in [s_low, s_high], semi-ellipse half-length c centred at x offset d from the observation
 // point, relative normal rotation alpha_J - alpha_I varying linearly from alpha_low to alpha_high across it.
 struct StripLoad {

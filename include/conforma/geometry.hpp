@@ -303,6 +303,7 @@ class WheelsetTrackGeometry {
   struct GraphTable {
     double y0 = 0.0, h = 1e-4;
     std::vector<double> z, dz, kappa, s;  // value, slope, signed curvature (convex > 0), arc length
+    std::vector<double> arc_slope;         // ds/dy = sqrt(1 + dz^2) at the nodes (the arc length's Hermite slopes)
     double s_first = 0.0, s_last = 0.0;   // arc-length range of the tabulated part of the profile (Newton's bounds)
     size_t size() const { return z.size(); }
     double y_end() const { return z.empty() ? y0 : y0 + h * static_cast<double>(z.size() - 1); }

@@ -19,13 +19,34 @@ const char* to_string(CandidateStatus status) {
 
 namespace {
 
-// Intersection of the silhouette with the rail between y_in (gap < 0) and y_out (gap >= 0 or outside).
+// Intersection of the silhouette with the rail between y_in (gap < 0) and y_out (gap >= 0 or outside): the
+// Illinois variant of regula falsi on the bracket (superlinear; the end that stays has its gap halved), a
+// bisection step where the gap at y_out is not finite (outside the tables) or the false-position point does not
+// fall strictly inside. Stops when the bracket is below kCrossingTolerance or adjacent doubles.
+constexpr double kCrossingTolerance = 1e-15;  // m of y_w: the gap's own round-off (~1e-17 m) over slopes >= ~0.01
 double bisect_crossing(const WheelsetTrackGeometry& g, Side side, const WheelsetTrackGeometry::Frame& f, double y_in,
                        double y_out) {
-  for (int it = 0; it < 60; ++it) {
+  double g_in = g.VerticalGapAt(side, f, y_in), g_out = g.VerticalGapAt(side, f, y_out);
+  int kept = 0;  // +1: y_in stayed in the last step, -1: y_out stayed
+  for (int it = 0; it < 100; ++it) {
+    if (std::abs(y_out - y_in) <= kCrossingTolerance) break;
     const double mid = 0.5 * (y_in + y_out);
-    if (mid == y_in || mid == y_out) break;  // adjacent doubles: no later step changes the ends
-    if (g.VerticalGapAt(side, f, mid) < 0.0) y_in = mid; else y_out = mid;
+    if (mid == y_in || mid == y_out) break;  // adjacent doubles
+    double next = mid;
+    if (std::isfinite(g_out) && g_in < 0.0 && g_out > g_in) {
+      const double falsi = y_in + (y_out - y_in) * (g_in / (g_in - g_out));
+      if ((falsi - y_in) * (falsi - y_out) < 0.0) next = falsi;
+    }
+    const double g_next = g.VerticalGapAt(side, f, next);
+    if (g_next < 0.0) {
+      y_in = next, g_in = g_next;
+      if (kept == -1) g_out *= 0.5;  // Illinois: y_out stays twice in a row
+      kept = -1;
+    } else {
+      y_out = next, g_out = g_next;
+      if (kept == +1) g_in *= 0.5;
+      kept = +1;
+    }
   }
   return 0.5 * (y_in + y_out);
 }

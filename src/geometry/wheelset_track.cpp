@@ -64,6 +64,7 @@ void tabulate_node(const Profile& p, GraphTable& t, int k, double y0_profile, do
   const Eigen::Vector2d q = p.position(*s), tg = p.tangent(*s);
   t.z[k] = q.y();
   t.dz[k] = tg.y() / tg.x();
+  t.arc_slope[k] = std::sqrt(1 + t.dz[k] * t.dz[k]);
   t.kappa[k] = p.curvature(*s);
   t.s[k] = *s;
 }
@@ -100,6 +101,7 @@ GraphTable build_table(const Profile& p, double spacing, double max_slope, const
   t.dz.resize(m);
   t.kappa.resize(m);
   t.s.resize(m);
+  t.arc_slope.resize(m);
   t.s_first = s_a;
   t.s_last = s_b;
   double s = s_a;
@@ -375,8 +377,8 @@ double WheelsetTrackGeometry::RailArcLength(Side side, double eta) const {
   const double u = std::clamp((eta - t.y0) / t.h, 0.0, static_cast<double>(t.size() - 1));
   const size_t i = std::min(static_cast<size_t>(u), t.size() - 2);
   const double w = u - static_cast<double>(i);
-  // ds/deta = sqrt(1 + z'^2): Hermite on s with that slope keeps it accurate between the nodes
-  const double g0 = std::sqrt(1 + t.dz[i] * t.dz[i]), g1 = std::sqrt(1 + t.dz[i + 1] * t.dz[i + 1]);
+  // ds/deta = sqrt(1 + z'^2) (tabulated): Hermite on s with that slope keeps it accurate between the nodes
+  const double g0 = t.arc_slope[i], g1 = t.arc_slope[i + 1];
   const double w2 = w * w, w3 = w2 * w;
   return (2 * w3 - 3 * w2 + 1) * t.s[i] + (w3 - 2 * w2 + w) * t.h * g0 + (-2 * w3 + 3 * w2) * t.s[i + 1] +
          (w3 - w2) * t.h * g1;
