@@ -193,8 +193,7 @@ void RegisterBenchCommand(CLI::App& app) {
       wanted.push_back(f);
     }
     if (wanted.empty()) throw InputError("option --families: no case family given");
-    if (!(std::isfinite(*creepage_scale) && *creepage_scale > 0.0))
-      throw InputError("option --creepage-scale: must be finite and > 0 (got " + std::to_string(*creepage_scale) + ")");
+    require_positive(*creepage_scale, "--creepage-scale");
     std::vector<BenchCase> cases;
     for (const BenchCase& c : all_cases)
       if (std::find(wanted.begin(), wanted.end(), c.family) != wanted.end()) cases.push_back(c);
