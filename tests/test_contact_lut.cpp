@@ -8,12 +8,14 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
 #include <type_traits>
 
 #include "conforma/contact_lut.hpp"
+#include "conforma/contact_lut_check.hpp"
 #include "conforma/contact_lut_io.hpp"
 #include "conforma/error.hpp"
 #include "conforma/kinematics_quasistatic.hpp"
@@ -529,4 +531,53 @@ TEST(ContactLut, EmergingPatchOnACellFaceIsAbsentNotNaN) {
     }
   std::printf("emerging-patch cells queried on their face: %d\n", checked);
   EXPECT_GE(checked, 2);
+}
+
+// `conforma lut check` (CheckContactLut): every random pose is recorded; the records' categories add up to the
+// result's counts, their largest single-topology errors are the percentiles' maxima (the same pose named), and the
+// tread errors stay within issue 16's 1 % (forces) and 0.1 mm; the CSV has one row per pose.
+TEST(ContactLut, CheckRecordsEveryPoseConsistentlyWithItsSummary) {
+  ContactLutCheckOptions o;
+  o.samples = 40;
+  o.seed = 3;
+  o.threads = 2;
+  o.contact = Options(ContactModel::Hertz);
+  const ContactLutCheckResult r = CheckContactLut(HertzLut(), Geometry(), o);
+  ASSERT_EQ(r.sample_records.size(), 40u);
+  int single = 0, jumps = 0, status = 0, both = 0;
+  double fx_max = -1.0, fn_max = -1.0;
+  const ContactLutCheckSample* worst_fx = nullptr;
+  for (const ContactLutCheckSample& s : r.sample_records) {
+    const std::string c = s.category;
+    if (c == "single") {
+      ++single;
+      EXPECT_TRUE(std::isfinite(s.fx_rel) && std::isfinite(s.fn_rel) && std::isfinite(s.rail_y_m));
+      if (s.fx_rel > fx_max) fx_max = s.fx_rel, worst_fx = &s;
+      fn_max = std::max(fn_max, s.fn_rel);
+      EXPECT_GT(s.direct_fn_N, 0.0);
+    } else {
+      EXPECT_TRUE(std::isnan(s.fx_rel)) << c;
+    }
+    jumps += c == "jump_same" || c == "jump_corner" || c == "jump_outside";
+    status += c == "status_mismatch";
+    both += c == "both_failed";
+  }
+  EXPECT_EQ(single, r.single_topology - r.single_topology_mismatch);
+  EXPECT_EQ(jumps, r.jump_samples);
+  EXPECT_EQ(status, r.status_mismatch);
+  EXPECT_EQ(both, r.both_failed);
+  ASSERT_GT(single, 20);
+  ASSERT_NE(worst_fx, nullptr);
+  EXPECT_EQ(fx_max, r.fx_rel.max);
+  EXPECT_EQ(fn_max, r.normal_force_rel.max);
+  EXPECT_EQ(worst_fx->y_m, r.fx_rel.worst_y_m);
+  EXPECT_EQ(worst_fx->yaw_rad, r.fx_rel.worst_yaw_rad);
+  EXPECT_LT(r.normal_force_rel.p50, 0.01);
+  EXPECT_LT(r.fx_rel.p50, 0.01);
+  EXPECT_LT(r.rail_y_m.p50, 0.1e-3);
+  std::ostringstream csv;
+  WriteContactLutCheckSamplesCsv(csv, r);
+  const std::string text = csv.str();
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 41);
+  EXPECT_EQ(text.find("nan"), std::string::npos);
 }

@@ -9,6 +9,7 @@
 // compared with the LUT's; when they differ, the jump is "within one grid step" if the direct topology is that of
 // one of the cell's corners (the change happens inside the cell).
 #include <cstdint>
+#include <ostream>
 #include <vector>
 
 #include "conforma/contact_lut.hpp"
@@ -37,6 +38,22 @@ struct Percentiles {
   double worst_y_m = 0.0, worst_yaw_rad = 0.0, worst_load_N = 0.0;
 };
 
+// One random pose of the check: where it was and what it showed (`conforma lut check --samples-csv`).
+struct ContactLutCheckSample {
+  int side = 0;                   // 0 left, 1 right
+  double y_m = 0.0, yaw_rad = 0.0, load_N = 0.0;
+  // single (one topology at the cell's corners, both Ok), jump_same, jump_corner, jump_outside (cells with a topology
+  // change), single_mismatch (one topology at the corners, another in the direct solve), status_mismatch,
+  // both_failed, no_equilibrium (the pose has no rigid equilibrium: not solved)
+  const char* category = "no_equilibrium";
+  bool lut_error = false;         // EvaluateContactLut threw
+  int patches_direct = 0, patches_lut = 0;
+  // single only (NaN otherwise): the largest per-patch error over the paired patches, as in the percentiles
+  double fn_rel = 0.0, fx_rel = 0.0, fy_rel = 0.0, rail_y_m = 0.0, lateral_rel = 0.0;
+  // the direct solve's wheel: sum of the patches' Fn, Fx, Fy (N), and the candidates' load (total-consistent)
+  double direct_fn_N = 0.0, direct_fx_N = 0.0, direct_fy_N = 0.0, direct_candidate_load_N = 0.0;
+};
+
 struct ContactLutCheckResult {
   int samples = 0;                // random poses drawn
   int single_topology = 0;        // samples in single-topology cells (both solves Ok)
@@ -53,9 +70,15 @@ struct ContactLutCheckResult {
   // Wheel totals away from jumps: |d vertical force|, |d lateral force| / Q
   Percentiles lateral_force_rel;
   double direct_cpu_s = 0.0, lut_cpu_s = 0.0;  // summed per-sample solve times, s
+  std::vector<ContactLutCheckSample> sample_records;  // every pose, in the order drawn
 };
 
 ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrackGeometry& geometry,
                                       const ContactLutCheckOptions& options);
+
+// result.sample_records as CSV, one row per pose: side, y_mm, yaw_mrad, load_kN, category, lut_error,
+// patches_direct, patches_lut, fn_rel_pct, fx_rel_pct, fy_rel_pct, rail_y_mm, lateral_rel_pct (empty where not a
+// single-topology sample), direct_fn_kN, direct_fx_kN, direct_fy_kN, direct_candidate_load_kN.
+void WriteContactLutCheckSamplesCsv(std::ostream& out, const ContactLutCheckResult& result);
 
 }  // namespace conforma

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -217,6 +218,7 @@ void RegisterLutCommand(CLI::App& app) {
       std::string file;
       ContactLutCheckOptions o;
       std::string creep = "fastsim";
+      std::string samples_csv;
       bool json = false;
     };
     auto c = std::make_shared<Check>();
@@ -229,7 +231,15 @@ void RegisterLutCommand(CLI::App& app) {
     sub->add_option("--seed", c->o.seed, "random seed");
     sub->add_option("--threads", c->o.threads, "OpenMP threads (0: default)");
     sub->add_flag("--json", c->json, "machine-readable output");
+    sub->add_option("--samples-csv", c->samples_csv,
+                    "write every random pose (side, y, yaw, load, category, per-sample largest errors, the direct "
+                    "solve's forces) to this CSV file");
     sub->callback([c, sub]() {
+      std::ofstream samples_csv;
+      if (!c->samples_csv.empty()) {  // opened first: a bad path fails before the check runs
+        samples_csv.open(c->samples_csv);
+        if (!samples_csv) throw InputError("--samples-csv: cannot write '" + c->samples_csv + "'");
+      }
       const ContactLut table = LoadContactLut(c->file);
       const auto geometry = c->args.track.make_geometry();
       ContactLutCheckOptions o = c->o;
@@ -242,6 +252,10 @@ void RegisterLutCommand(CLI::App& app) {
       const ContactLutCheckResult r = CheckContactLut(table, *geometry, o);
       progress.Finish();
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (samples_csv.is_open()) {
+        WriteContactLutCheckSamplesCsv(samples_csv, r);
+        if (!samples_csv.flush()) throw InputError("--samples-csv: cannot write '" + c->samples_csv + "'");
+      }
       auto pj = [](const Percentiles& p) {
         return nlohmann::json{{"count", p.count}, {"p50", p.p50}, {"p90", p.p90}, {"p95", p.p95}, {"p99", p.p99},
                               {"max", p.max}, {"worst_side", p.worst_side == 0 ? "left" : "right"},

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include <omp.h>
@@ -24,6 +25,9 @@ struct Outcome {
   bool lut_error = false, direct_ok = false, lut_ok = false, single = false, same = false, at_corner = false;
   std::vector<double> fn, fx, fy, rail_y;
   double lateral = 0.0;
+  bool solved = false;  // the pose had a rigid equilibrium
+  int patches_direct = 0, patches_lut = 0;
+  double direct_fn = 0.0, direct_fx = 0.0, direct_fy = 0.0, direct_candidate_load = 0.0;
   double direct_s = 0.0, lut_s = 0.0;
 };
 
@@ -126,6 +130,10 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
     auto t2 = std::chrono::steady_clock::now();
     o.direct_s = std::chrono::duration<double>(t1 - t0).count();
     o.lut_s = std::chrono::duration<double>(t2 - t1).count();
+    o.solved = true;
+    o.patches_direct = static_cast<int>(d.patches.size()), o.patches_lut = static_cast<int>(l.patches.size());
+    for (const PatchReport& p : d.patches) o.direct_fn += p.fn_N, o.direct_fx += p.fx_N, o.direct_fy += p.fy_N;
+    o.direct_candidate_load = d.candidate_load_N;
     o.direct_ok = d.status == WheelContactStatus::Ok;
     o.lut_ok = l.status == WheelContactStatus::Ok;
     o.single = info.single_topology;
@@ -150,6 +158,29 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
   auto add = [](std::vector<std::pair<double, long>>& to, const std::vector<double>& from, long k) {
     for (double x : from) to.emplace_back(x, k);
   };
+  auto largest = [](const std::vector<double>& v) {
+    return v.empty() ? std::nan("") : *std::max_element(v.begin(), v.end());
+  };
+  r.sample_records.resize(out.size());
+  for (long k = 0; k < static_cast<long>(out.size()); ++k) {
+    const Outcome& o = out[k];
+    ContactLutCheckSample& rec = r.sample_records[k];
+    rec.side = side_index(samples[k].side), rec.y_m = samples[k].y, rec.yaw_rad = samples[k].psi;
+    rec.load_N = samples[k].Q, rec.lut_error = o.lut_error;
+    rec.patches_direct = o.patches_direct, rec.patches_lut = o.patches_lut;
+    rec.direct_fn_N = o.direct_fn, rec.direct_fx_N = o.direct_fx, rec.direct_fy_N = o.direct_fy;
+    rec.direct_candidate_load_N = o.direct_candidate_load;
+    rec.fn_rel = rec.fx_rel = rec.fy_rel = rec.rail_y_m = rec.lateral_rel = std::nan("");
+    if (!o.solved) continue;  // category no_equilibrium
+    if (!o.direct_ok && !o.lut_ok) rec.category = "both_failed";
+    else if (o.direct_ok != o.lut_ok) rec.category = "status_mismatch";
+    else if (o.single) rec.category = o.same ? "single" : "single_mismatch";
+    else rec.category = o.same ? "jump_same" : o.at_corner ? "jump_corner" : "jump_outside";
+    if (o.direct_ok && o.lut_ok && o.single && o.same) {
+      rec.fn_rel = largest(o.fn), rec.fx_rel = largest(o.fx), rec.fy_rel = largest(o.fy);
+      rec.rail_y_m = largest(o.rail_y), rec.lateral_rel = o.lateral;
+    }
+  }
   for (long k = 0; k < static_cast<long>(out.size()); ++k) {
     const Outcome& o = out[k];
     r.direct_cpu_s += o.direct_s;
@@ -178,6 +209,24 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
   r.rail_y_m = Summarise(ry, samples);
   r.lateral_force_rel = Summarise(lat, samples);
   return r;
+}
+
+void WriteContactLutCheckSamplesCsv(std::ostream& out, const ContactLutCheckResult& result) {
+  out << "side,y_mm,yaw_mrad,load_kN,category,lut_error,patches_direct,patches_lut,fn_rel_pct,fx_rel_pct,"
+         "fy_rel_pct,rail_y_mm,lateral_rel_pct,direct_fn_kN,direct_fx_kN,direct_fy_kN,direct_candidate_load_kN\n";
+  auto num = [](double v, double scale) {
+    if (!std::isfinite(v)) return std::string();
+    char b[32];
+    std::snprintf(b, sizeof b, "%.9g", v * scale);
+    return std::string(b);
+  };
+  for (const ContactLutCheckSample& s : result.sample_records)
+    out << (s.side == 0 ? "left" : "right") << ',' << num(s.y_m, 1e3) << ',' << num(s.yaw_rad, 1e3) << ','
+        << num(s.load_N, 1e-3) << ',' << s.category << ',' << (s.lut_error ? 1 : 0) << ',' << s.patches_direct << ','
+        << s.patches_lut << ',' << num(s.fn_rel, 100.0) << ',' << num(s.fx_rel, 100.0) << ','
+        << num(s.fy_rel, 100.0) << ',' << num(s.rail_y_m, 1e3) << ',' << num(s.lateral_rel, 100.0) << ','
+        << num(s.direct_fn_N, 1e-3) << ',' << num(s.direct_fx_N, 1e-3) << ',' << num(s.direct_fy_N, 1e-3) << ','
+        << num(s.direct_candidate_load_N, 1e-3) << '\n';
 }
 
 }  // namespace conforma
