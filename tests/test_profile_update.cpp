@@ -419,6 +419,47 @@ TEST(ProfileUpdate, OverhangCutOfAFaceWornPastVerticalIsSingleValuedAndInside) {
 }
 
 
+// The area-conserving cut (ProfileUpdateOptions::cut_conserves_area, docs/physics-reference.md §8.7): on the same
+// leaning face and band as above, the lip the cut removes counts as the step's wear, so the material the step takes
+// (smoothed removal + cut) equals the removal alone without the option, to the 1e-3 the bisection stops at; the step's
+// distance is the same (the scale factor is fixed before the cut), the profile is still single-valued and inside the
+// old one, and the cut is smaller than the one made on top of the full removal (wear_off).
+TEST(ProfileUpdate, AreaConservingCutKeepsTheStepsWearArea) {
+  const Profile wheel = leaning_face_profile(5.0 * kPi / 180.0);
+  const double z_mid = wheel.position(0.5 * wheel.length()).y();
+  WearDistribution acc = WearDistribution::ForProfile(wheel, 0.05e-3);
+  for (size_t i = 0; i < acc.size(); ++i) acc.depth_m[i] = 1e-6 * gauss(wheel.position(acc.s(i)).y(), z_mid, 1.5e-3);
+  ProfileUpdateOptions o;
+  o.smoothing.cutoff_wavelength_m = 0.0;
+  o.cut_conserves_area = false;
+  const ProfileUpdateResult off = UpdateProfile(wheel, acc, 1.0, o);
+  o.cut_conserves_area = true;
+  const ProfileUpdateResult on = UpdateProfile(wheel, acc, 1.0, o);
+  ASSERT_EQ(off.status, ProfileUpdateStatus::Updated) << off.message;
+  ASSERT_EQ(on.status, ProfileUpdateStatus::Updated) << on.message;
+  RecordProperty("wear_off_removed_plus_cut_mm2", sci((off.removed_area_m2 + off.overhang_cut_area_m2) * 1e6));
+  RecordProperty("conserve_removed_mm2", sci(on.removed_area_m2 * 1e6));
+  RecordProperty("conserve_cut_mm2", sci(on.overhang_cut_area_m2 * 1e6));
+  RecordProperty("cut_area_scale", sci(on.cut_area_scale));
+  EXPECT_EQ(off.cut_area_scale, 1.0);
+  ASSERT_GT(off.overhang_cut_area_m2, 0.1e-6);  // the case makes a large cut
+  EXPECT_TRUE(on.cut_area_conserved);
+  EXPECT_GT(on.cut_area_scale, 0.0);
+  EXPECT_LT(on.cut_area_scale, 1.0);
+  EXPECT_EQ(on.scale_factor, off.scale_factor);  // the step stands for the same distance
+  EXPECT_NEAR(on.removed_area_m2 + on.overhang_cut_area_m2, off.removed_area_m2, 1e-3 * off.removed_area_m2);
+  EXPECT_LT(on.overhang_cut_area_m2, off.overhang_cut_area_m2);
+  // the profile: single-valued in y at 1 nm, inside the old one, the area between = removal + cut (as above)
+  ProfileValidityOptions strict;
+  strict.fold_tolerance_m = 1e-9;
+  EXPECT_EQ(CheckProfileValidity(on.profile, wheel, strict).y_folds_after, 0);
+  double worst_outside = -1.0;
+  for (const auto& q : on.profile.samples()) worst_outside = std::max(worst_outside, outside_distance(wheel, q));
+  EXPECT_LE(worst_outside, 1e-9);
+  EXPECT_NEAR(area_between(wheel, on.profile), off.removed_area_m2, 0.005 * off.removed_area_m2);
+}
+
+
 // The samples of a profile taken back as nodes (what UpdateProfile does after cutting the refit of an overhang cut)
 // give the same curve: the nodes exactly, the length to the polyline's (chord) error, points between nodes to ~nm.
 TEST(ProfileUpdate, FromArcLengthSamplesKeepsTheNodes) {

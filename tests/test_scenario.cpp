@@ -118,6 +118,7 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("load_balance: consistent\n") + kClasses, "load_balance");
   ExpectError(std::string("kp_spin_about_centre: maybe\n") + kClasses, "kp_spin_about_centre");
   ExpectError(std::string("kp_local_flexibilities: [1]\n") + kClasses, "kp_local_flexibilities");
+  ExpectError(std::string("update: {overhang_cut: keep}\n") + kClasses, "update.overhang_cut");
 }
 
 TEST(Scenario, MinimalFileTakesTheDefaults) {
@@ -130,6 +131,9 @@ TEST(Scenario, MinimalFileTakesTheDefaults) {
   EXPECT_NEAR(s.load_tolerance, 1e-6, 0.0);         // WheelContactOptions' default
   EXPECT_NEAR(s.load_acceptance, 0.10, 0.0);        // StepWearOptions' default
   EXPECT_EQ(s.load_balance, LoadBalance::Total);    // WheelContactOptions' default
+  EXPECT_TRUE(s.update.overhang_cut_conserves_area);  // ProfileUpdateOptions' default
+  EXPECT_FALSE(ParseScenario(std::string("update: {overhang_cut: wear_off}\n") + kClasses, "w.yaml")
+                   .update.overhang_cut_conserves_area);
   EXPECT_EQ(ParseScenario(std::string("load_balance: total-consistent\n") + kClasses, "c.yaml").load_balance,
             LoadBalance::TotalConsistent);
   // the KP FASTSIM variants: off as in WheelContactOptions, and what ApplyScenarioContact passes on

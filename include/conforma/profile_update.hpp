@@ -100,6 +100,12 @@ struct ProfileUpdateOptions {
   // 1.25 mm, material removed only) and the result is single-valued in y by construction (see step 3 above). The
   // area removed by the cut and its rounding is reported; false: invalid instead.
   bool cut_overhangs = true;
+  // With a cut: the lip is flange-face wear the contact would have done there instead of on the band below it, so
+  // the step removes the area the wear law gave (docs/physics-reference.md §8.7): the removed depth over the cut is
+  // scaled by k (ProfileUpdateResult::cut_area_scale), tapering back to 1 as a half cosine over two smoothing
+  // lengths (>= 5 mm) on either side, with k set so that removal + cut = the removal's area unscaled; the step's
+  // distance is unchanged. false: the lip is cut on top of the step's wear (it is worn off at once).
+  bool cut_conserves_area = true;
   int step_index = 0;             // only for messages ("wear step 3: ...")
 };
 
@@ -121,6 +127,11 @@ struct ProfileUpdateResult {
   // m^2, extra area removed by cutting overhangs and rounding the cut (ProfileUpdateOptions::cut_overhangs): the area
   // between the profile after the removal and the final one; 0 when no cut was made
   double overhang_cut_area_m2 = 0.0;
+  // the factor on the removed depth around the cut with ProfileUpdateOptions::cut_conserves_area (1: no cut)
+  double cut_area_scale = 1.0;
+  // with cut_conserves_area and a cut: whether a k balanced the areas (to 1e-3); false: the lip was cut on top of
+  // the wear (as without the option) because no taper of up to 16 smoothing lengths (>= 40 mm) held the band
+  bool cut_area_conserved = true;
   DepthSmoothingResult smoothing;  // diagnostics of step 1 (before scaling)
   ProfileValidity validity;        // of the new profile (default when NoWear or the removal failed)
 };

@@ -41,7 +41,8 @@
 //   rail_wear_law: usfd | <file>
 //   contact_model: conformal            (hertz | kp | kpec | conformal; the command line may override)
 //   update: { cap_mm: 0.4, smoothing_mm: 5.0, steps: 20, total_km: 0 (0: no limit; the last step is shortened
-//             to land on it), max_curvature_1_m: 1000 }
+//             to land on it), max_curvature_1_m: 1000, overhang_cut: conserve_area | wear_off
+//             (ProfileUpdateOptions::cut_conserves_area; default conserve_area) }
 //   rail: { fixed: true, steps: 0, cap_mm: 0.1, spacing_mm: 0 }  (fixed: paper 003 §7; steps m > 0: paper 003
 //         Fig. 11; spacing_mm: arc-length spacing of the updated rails, 0 = that of the rail before the step)
 //   track_classes: [ { name, radius_m (0 = tangent), cant_mm, speed_kmh, share (fractions or percent; they are
@@ -122,6 +123,7 @@ struct ScenarioUpdate {
   int steps = 20;                      // wheel steps (per rail step)
   double total_km = 0.0;               // 0: unlimited; otherwise stop (and shorten the last step) at this distance
   double max_curvature_1_m = 1.0e3;    // validity check (ProfileValidityOptions)
+  bool overhang_cut_conserves_area = true;  // ProfileUpdateOptions::cut_conserves_area (overhang_cut key)
 };
 
 struct ScenarioRail {

@@ -196,6 +196,10 @@ struct WearStepRecord {
   std::vector<std::string> kinematics_fallback_reasons;  // one per such class (KinematicsFallbackLog::describe)
   double depth_cap_m = 0.0;          // cap used, m (the scenario's, or halved by invalid_step_halvings)
   double overhang_cut_area_m2 = 0.0; // m^2, area cut from a flange worn past vertical (ProfileUpdateResult)
+  // the overhang cut's area conservation (ProfileUpdateResult::cut_area_scale, cut_area_conserved): the factor on the
+  // removed depth around the cut (1: no cut, or update.overhang_cut wear_off), and whether it balanced the areas
+  double cut_area_scale = 1.0;
+  bool cut_area_conserved = true;
   std::array<int, kContactModelCount> patches_by_model{};  // see StepWear
 };
 

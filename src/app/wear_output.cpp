@@ -72,10 +72,11 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
   if (!out) throw InputError(dir + "/steps.csv: cannot write");
   out << "rail_step,step,km,step_km,max_depth_mm,sd_mm,sh_mm,qr_mm,tread_wear_mm,flange_wear_mm,wall_s,"
          "max_curvature_1_m,samples,failed_contacts,approximate_contacts,hertz_fallback_contacts,kinematics_fallbacks,"
-         "depth_cap_mm,patches_hertz,patches_kp,patches_kpec,patches_conformal,overhang_cut_mm2\n";
+         "depth_cap_mm,patches_hertz,patches_kp,patches_kpec,patches_conformal,overhang_cut_mm2,"
+         "cut_area_scale,cut_area_conserved\n";
   out << std::setprecision(8);
   const WheelDimensions& d0 = r.initial_dimensions;
-  out << "0,0,0,0,0," << d0.sd_m * 1e3 << "," << d0.sh_m * 1e3 << "," << d0.qr_m * 1e3 << ",0,0,0,0,0,0,0,0,0,0,0,0,0,0,0\n";
+  out << "0,0,0,0,0," << d0.sd_m * 1e3 << "," << d0.sh_m * 1e3 << "," << d0.qr_m * 1e3 << ",0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,1,1\n";
   for (const WearStepRecord& s : r.steps) {
     out << s.rail_step << "," << s.step << "," << s.km << "," << s.step_km << "," << s.max_depth_m * 1e3 << ","
         << s.dimensions.sd_m * 1e3 << "," << s.dimensions.sh_m * 1e3 << "," << s.dimensions.qr_m * 1e3 << ","
@@ -84,7 +85,7 @@ void FinishWearOutput(const std::string& dir, const WearSimulationResult& r) {
         << s.depth_cap_m * 1e3;
     for (ContactModel m : {ContactModel::Hertz, ContactModel::Kp, ContactModel::Kpec, ContactModel::Conformal})
       out << "," << s.patches_by_model[static_cast<int>(m)];
-    out << "," << s.overhang_cut_area_m2 * 1e6 << "\n";
+    out << "," << s.overhang_cut_area_m2 * 1e6 << "," << s.cut_area_scale << "," << (s.cut_area_conserved ? 1 : 0) << "\n";
   }
   // why each kinematics fallback of steps.csv happened (class: reason; replacement), one row per class and step
   std::ofstream fb(dir + "/kinematics_fallbacks.csv");
@@ -143,6 +144,11 @@ void PrintRunWarnings(const std::string& label, const WearSimulationResult& r) {
                   label.c_str(), s.step, s.kinematics_fallbacks);
       for (const std::string& why : s.kinematics_fallback_reasons) std::printf("        %s\n", why.c_str());
     }
+    if (!s.cut_area_conserved)
+      std::printf("  note: [%s] step %d: the overhang cut could not keep the step's wear area (no scaling of the "
+                  "depth around the cut balanced it); the lip was cut on top of the wear, %.4g mm^2 (steps.csv "
+                  "cut_area_conserved)\n",
+                  label.c_str(), s.step, s.overhang_cut_area_m2 * 1e6);
   }
   if (r.status != WearSimulationStatus::Completed)
     std::printf("  WARNING: [%s] stopped: %s %s\n", label.c_str(), to_string(r.status), r.message.c_str());

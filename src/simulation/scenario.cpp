@@ -534,12 +534,19 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   }
   if (root["contact_model"]) s.model = ModelFromName(r, r.text(root["contact_model"], "contact_model"));
   if (const YAML::Node u = root["update"]) {
-    r.check_keys(u, "update", {"cap_mm", "smoothing_mm", "steps", "total_km", "max_curvature_1_m"});
+    r.check_keys(u, "update", {"cap_mm", "smoothing_mm", "steps", "total_km", "max_curvature_1_m", "overhang_cut"});
     if (u["cap_mm"]) s.update.cap_m = 1e-3 * r.number(u["cap_mm"], "update.cap_mm");
     if (u["smoothing_mm"]) s.update.smoothing_cutoff_m = 1e-3 * r.number(u["smoothing_mm"], "update.smoothing_mm");
     if (u["steps"]) s.update.steps = r.integer(u["steps"], "update.steps");
     if (u["total_km"]) s.update.total_km = r.number(u["total_km"], "update.total_km");
     if (u["max_curvature_1_m"]) s.update.max_curvature_1_m = r.number(u["max_curvature_1_m"], "update.max_curvature_1_m");
+    if (u["overhang_cut"]) {
+      const std::string v = r.text(u["overhang_cut"], "update.overhang_cut");
+      if (v != "conserve_area" && v != "wear_off")
+        r.fail("update.overhang_cut", "must be conserve_area (the face keeps the step's wear area) or wear_off (the "
+                                      "lip is cut on top of the wear), not '" + v + "'");
+      s.update.overhang_cut_conserves_area = v == "conserve_area";
+    }
   }
   if (const YAML::Node pub = root["published"]) ParsePublished(r, pub, &s.published);
   if (const YAML::Node rs = root["rail"]) {

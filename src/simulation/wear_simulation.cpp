@@ -201,6 +201,7 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       uo.max_depth_per_step_m = scenario.update.cap_m;
       uo.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
       uo.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
+      uo.cut_conserves_area = scenario.update.overhang_cut_conserves_area;
       uo.step_index = j;
       if (total_km > 0.0) uo.max_distance_step_m = (total_km - km) * 1e3;
       WearDistribution depth = wear.wheel.wheel_depth_per_metre;
@@ -233,6 +234,8 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       rec.validity = up.validity;
       rec.depth_cap_m = uo.max_depth_per_step_m;
       rec.overhang_cut_area_m2 = up.overhang_cut_area_m2;
+      rec.cut_area_scale = up.cut_area_scale;
+      rec.cut_area_conserved = up.cut_area_conserved;
       if (up.status != ProfileUpdateStatus::Updated) {
         result.status = up.status == ProfileUpdateStatus::NoWear ? WearSimulationStatus::NoWear
                                                                    : WearSimulationStatus::InvalidProfile;

@@ -240,6 +240,57 @@ ProfileValidity CheckProfileValidity(const Profile& updated, const Profile& prev
   return v;
 }
 
+namespace {
+
+// Removal along the normal, validity, and (ProfileUpdateOptions::cut_overhangs) the overhang cut of a profile that
+// folds after the removal. cut_s_min_m / cut_s_max_m: the old profile's arc length of the first and last sample
+// the cut moved (mapped by the ratio of the arc lengths).
+struct CutOutcome {
+  Profile profile;
+  ProfileValidity validity;
+  double cut_area_m2 = 0.0, cut_s_min_m = 0.0, cut_s_max_m = 0.0;
+};
+CutOutcome RemoveAndCut(const Profile& profile, const WearDistribution& depth, const ProfileUpdateOptions& o,
+                        const std::string& step) {
+  CutOutcome out;
+  out.profile = RemoveAlongNormal(profile, depth, o.output_spacing_m, step);
+  out.validity = CheckProfileValidity(out.profile, profile, o.validity);
+  if (!out.validity.valid && o.cut_overhangs && out.validity.y_folds_before == 0 &&
+      out.validity.y_folds_after > out.validity.y_folds_before) {
+    // Cut, round the cut's corners (material removed only), refit (interpolating) at the old spacing, and cut the
+    // refitted samples again: the spline between the nodes of the refit is not monotone where the curvature jumps,
+    // so its samples may step back in y by a little (nm); the second cut moves them by that little only, far below
+    // the spacing, and the samples are kept as the new profile's nodes as they are, single-valued in y by
+    // construction (the Aosta run stopped on 1.2-1.3 um steps back the earlier smoothing-spline rounding left).
+    const std::vector<Eigen::Vector2d> uncut = out.profile.samples();
+    std::vector<Eigen::Vector2d> points = uncut;
+    CutOverhangs(&points);
+    RoundCutCorners(uncut, &points, kOverhangCutRoundingRadius);
+    const double h = out.profile.spacing(), ratio = profile.length() / out.profile.length();
+    bool any = false;
+    for (size_t i = 0; i < points.size(); ++i) {
+      if (points[i] == uncut[i]) continue;
+      const double s_old = h * static_cast<double>(i) * ratio;
+      if (!any) out.cut_s_min_m = s_old;
+      out.cut_s_max_m = s_old, any = true;
+    }
+    try {
+      std::vector<Eigen::Vector2d> refit =
+          RefitInArcLengthOrder(std::move(points), profile.kind(), out.profile.spacing(), 0.0, step).samples();
+      CutOverhangs(&refit);
+      out.profile = Profile::FromArcLengthSamples(refit, profile.kind(), step);
+      out.cut_area_m2 = area_between(uncut, out.profile.samples());
+      out.validity = CheckProfileValidity(out.profile, profile, o.validity);
+    } catch (const InputError& e) {
+      out.validity.valid = false;
+      out.validity.reason = std::string("after cutting the overhang: ") + e.what();
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution& accumulated,
                                   double distance_represented_m, const ProfileUpdateOptions& o) {
   require_positive(distance_represented_m, "distance_represented_m");
@@ -271,39 +322,70 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
   for (double& v : r.removed_depth.depth_m) v *= r.scale_factor;
   r.max_depth_m = r.removed_depth.max_depth_m();
   r.removed_area_m2 = r.removed_depth.area_m2();
-  // 3. removal along the normal and re-parametrisation, 4. validity
+  // 3. removal along the normal and re-parametrisation, 4. validity (with the overhang cut)
   Profile updated;
+  CutOutcome outcome;
   try {
-    updated = RemoveAlongNormal(profile, r.removed_depth, o.output_spacing_m, step);
+    outcome = RemoveAndCut(profile, r.removed_depth, o, step);
   } catch (const InputError& e) {
     r.status = ProfileUpdateStatus::InvalidProfile;
     r.message = e.what();
     return r;
   }
-  r.validity = CheckProfileValidity(updated, profile, o.validity);
-  if (!r.validity.valid && o.cut_overhangs && r.validity.y_folds_before == 0 &&
-      r.validity.y_folds_after > r.validity.y_folds_before) {
-    // Cut, round the cut's corners (material removed only), refit (interpolating) at the old spacing, and cut the
-    // refitted samples again: the spline between the nodes of the refit is not monotone where the curvature jumps,
-    // so its samples may step back in y by a little (nm); the second cut moves them by that little only, far below
-    // the spacing, and the samples are kept as the new profile's nodes as they are, single-valued in y by
-    // construction (the Aosta run stopped on 1.2-1.3 um steps back the earlier smoothing-spline rounding left).
-    const std::vector<Eigen::Vector2d> uncut = updated.samples();
-    std::vector<Eigen::Vector2d> points = uncut;
-    CutOverhangs(&points);
-    RoundCutCorners(uncut, &points, kOverhangCutRoundingRadius);
-    try {
-      std::vector<Eigen::Vector2d> refit =
-          RefitInArcLengthOrder(std::move(points), profile.kind(), updated.spacing(), 0.0, step).samples();
-      CutOverhangs(&refit);
-      updated = Profile::FromArcLengthSamples(refit, profile.kind(), step);
-      r.overhang_cut_area_m2 = area_between(uncut, updated.samples());
-      r.validity = CheckProfileValidity(updated, profile, o.validity);
-    } catch (const InputError& e) {
-      r.validity.valid = false;
-      r.validity.reason = std::string("after cutting the overhang: ") + e.what();
+  if (o.cut_overhangs && o.cut_conserves_area && outcome.cut_area_m2 > 0.0 && outcome.validity.valid) {
+    // The lip the cut removes is flange-face wear the contact would have done there instead of on the band below
+    // it (docs/physics-reference.md §8.7): the face keeps the step's wear area. The depth is scaled by
+    // 1 - (1 - k) w(s), k in [0, 1], with a window w = 1 over the cut (along the old profile) tapering to 0 as a
+    // half cosine over `reach` on either side (two smoothing lengths, at least 5 mm; a step in the scaled depth
+    // would leave a step in the profile), so that the area the removal and the cut take together equals the
+    // removal's area at k = 1: k = 0 removes nothing over the cut and cuts nothing (the old profile was
+    // single-valued), k = 1 exceeds it by the cut; bisection on the area. When the window does not hold the band
+    // that makes the overhang (no k balances the areas), the taper is doubled.
+    const double target = r.removed_area_m2, tolerance = 1e-3 * target;
+    double reach = std::max(2.0 * o.smoothing.cutoff_wavelength_m, 5e-3);
+    bool balanced = false;
+    for (int widen = 0; widen < 4 && !balanced; ++widen, reach *= 2.0) {
+      auto window = [&](double s) {
+        const double outside = std::max(outcome.cut_s_min_m - s, s - outcome.cut_s_max_m);
+        if (outside <= 0.0) return 1.0;
+        return outside >= reach ? 0.0 : 0.5 + 0.5 * std::cos(M_PI * outside / reach);
+      };
+      auto scaled = [&](double k) {
+        WearDistribution d = r.removed_depth;
+        for (size_t i = 0; i < d.size(); ++i) d.depth_m[i] *= 1.0 - (1.0 - k) * window(d.s(i));
+        return d;
+      };
+      double lo = 0.0, hi = 1.0, best_miss = std::numeric_limits<double>::infinity(), best_k = 1.0;
+      CutOutcome best;
+      WearDistribution best_depth;
+      for (int it = 0; it < 40 && hi - lo > 1e-7; ++it) {
+        const double k = 0.5 * (lo + hi);
+        const WearDistribution d = scaled(k);
+        CutOutcome c;
+        try {
+          c = RemoveAndCut(profile, d, o, step);
+        } catch (const InputError&) {
+          hi = k;
+          continue;
+        }
+        const double total = d.area_m2() + c.cut_area_m2;
+        (total > target ? hi : lo) = k;
+        if (c.validity.valid && std::fabs(total - target) < best_miss)
+          best_miss = std::fabs(total - target), best_k = k, best = std::move(c), best_depth = d;
+      }
+      if (!(best_miss <= tolerance)) continue;
+      balanced = true;
+      outcome = std::move(best);
+      r.removed_depth = std::move(best_depth);
+      r.cut_area_scale = best_k;
+      r.max_depth_m = r.removed_depth.max_depth_m();
+      r.removed_area_m2 = r.removed_depth.area_m2();
     }
+    r.cut_area_conserved = balanced;  // false: the lip is cut on top of the wear (as wear_off), reported
   }
+  updated = std::move(outcome.profile);
+  r.validity = outcome.validity;
+  r.overhang_cut_area_m2 = outcome.cut_area_m2;
   if (!r.validity.valid) {
     r.status = ProfileUpdateStatus::InvalidProfile;
     r.message = step + ": updated profile is invalid: " + r.validity.reason;
