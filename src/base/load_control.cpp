@@ -59,11 +59,20 @@ LoadControlResult SolveLoadControlFrom(const std::function<double(double)>& carr
   double step = std::copysign(std::max(std::fabs(first_step_m), 1e-12), -f0);
   double a = 0.0, fa = f0, b = step, fb = carried_load(b) - load_N;
   int evaluations = 1;
-  while ((fa < 0.0) == (fb < 0.0) && fb != 0.0) {
+  // Until the carried load crosses the load or comes within the tolerance: the secant through the last two
+  // evaluations where it points on the same way, at most to where the doubled step would go; else the step doubled.
+  // (The first step is good to ~1e-3 of itself, so a step that stops short typically leaves ~1e-6 of the load: the
+  // secant lands on the load where doubling overshot by the whole step and cost a bracket step more.)
+  int secant_steps = 0;
+  while ((fa < 0.0) == (fb < 0.0) && fb != 0.0 && std::fabs(fb) > tolerance_abs) {
     step *= 2.0;
-    if (std::fabs(b + step) > max_push_m) return result;  // NoBracket
+    double next = b + step;
+    const double secant = b - fb * (b - a) / (fb - fa);
+    const bool towards = step > 0.0 ? (secant > b && secant < next) : (secant < b && secant > next);
+    if (towards && secant_steps < 8) next = secant, ++secant_steps;  // (bounded: the doubling always progresses)
+    if (std::fabs(next) > max_push_m) return result;  // NoBracket
     a = b, fa = fb;
-    b += step;
+    b = next;
     fb = carried_load(b) - load_N;
     ++evaluations;
   }
