@@ -6,10 +6,12 @@
 
 #include <cstring>
 #include <exception>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <new>
 #include <string>
+#include <system_error>
 
 #include <Eigen/Geometry>
 
@@ -86,6 +88,9 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   if (e.rigid_equilibrium != 0 && e.rigid_equilibrium != 1)
     throw InputError("options.rigid_equilibrium must be 0 (the state's vertical_m and roll_rad) or 1 (rigid contact "
                      "of both wheels), not " + std::to_string(e.rigid_equilibrium));
+  if (e.parallel_wheels != 0 && e.parallel_wheels != 1)
+    throw InputError("options.parallel_wheels must be 0 (both wheels on the calling thread) or 1 (the right wheel on "
+                     "a second thread), not " + std::to_string(e.parallel_wheels));
   const bool load_control = e.normal_mode == CONFORMA_LOAD_CONTROL;
   if (load_control) {
     conforma::require_non_negative(e.vertical_load_N[0], "options.vertical_load_N[0] (left)");
@@ -103,16 +108,29 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   result->roll_rad = pose.roll_rad;
   const conforma::WheelsetVelocity velocity{s.forward_speed_m_s, s.lateral_velocity_m_s, s.yaw_rate_rad_s,
                                             s.axle_angular_velocity_rad_s};
-  conforma::WheelContactOptions options = model.contact;  // per-call copy: the handle stays untouched
-  options.load_tolerance = e.load_tolerance;
-  for (Side side : {Side::Left, Side::Right}) {
-    const int i = conforma::side_index(side);
-    options.vertical_load_N = load_control ? e.vertical_load_N[i] : -1.0;
-    const conforma::WheelContactReport r =
-        model.lut ? conforma::EvaluateContactLut(*model.lut, *model.geometry, side, pose, velocity, options)
-                  : SolveWheelContact(*model.geometry, side, pose, velocity, options);
-    FillWheel(*model.geometry, side, r, &result->wheel[i]);
+  const conforma::WheelContactOptions& contact = model.contact;
+  auto solve = [&](Side side) {
+    conforma::WheelContactOptions options = contact;  // per-call copy: the handle stays untouched
+    options.load_tolerance = e.load_tolerance;
+    options.vertical_load_N = load_control ? e.vertical_load_N[conforma::side_index(side)] : -1.0;
+    return model.lut ? conforma::EvaluateContactLut(*model.lut, *model.geometry, side, pose, velocity, options)
+                     : SolveWheelContact(*model.geometry, side, pose, velocity, options);
+  };
+  // The two wheels are independent (each its own candidates, load control and tangential problem, on the immutable
+  // handle): with parallel_wheels the right one runs on a second thread while this one solves the left, the same
+  // arithmetic either way. A failure to start the thread falls back to solving it here.
+  conforma::WheelContactReport left, right;
+  std::future<conforma::WheelContactReport> right_async;
+  if (e.parallel_wheels == 1 && !model.lut) {  // (a table look-up is far cheaper than starting a thread)
+    try {
+      right_async = std::async(std::launch::async, solve, Side::Right);
+    } catch (const std::system_error&) {
+    }
   }
+  left = solve(Side::Left);  // (if it throws, right_async's destructor waits for the right wheel)
+  right = right_async.valid() ? right_async.get() : solve(Side::Right);
+  FillWheel(*model.geometry, Side::Left, left, &result->wheel[conforma::side_index(Side::Left)]);
+  FillWheel(*model.geometry, Side::Right, right, &result->wheel[conforma::side_index(Side::Right)]);
 }
 
 }  // namespace
@@ -149,6 +167,7 @@ void conforma_default_evaluation_options(conforma_evaluation_options* o) {
   o->rigid_equilibrium = 0;
   o->approach_m = 0.05e-3;
   o->load_tolerance = conforma::WheelContactOptions().load_tolerance;
+  o->parallel_wheels = 0;
 }
 
 conforma_status conforma_model_create(const conforma_track_params* track, const conforma_contact_params* contact,

@@ -27,9 +27,11 @@
  * the given y and yaw, exactly as the command line `conforma contact` does; in approach mode the wheelset is
  * then lowered by approach_m below that rigid position.
  *
- * COST (tests/bench/bench_capi.cpp, conforma_bench --benchmark_filter=CApi, one core): the conformal model takes
- * about 0.3 ms of CPU per wheelset pose in approach mode and about 1.4 ms in load control (each load iteration
- * re-solves the Kik-Piotrowski problem); the Hertz model about 0.17 ms in load control.
+ * COST (tests/bench/bench_capi.cpp, conforma_bench --benchmark_filter=CApiWheelset, both wheels, CPU time): the
+ * conformal model takes about 0.2 ms per wheelset pose in approach mode and about 0.3-0.35 ms in load control (three
+ * Kik-Piotrowski and FASTSIM solves per wheel); the Hertz model about 0.15 ms in load control. parallel_wheels = 1
+ * solves the two wheels on two threads: the wall time can drop towards half where a second core is free, at some
+ * CPU more (starting the thread, ~10 us); on a loaded machine it was slower (bench _parallel cases).
  *
  * THREAD SAFETY: a model handle is immutable after conforma_model_create(). conforma_evaluate() on the SAME
  * handle may be called from any number of threads at once; each call uses only its own stack/heap workspace.
@@ -67,7 +69,8 @@ extern "C" {
 #endif
 
 /* Version of this interface; bumped on any incompatible change of a struct or function below. */
-#define CONFORMA_C_API_VERSION 2  /* 2: conforma_wheel_result gained warning_count and warnings */
+#define CONFORMA_C_API_VERSION 3  /* 2: conforma_wheel_result gained warning_count and warnings;
+                                     3: conforma_evaluation_options gained parallel_wheels */
 #define CONFORMA_MAX_PATCHES 4    /* patches stored per wheel (more are counted in patches_found) */
 #define CONFORMA_ERROR_TEXT 256   /* size of the error texts, including the terminating 0 */
 #define CONFORMA_WARNING_TEXT 1024 /* size of a wheel's warnings text, including the terminating 0 */
@@ -137,6 +140,10 @@ typedef struct conforma_evaluation_options {
   double approach_m;               /* rigid_equilibrium with CONFORMA_GIVEN_APPROACH: push-down below rigid contact,
                                       default 5e-5 m */
   double load_tolerance;           /* relative tolerance of load control, > 0; default 1e-6 */
+  int parallel_wheels;             /* 0 (default): both wheels on the calling thread; 1: the right wheel on a second
+                                      thread while the calling thread solves the left (the wheels are independent:
+                                      results bit-identical to 0; pays only with a free core, see COST); any other
+                                      value is CONFORMA_ERROR_INPUT */
 } conforma_evaluation_options;
 
 typedef struct conforma_patch_result {

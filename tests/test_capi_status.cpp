@@ -94,7 +94,7 @@ TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
       o = CApiMBenchModel::RigidEquilibriumOptions();
     }
   }
-  EXPECT_EQ(conforma_api_version(), 2);
+  EXPECT_EQ(conforma_api_version(), 3);  // 3: conforma_evaluation_options.parallel_wheels
 }
 
 // The exact model through the C API (issue 14): the same creep forces as the pipeline's SolveWheelContact, i.e. as

@@ -99,6 +99,32 @@ TEST(CApiThreads, ConcurrentEvaluationsOnOneHandleEqualTheSerialRun) {
   }
 }
 
+// parallel_wheels = 1 (the right wheel on a second thread) and 0 (the default: both on the calling thread) give the
+// same result to the last bit, in load control and given approach; any other value is an input error.
+TEST(CApiThreads, ParallelWheelsEqualTheSerialWheels) {
+  ModelHolder h("conformal");
+  ASSERT_NE(h.model, nullptr);
+  conforma_evaluation_options parallel = Options(), serial = Options();
+  EXPECT_EQ(serial.parallel_wheels, 0);
+  parallel.parallel_wheels = 1;
+  for (int mode : {CONFORMA_LOAD_CONTROL, CONFORMA_GIVEN_APPROACH}) {
+    parallel.normal_mode = serial.normal_mode = mode;
+    for (int k = 0; k < 12; ++k) {
+      conforma_wheelset_state s = State(k);
+      conforma_wheelset_result a, b;
+      ASSERT_EQ(conforma_evaluate(h.model, &s, &parallel, &a), CONFORMA_OK) << a.error_message;
+      ASSERT_EQ(conforma_evaluate(h.model, &s, &serial, &b), CONFORMA_OK) << b.error_message;
+      EXPECT_EQ(std::memcmp(&a, &b, sizeof a), 0) << "mode " << mode << " case " << k;
+    }
+  }
+  conforma_evaluation_options bad = Options();
+  bad.parallel_wheels = 2;
+  conforma_wheelset_state s = State(0);
+  conforma_wheelset_result r;
+  EXPECT_EQ(conforma_evaluate(h.model, &s, &bad, &r), CONFORMA_ERROR_INPUT);
+  EXPECT_NE(std::string(r.error_message).find("options.parallel_wheels"), std::string::npos) << r.error_message;
+}
+
 TEST(CApiThreads, TrackFrameTotalsAgreeWithThePatchForcesAndTheLoad) {
   ModelHolder h("conformal");
   ASSERT_NE(h.model, nullptr);

@@ -38,11 +38,14 @@ LoadControlResult SolveLoadControl(const std::function<double(double)>& carried_
                                    double relative_tolerance, LoadResponse response = LoadResponse::Linear);
 
 // Load control continued from a push where the carried load is already known (push 0 carries carried_at_zero_N),
-// for an expensive carried_load (the wheel's total vertical force, docs/physics-reference.md §3.6.1): the first
-// step first_step_m (its sign turned towards the load) is doubled until the carried load crosses the load, within
-// |push| <= max_push_m (else NoBracket), then the bracket is narrowed by the one root finder. carried_load must
-// increase with the push on the bracket. iterations counts every evaluation (the bracket's too); if
-// |carried_at_zero - load| is within the tolerance, push_m = 0 and no evaluation is made.
+// for an expensive carried_load (the wheel's total vertical force, docs/physics-reference.md §3.6.1): after the
+// first step first_step_m (its sign turned towards the load), while the carried load has neither crossed the load
+// nor come within the tolerance, the next push is the secant through the last two evaluations where it goes further
+// the same way (at most 8 times, and not beyond the doubled step), else the step doubled, within |push| <= max_push_m
+// (else NoBracket); a crossing is then narrowed by the one root finder. The secant and root-finder steps are taken
+// on sign(F) |F|^(2/3) - load^(2/3) (linear in the push for a Hertzian contact, as LoadResponse::HertzPower), the
+// tolerance on the carried load itself. carried_load must increase with the push on the bracket. iterations counts every evaluation (the bracket's too); if |carried_at_zero - load| is within the
+// tolerance, push_m = 0 and no evaluation is made.
 LoadControlResult SolveLoadControlFrom(const std::function<double(double)>& carried_load, double carried_at_zero_N,
                                        double load_N, double first_step_m, double max_push_m,
                                        double relative_tolerance);
