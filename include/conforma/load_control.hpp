@@ -44,8 +44,9 @@ LoadControlResult SolveLoadControl(const std::function<double(double)>& carried_
 // the same way (at most 8 times, and not beyond the doubled step), else the step doubled, within |push| <= max_push_m
 // (else NoBracket); a crossing is then narrowed by the one root finder. The secant and root-finder steps are taken
 // on sign(F) |F|^(2/3) - load^(2/3) (linear in the push for a Hertzian contact, as LoadResponse::HertzPower), the
-// tolerance on the carried load itself. carried_load must increase with the push on the bracket. iterations counts every evaluation (the bracket's too); if |carried_at_zero - load| is within the
-// tolerance, push_m = 0 and no evaluation is made.
+// tolerance on the carried load itself. carried_load must increase with the push on the bracket. iterations counts
+// every evaluation (the bracket's too); if |carried_at_zero - load| is within the tolerance, push_m = 0 and no
+// evaluation is made.
 LoadControlResult SolveLoadControlFrom(const std::function<double(double)>& carried_load, double carried_at_zero_N,
                                        double load_N, double first_step_m, double max_push_m,
                                        double relative_tolerance);

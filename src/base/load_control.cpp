@@ -7,6 +7,12 @@
 
 namespace conforma {
 
+namespace {
+// The Hertzian coordinate of a carried load, sign(F) |F|^(2/3): linear in the push for a Hertzian contact
+// (F ~ delta^1.5, docs/physics-reference.md §1.2).
+double HertzianCoordinate(double carried) { return std::cbrt(carried * carried) * (carried < 0.0 ? -1.0 : 1.0); }
+}  // namespace
+
 const char* to_string(LoadControlStatus status) {
   switch (status) {
     case LoadControlStatus::Ok: return "ok";
@@ -21,12 +27,12 @@ LoadControlResult SolveLoadControl(const std::function<double(double)>& carried_
   LoadControlResult result;
   const bool hertz_power = response == LoadResponse::HertzPower;
   // HertzPower: f = N^(2/3) - L^(2/3); |N - L| <= tol L is then |f| <~ (2/3) tol L^(2/3) (first order)
-  const double target = hertz_power ? std::cbrt(load_N * load_N) : load_N;
+  const double target = hertz_power ? HertzianCoordinate(load_N) : load_N;
   double last_carried = 0.0;
   auto residual = [&](double push) {
     last_carried = carried_load(push);
     if (!hertz_power) return last_carried - load_N;
-    return std::cbrt(last_carried * last_carried) * (last_carried < 0.0 ? -1.0 : 1.0) - target;
+    return HertzianCoordinate(last_carried) - target;
   };
   const double tolerance_abs = hertz_power ? (2.0 / 3.0) * relative_tolerance * target : relative_tolerance * load_N;
   // bracket the push: the first guess is close, so start with a small step and expand
@@ -60,17 +66,16 @@ LoadControlResult SolveLoadControlFrom(const std::function<double(double)>& carr
   // through an evaluation far from the load (a flange, 25-65 % over it at the candidates' push-down) lands ~1e-5
   // from it where the straight line through F landed ~1e-4 (one evaluation more). Convergence is judged on the
   // load itself: |F - load| <= tolerance. h has the sign of F - load.
-  auto hertz = [](double carried) { return std::cbrt(carried * carried) * (carried < 0.0 ? -1.0 : 1.0); };
-  const double target = hertz(load_N);
+  const double target = HertzianCoordinate(load_N);
   double last_residual = 0.0;  // F - load at the last evaluation
   auto evaluate = [&](double push) {
     const double carried = carried_load(push);
     last_residual = carried - load_N;
-    return hertz(carried) - target;
+    return HertzianCoordinate(carried) - target;
   };
   // towards the load: a larger push where too little is carried
   double step = std::copysign(std::max(std::fabs(first_step_m), 1e-12), -f0);
-  double a = 0.0, ha = hertz(carried_at_zero_N) - target, b = step, hb = evaluate(b);
+  double a = 0.0, ha = HertzianCoordinate(carried_at_zero_N) - target, b = step, hb = evaluate(b);
   int evaluations = 1;
   // Until the carried load crosses the load or comes within the tolerance: the secant through the last two
   // evaluations where it points on the same way, at most to where the doubled step would go; else the step doubled.

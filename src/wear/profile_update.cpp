@@ -289,6 +289,58 @@ CutOutcome RemoveAndCut(const Profile& profile, const WearDistribution& depth, c
   return out;
 }
 
+// ProfileUpdateOptions::cut_conserves_area (docs/physics-reference.md §8.7): the lip the cut removes is flange-face
+// wear the contact would have done there instead of on the band below it, so the face keeps the step's wear area.
+// The depth r->removed_depth is scaled by 1 - (1 - k) w(s), k in [0, 1], with a window w = 1 over the cut (along the
+// old profile) tapering to 0 as a half cosine over `reach` on either side (two smoothing lengths, at least 5 mm; a
+// step in the scaled depth would leave a step in the profile), so that the area the removal and the cut take together
+// equals the removal's area at k = 1: k = 0 removes nothing over the cut and cuts nothing (the old profile was
+// single-valued), k = 1 exceeds it by the cut; bisection on the area (its own loop: a trial whose removal fails or
+// whose profile is invalid only moves the bracket, and the best valid trial is kept). When the window does not hold
+// the band that makes the overhang (no k balances the areas), the taper is doubled. Balanced: *outcome, the removed
+// depth, its maximum and area and cut_area_scale are replaced; otherwise left as they are (the lip cut on top of the
+// wear) and r->cut_area_conserved = false.
+void ConserveAreaAroundCut(const Profile& profile, const ProfileUpdateOptions& o, const std::string& step,
+                           CutOutcome* outcome, ProfileUpdateResult* r) {
+  const double target = r->removed_area_m2, tolerance = 1e-3 * target;
+  double reach = std::max(2.0 * o.smoothing.cutoff_wavelength_m, 5e-3);
+  for (int widen = 0; widen < 4; ++widen, reach *= 2.0) {
+    std::vector<double> window(r->removed_depth.size());
+    for (size_t i = 0; i < window.size(); ++i) {
+      const double s = r->removed_depth.s(i);
+      const double outside = std::max(outcome->cut_s_min_m - s, s - outcome->cut_s_max_m);
+      window[i] = outside <= 0.0 ? 1.0 : outside >= reach ? 0.0 : 0.5 + 0.5 * std::cos(M_PI * outside / reach);
+    }
+    double lo = 0.0, hi = 1.0, best_miss = std::numeric_limits<double>::infinity(), best_k = 1.0;
+    CutOutcome best;
+    WearDistribution best_depth;
+    for (int it = 0; it < 40 && hi - lo > 1e-7; ++it) {
+      const double k = 0.5 * (lo + hi);
+      WearDistribution d = r->removed_depth;
+      for (size_t i = 0; i < d.size(); ++i) d.depth_m[i] *= 1.0 - (1.0 - k) * window[i];
+      CutOutcome c;
+      try {
+        c = RemoveAndCut(profile, d, o, step);
+      } catch (const InputError&) {
+        hi = k;
+        continue;
+      }
+      const double total = d.area_m2() + c.cut_area_m2;
+      (total > target ? hi : lo) = k;
+      if (c.validity.valid && std::fabs(total - target) < best_miss)
+        best_miss = std::fabs(total - target), best_k = k, best = std::move(c), best_depth = std::move(d);
+    }
+    if (!(best_miss <= tolerance)) continue;
+    *outcome = std::move(best);
+    r->removed_depth = std::move(best_depth);
+    r->cut_area_scale = best_k;
+    r->max_depth_m = r->removed_depth.max_depth_m();
+    r->removed_area_m2 = r->removed_depth.area_m2();
+    return;
+  }
+  r->cut_area_conserved = false;  // the lip is cut on top of the wear (as wear_off), reported
+}
+
 }  // namespace
 
 ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution& accumulated,
@@ -323,7 +375,6 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
   r.max_depth_m = r.removed_depth.max_depth_m();
   r.removed_area_m2 = r.removed_depth.area_m2();
   // 3. removal along the normal and re-parametrisation, 4. validity (with the overhang cut)
-  Profile updated;
   CutOutcome outcome;
   try {
     outcome = RemoveAndCut(profile, r.removed_depth, o, step);
@@ -332,58 +383,8 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
     r.message = e.what();
     return r;
   }
-  if (o.cut_overhangs && o.cut_conserves_area && outcome.cut_area_m2 > 0.0 && outcome.validity.valid) {
-    // The lip the cut removes is flange-face wear the contact would have done there instead of on the band below
-    // it (docs/physics-reference.md §8.7): the face keeps the step's wear area. The depth is scaled by
-    // 1 - (1 - k) w(s), k in [0, 1], with a window w = 1 over the cut (along the old profile) tapering to 0 as a
-    // half cosine over `reach` on either side (two smoothing lengths, at least 5 mm; a step in the scaled depth
-    // would leave a step in the profile), so that the area the removal and the cut take together equals the
-    // removal's area at k = 1: k = 0 removes nothing over the cut and cuts nothing (the old profile was
-    // single-valued), k = 1 exceeds it by the cut; bisection on the area. When the window does not hold the band
-    // that makes the overhang (no k balances the areas), the taper is doubled.
-    const double target = r.removed_area_m2, tolerance = 1e-3 * target;
-    double reach = std::max(2.0 * o.smoothing.cutoff_wavelength_m, 5e-3);
-    bool balanced = false;
-    for (int widen = 0; widen < 4 && !balanced; ++widen, reach *= 2.0) {
-      auto window = [&](double s) {
-        const double outside = std::max(outcome.cut_s_min_m - s, s - outcome.cut_s_max_m);
-        if (outside <= 0.0) return 1.0;
-        return outside >= reach ? 0.0 : 0.5 + 0.5 * std::cos(M_PI * outside / reach);
-      };
-      auto scaled = [&](double k) {
-        WearDistribution d = r.removed_depth;
-        for (size_t i = 0; i < d.size(); ++i) d.depth_m[i] *= 1.0 - (1.0 - k) * window(d.s(i));
-        return d;
-      };
-      double lo = 0.0, hi = 1.0, best_miss = std::numeric_limits<double>::infinity(), best_k = 1.0;
-      CutOutcome best;
-      WearDistribution best_depth;
-      for (int it = 0; it < 40 && hi - lo > 1e-7; ++it) {
-        const double k = 0.5 * (lo + hi);
-        const WearDistribution d = scaled(k);
-        CutOutcome c;
-        try {
-          c = RemoveAndCut(profile, d, o, step);
-        } catch (const InputError&) {
-          hi = k;
-          continue;
-        }
-        const double total = d.area_m2() + c.cut_area_m2;
-        (total > target ? hi : lo) = k;
-        if (c.validity.valid && std::fabs(total - target) < best_miss)
-          best_miss = std::fabs(total - target), best_k = k, best = std::move(c), best_depth = d;
-      }
-      if (!(best_miss <= tolerance)) continue;
-      balanced = true;
-      outcome = std::move(best);
-      r.removed_depth = std::move(best_depth);
-      r.cut_area_scale = best_k;
-      r.max_depth_m = r.removed_depth.max_depth_m();
-      r.removed_area_m2 = r.removed_depth.area_m2();
-    }
-    r.cut_area_conserved = balanced;  // false: the lip is cut on top of the wear (as wear_off), reported
-  }
-  updated = std::move(outcome.profile);
+  if (o.cut_conserves_area && outcome.cut_area_m2 > 0.0 && outcome.validity.valid)  // (a cut: cut_overhangs)
+    ConserveAreaAroundCut(profile, o, step, &outcome, &r);
   r.validity = outcome.validity;
   r.overhang_cut_area_m2 = outcome.cut_area_m2;
   if (!r.validity.valid) {
@@ -392,7 +393,7 @@ ProfileUpdateResult UpdateProfile(const Profile& profile, const WearDistribution
     return r;
   }
   r.status = ProfileUpdateStatus::Updated;
-  r.profile = std::move(updated);
+  r.profile = std::move(outcome.profile);
   return r;
 }
 
