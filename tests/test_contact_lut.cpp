@@ -130,11 +130,14 @@ TEST(ContactLut, NodeValuesEqualTheDirectSolveToRoundOff) {
 }
 
 // The conformal model's normal solution at a node is the direct one; its creep forces come from the curved-patch
-// FASTSIM scheme on the patch resampled on 12 lateral stations (the KP solution has ~31 strips), so they agree with
-// the direct ones to the resampling error: within 1 % of mu Q (measured <= 0.5 % on the default scenario's tread).
-TEST(ContactLut, ConformalNodeNormalExactCreepClose) {
+// FASTSIM scheme on the patch's stations, which are the KP solution's strips for a one-lobe patch (kLutStations =
+// kDefaultKpStrips), with the traction bound carrying the surface pressure integral as in the direct solve: the same
+// forces to round-off (docs/physics-reference.md §17.3; with 12 stations and the bound scaled to F_n the difference
+// reached 1-6 % of mu Q at the flange root of S1002 / 50E4 1:20).
+TEST(ContactLut, ConformalNodeCreepForcesEqualTheDirectSolve) {
   const ContactLut& lut = ConformalLut();
-  for (double y_mm : {-2.0, 0.5, 3.0}) {
+  int checked = 0;
+  for (double y_mm : {-2.0, 0.5, 3.0, 4.0}) {
     const double Q = 60e3;
     const WheelContactReport d = Direct(Side::Left, y_mm * 1e-3, 2e-3, Q, Options(ContactModel::Conformal));
     const WheelContactReport l = FromLut(lut, Side::Left, y_mm * 1e-3, 2e-3, Q, Options(ContactModel::Conformal));
@@ -142,11 +145,15 @@ TEST(ContactLut, ConformalNodeNormalExactCreepClose) {
     for (size_t j = 0; j < d.patches.size(); ++j) {
       EXPECT_NEAR(l.patches[j].fn_N, d.patches[j].fn_N, 1e-9 * Q);
       EXPECT_NEAR(l.patches[j].y_contact_rail_m, d.patches[j].y_contact_rail_m, 1e-15);
-      EXPECT_NEAR(l.patches[j].fx_N, d.patches[j].fx_N, 0.01 * 0.3 * Q) << "y " << y_mm;
-      EXPECT_NEAR(l.patches[j].fy_N, d.patches[j].fy_N, 0.01 * 0.3 * Q) << "y " << y_mm;
-      EXPECT_NEAR(l.patches[j].mz_Nm, d.patches[j].mz_Nm, 0.05 * std::fabs(d.patches[j].mz_Nm) + 1.0) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].fx_N, d.patches[j].fx_N, 1e-6 * 0.3 * Q) << "y " << y_mm;
+      EXPECT_NEAR(l.patches[j].fy_N, d.patches[j].fy_N, 1e-6 * 0.3 * Q) << "y " << y_mm;
+      // the table's spin moment is the curvilinear sum (x p_s - s p_x) dA, the direct one the moment of the strips on
+      // the curved surface about the reference point: they differ by the surface's curvature (measured <= 2.4e-4)
+      EXPECT_NEAR(l.patches[j].mz_Nm, d.patches[j].mz_Nm, 1e-3 * std::fabs(d.patches[j].mz_Nm) + 1e-3) << "y " << y_mm;
+      ++checked;
     }
   }
+  EXPECT_GE(checked, 4);
 }
 
 // Between the nodes of single-topology cells on the tread (0.25 mm, 2 mrad, 20 kN steps): the targets,

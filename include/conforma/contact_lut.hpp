@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "conforma/geometry.hpp"
+#include "conforma/kik_piotrowski.hpp"
 #include "conforma/progress.hpp"
 #include "conforma/wheel_contact.hpp"
 
@@ -56,8 +57,18 @@ struct ContactLutGrid {
   size_t index(size_t iy, size_t ipsi, size_t iq) const { return (iy * yaw_rad.size() + ipsi) * load_N.size() + iq; }
 };
 
-// Lateral stations of a KP patch in the table, and the values kept per station (LutPatch::stations).
-constexpr int kLutStations = 12, kLutStationFields = 16;
+// Lateral stations of a KP patch in the table, and the values kept per station (LutPatch::stations). As many
+// stations as the KP solver's default strips (kDefaultKpStrips): a one-lobe patch's stations are then its strips and
+// the table's creep forces at a node are the direct solve's (docs/physics-reference.md §17.3; 12 stations left up to
+// 6 % of mu Q at the flange root).
+constexpr int kLutStations = kDefaultKpStrips, kLutStationFields = 16;
+
+// Default match distance of a table's patches (ContactLutHeader::match_distance_m): two nodes' patches whose
+// reference points lie farther apart along the rail are different patches, so a contact point that jumps by more
+// is a topology change (patch tracks, docs/physics-reference.md §17.2), not a position to interpolate. 2 mm: on
+// S1002 / 50E4 1:20 the tread contact jumps by 2.1-2.5 mm near y = 3.8 mm, which 3 mm interpolated across
+// (rail y p99 0.10-0.11 mm at 1000 random poses instead of 0.03-0.05 mm, §17.5).
+constexpr double kDefaultLutMatchDistance_m = 2e-3;
 
 // One patch of a node's normal solution (PatchReport fields; lengths m, forces N, pressures Pa, angles rad).
 struct LutPatch {
@@ -121,7 +132,7 @@ struct ContactLutHeader {
   int kp_strips = 31;
   double candidate_strip_width_m = 0.1e-3, patch_combine_distance_m = 4e-3;
   bool conformal_variable_penetration = true;
-  double match_distance_m = 3e-3;  // patches farther apart along the rail are different patches (topology)
+  double match_distance_m = kDefaultLutMatchDistance_m;  // patches farther apart along the rail are different patches
   // Geometry fingerprint, checked at evaluation against the geometry passed: rail origin eta per side, nominal radius
   std::array<double, 2> rail_origin_eta_m{}, nominal_radius_m{};
   double generation_s = 0.0;  // wall time of BuildContactLut, s
@@ -140,7 +151,7 @@ struct ContactLutBuildOptions {
   // creepages and tangential switches are set by the build)
   WheelContactOptions contact;
   std::string wheel_profile, rail_profile, track;  // for the header
-  double match_distance_m = 3e-3;                  // ContactLutHeader::match_distance_m, > 0
+  double match_distance_m = kDefaultLutMatchDistance_m;  // ContactLutHeader::match_distance_m, > 0
   int threads = 0;                                 // OpenMP threads, 0: the OpenMP default
   // progress (progress.hpp), one unit per node and side (2 x grid.nodes(), "node <k>"); empty: none
   ProgressFunction on_progress;

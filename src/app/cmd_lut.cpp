@@ -105,7 +105,7 @@ void RegisterLutCommand(CLI::App& app) {
       // default grid: the default scenario's pair (contact_lut_grid.hpp, docs/architecture.md "Contact look-up table")
       std::string out = "contact_lut.h5";
       ContactLutGridText grid;
-      double match_mm = 3.0;
+      double match_mm = kDefaultLutMatchDistance_m * 1e3;
       int threads = 0;
     };
     auto b = std::make_shared<Build>();

@@ -251,7 +251,7 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
   std::vector<FastsimCreepages> creep;
   std::vector<double> alpha;
   const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
-  double load = 0.0;
+  double load = 0.0, projected = 0.0;
   for (int k = 0; k < kLutStations; ++k) {
     const double* f = &q.stations[k * kLutStationFields];
     const double c = f[0], xm = f[1], peak = f[2];
@@ -263,12 +263,15 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
     strip.x_trail_m = xm - c;
     strip.first_element = patch.elements();
     strip.n_elements = n;
+    double strip_load = 0.0;
     for (int e = 0; e < n; ++e) {
       const double t2 = 1.0 - 2.0 * e / n, t1 = 1.0 - 2.0 * (e + 1.0) / n;  // from the leading edge
       const double p = peak * SemiEllipseMean(t1, t2);
       patch.bound_pressure_Pa.push_back(p);
-      load += p * width * 2.0 * c / n;
+      strip_load += p * width * 2.0 * c / n;
     }
+    load += strip_load;
+    projected += strip_load * std::cos(f[3]);  // along n0 (KpResult::fn_N sums cos(alpha_j) F_j the same way)
     patch.strips.push_back(strip);
     double w[3] = {0.0, 0.0, 0.0};
     for (int r = 0; r < 3; ++r)
@@ -282,11 +285,15 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
     alpha.push_back(f[3]);
   }
   *fx = *fy = *mz = 0.0;
-  if (patch.strips.empty() || !(load > 0.0)) {
+  if (patch.strips.empty() || !(load > 0.0) || !(projected > 0.0)) {
     t->status = FastsimStatus::NoContact;
     return;
   }
-  for (double& p : patch.bound_pressure_Pa) p *= in.normal_force_N / load;  // the bound carries the normal force
+  // The bound is the pressure on the curved surface, whose resultant along the reference normal n0 is F_n: scaled so
+  // that sum p dA cos(alpha) = F_n, i.e. sum p dA = the surface integral (fn_surface_N, as the direct KP FASTSIM's
+  // CurvedFastsimOptions::load_N, patch_model_kp.cpp). Scaled to F_n itself the bound was short by 1 - F_n/fn_surface
+  // (up to 6 % of mu Q at the flange, docs/physics-reference.md §17.3).
+  for (double& p : patch.bound_pressure_Pa) p *= in.normal_force_N / projected;
   std::vector<FastsimStripTotals> totals;
   SolveFastsimStripsEach(patch, L, creep, in.friction_coefficient, in.rolling_speed_m_per_s, options.fastsim, t, &totals);
   t->fx_N = t->fy_N = t->mz_Nm = t->adhesion_area_m2 = t->slip_area_m2 = t->frictional_power_W = 0.0;

@@ -17,7 +17,8 @@ namespace conforma {
 namespace {
 
 constexpr const char* kFormat = "conforma-contact-lut";
-constexpr int kFormatVersion = 1;
+// 2: kLutStations = 31 stations per KP patch (1: 12)
+constexpr int kFormatVersion = 2;
 
 // The serial HDF5 library is not thread-safe: one process-wide lock around every file operation.
 std::mutex& Hdf5Mutex() {
@@ -213,7 +214,8 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
   AttrString(root, "status_names", "0 ok, 1 no_contact, 2 not_converged, 3 no_rigid_equilibrium");
   AttrString(root, "model_names", "0 hertz, 1 kp, 2 kpec, 3 conformal, 4 exact (ContactModel)");
   AttrString(root, "stations",
-             "KP patches: rows = patches, 12 lateral stations x 16 values: half-length c [m], strip centre x [m], "
+             "KP patches: rows = patches, " + std::to_string(kLutStations) + " lateral stations x " +
+                 std::to_string(kLutStationFields) + " values: half-length c [m], strip centre x [m], "
              "peak pressure [Pa], normal rotation alpha [rad], rigid slip map 3 x 4 (w_x [-], w_s at x = 0 [-], "
              "dw_s/dx [1/m]; columns as creepage_map), over [station_s_min_m, station_s_max_m]");
   AttrString(root, "slip_map",
@@ -271,7 +273,10 @@ ContactLut LoadContactLut(const std::string& path) {
   if (file.id < 0) Fail(path, "cannot be opened");
   const hid_t root = file.id;
   if (ReadAttrString(root, "format", path) != kFormat) Fail(path, "not a Conforma contact LUT (attribute format)");
-  if (ReadAttrInt(root, "format_version", path) != kFormatVersion) Fail(path, "unsupported format_version");
+  const int version = ReadAttrInt(root, "format_version", path);
+  if (version != kFormatVersion)
+    Fail(path, "format_version " + std::to_string(version) + " is not this version's " +
+                   std::to_string(kFormatVersion) + " (version 1 kept 12 stations per KP patch): build the table again");
   ContactLut lut;
   ContactLutHeader& h = lut.header;
   h.wheel_profile = ReadAttrString(root, "wheel_profile", path);
