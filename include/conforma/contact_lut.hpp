@@ -10,7 +10,8 @@
 // node keeps every patch of that normal solution, ordered along the rail (gauge side first), and what the creep
 // forces need at any velocity: the affine map from the wheelset velocities to the reference creepages (the
 // pipeline's own creepages at four velocities, LutPatch::creepage_map), and for the KP models the patch itself on
-// 12 lateral stations with the affine map of each strip's rigid slip (LutPatch::stations).
+// kLutStations lateral stations (a one-lobe patch's strips) with the affine map of each strip's rigid slip
+// (LutPatch::stations).
 //
 // EVALUATION (EvaluateContactLut, MakeLutContactFunction): inside a grid cell whose eight corner nodes have one
 // patch topology (same status, patch count, model per patch, each patch within match_distance_m along the rail of
