@@ -297,6 +297,9 @@ __attribute__((target("avx"))) void SemiEllipseLanesAvx(const double* c_in, cons
     scale *= 2.0;
     const __m256d weight_v = _mm256_set1_pd(weight), scale_v = _mm256_set1_pd(scale);
     for (int v = 0; v < kVectors; ++v) {
+      // a vector whose lanes all converged is left as it is (every blend below would keep it): its division and
+      // root are skipped
+      if (!_mm256_movemask_pd(active[v])) continue;
       const __m256d inverse_p = _mm256_div_pd(one, p[v]);
       const __m256d a_next = _mm256_add_pd(a[v], _mm256_mul_pd(b[v], inverse_p));
       const __m256d g = _mm256_mul_pd(e[v], inverse_p);
