@@ -4,8 +4,10 @@
 // table. The other members are the track-frame vectors (force_track_N, spin_moment_track_Nm, contact_point_track_m,
 // normal_track), filled by conforma_c.cpp from the track-frame conversion.
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
+#include <vector>
 
 #include "conforma/wheel_contact.hpp"
 #include "conforma/wheel_contact_fields.hpp"
@@ -48,15 +50,36 @@ static_assert(sizeof(conforma_patch_result) ==
               "conforma_patch_result changed: map its new member to the PatchReport table in kCPatchFields");
 static_assert(sizeof(kCPatchFields) / sizeof(kCPatchFields[0]) == 17, "17 scalar members of conforma_patch_result");
 
+// For each field VisitPatchFields visits, in its (fixed) order: the kCPatchFields entries of that name, as a bit
+// mask. Found once by name, so that each fill walks the visit with a counter instead of comparing every name with
+// every C member (the comparisons were ~0.6 % of a conformal C API evaluation).
+inline const std::vector<std::uint32_t>& CPatchFieldsOfVisit() {
+  static_assert(sizeof(kCPatchFields) / sizeof(kCPatchFields[0]) <= 32, "one bit per C member");
+  static const std::vector<std::uint32_t> masks = [] {
+    std::vector<std::uint32_t> out;
+    VisitPatchFields(PatchReport{}, [&out](const char* key, const auto&) {
+      std::uint32_t mask = 0;
+      for (size_t f = 0; f < sizeof(kCPatchFields) / sizeof(kCPatchFields[0]); ++f)
+        if (std::strcmp(kCPatchFields[f].table_key, key) == 0) mask |= std::uint32_t{1} << f;
+      out.push_back(mask);
+    });
+    return out;
+  }();
+  return masks;
+}
+
 // Fills the scalar members of `out` from `patch` through the field table.
 inline void FillCPatchScalars(const PatchReport& patch, conforma_patch_result* out) {
-  VisitPatchFields(patch, [out](const char* key, const auto& value) {
+  const std::vector<std::uint32_t>& masks = CPatchFieldsOfVisit();
+  size_t visit = 0;
+  VisitPatchFields(patch, [out, &masks, &visit](const char*, const auto& value) {
     using T = std::decay_t<decltype(value)>;
+    const std::uint32_t mask = masks[visit++];
     if constexpr (std::is_arithmetic_v<T>) {
-      for (const CPatchField& f : kCPatchFields) {
-        if (std::strcmp(f.table_key, key) != 0) continue;
-        char* member = reinterpret_cast<char*>(out) + f.offset;
-        if (f.is_int) {
+      for (size_t f = 0; (mask >> f) != 0; ++f) {  // (up to the highest set bit; none for a field without member)
+        if (!((mask >> f) & 1u)) continue;
+        char* member = reinterpret_cast<char*>(out) + kCPatchFields[f].offset;
+        if (kCPatchFields[f].is_int) {
           const int v = static_cast<int>(value);
           std::memcpy(member, &v, sizeof v);
         } else {

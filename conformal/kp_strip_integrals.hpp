@@ -15,6 +15,14 @@ double SemiEllipseOverDistance(double half_length, double centre_offset, double 
 constexpr int kMaxSemiEllipseBatch = 8;
 void SemiEllipseOverDistanceBatch(double half_length, double centre_offset, const double* u, int count,
                                   double* values);
+// The instruction sets of F1's vector kernel: the batches use the widest the CPU runs (AVX-512VL: the AVX operations
+// with 32 registers). Every kernel is bit-identical to the scalar form; SemiEllipseOverDistanceLanes runs a given
+// one (for the test of that), std::logic_error where it is not available (CPU or build).
+enum class SemiEllipseKernel { Scalar, Avx, Avx512vl };
+bool SemiEllipseKernelAvailable(SemiEllipseKernel kernel);
+// F1 at count lanes, each with its own half-length c[i] >= 0, centre offset d[i] and distance u[i] (any count).
+void SemiEllipseOverDistanceLanes(SemiEllipseKernel kernel, const double* c, const double* d, const double* u,
+                                  int count, double* values);
 // The same integral by quadrature (the solver's former method, kept as the test reference): the log-singular part
 // phi(0) (asinh...) in closed form, the bounded rest by graded Gauss quadrature in t (x = d + c sin t).
 double SemiEllipseOverDistanceQuadrature(double half_length, double centre_offset, double u);

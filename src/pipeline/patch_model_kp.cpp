@@ -53,7 +53,7 @@ PatchNormalSolution SolveKpPatchNormal(ContactModel model, const PatchInput& inp
 
 PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNormalSolution& normal,
                                                const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                               const WheelContactOptions& options) {
+                                               const WheelContactOptions& options, bool keep_field) {
   CurvedFastsimOptions co;
   co.elements_per_strip = options.fastsim_elements;
   co.marching = options.fastsim.marching;
@@ -70,7 +70,13 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
   in.strip_creepages = model == ContactModel::Conformal && !creepages.per_strip.empty()
                            ? creepages.per_strip
                            : std::vector<FastsimCreepages>{creepages.reference};
-  CurvedFastsimResult t = SolveCurvedFastsim(normal.kp, in, co);  // not const: its field is moved out below
+  // The FASTSIM buffers are reused from call to call on this thread (a wheel's load control solves the tangential
+  // problem at every evaluation; fresh ones cost an allocation and a zero fill of every element array each time).
+  // Deterministic: SolveCurvedFastsim overwrites every element and total of both before it reads them, so what a
+  // previous call left in them never reaches a result (bit-identical to fresh buffers).
+  thread_local CurvedFastsimWorkspace workspace;
+  thread_local CurvedFastsimResult t;
+  SolveCurvedFastsim(normal.kp, in, co, &workspace, &t);
   PatchTangentialSolution out;
   out.solved = true;
   out.status = to_string(t.status);
@@ -83,13 +89,14 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
   out.adhesion_area_m2 = t.adhesion_area_m2;
   out.slip_area_m2 = t.slip_area_m2;
   out.frictional_power_W = t.frictional_power_W;
+  if (!keep_field) return out;  // the totals are all the caller reads
   out.element_width_m.assign(t.field.x_m.size(), 0.0);
   const std::vector<KpStrip>& strips = normal.kp.strips;
   for (size_t k = 0; k < strips.size() && k < t.strip_first_element.size(); ++k) {
     const size_t end = k + 1 < t.strip_first_element.size() ? t.strip_first_element[k + 1] : out.element_width_m.size();
     for (size_t e = t.strip_first_element[k]; e < end; ++e) out.element_width_m[e] = strips[k].ds_m;
   }
-  out.field = std::move(t.field);
+  out.field = std::move(t.field);  // (the next call on this thread allocates the field anew)
   return out;
 }
 

@@ -54,7 +54,7 @@ PatchNormalSolution SolvePatchNormal(ContactModel model, const PatchInput& input
 
 PatchTangentialSolution SolvePatchTangential(ContactModel model, const PatchNormalSolution& normal,
                                              const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                             const WheelContactOptions& options) {
+                                             const WheelContactOptions& options, bool keep_field) {
   const ContactModelSolver& solver = ContactModelSolverOf(model);
   PatchTangentialSolution out;
   if (!creepages.any()) {  // FASTSIM gives exactly zero traction and slip: nothing to solve
@@ -62,7 +62,7 @@ PatchTangentialSolution SolvePatchTangential(ContactModel model, const PatchNorm
     return out;
   }
   if (!solver.has_tangential) return out;  // "not_solved"
-  return solver.tangential(model, normal, creepages, rolling_speed_m_per_s, options);
+  return solver.tangential(model, normal, creepages, rolling_speed_m_per_s, options, keep_field);
 }
 
 void CopyFieldTotals(PatchTangentialSolution& out) {
