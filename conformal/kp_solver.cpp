@@ -64,6 +64,9 @@ using kp_detail::PatchInterpolant;
 // Strip collocation (docs/physics-reference.md §5.3): cut of the virtual range (fraction of its width) from which a
 // second collocation solve is blended in, fully at the upper value
 constexpr double kCollocationRecutLow = 0.02;
+// Strip collocation (§5.3): a coarse strip whose virtual half-length is below this fraction of its lobe's largest takes
+// no part (c = 0). A Hertzian lobe's outermost coarse strip has c / c_max >= sqrt(1 - (1 - 1/n)^2), 0.42 for n = 11.
+constexpr double kCollocationMinHalfLength = 0.02;
 constexpr double kCollocationRecutHigh = 0.06;
 // KPEC (§3.3): total gap between the lobes of the eps = 0.5 region, as a multiple of their summed widths, from which
 // the lobes get separate equivalent ellipses (blended in up to the upper value)
@@ -743,6 +746,20 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       }
       if (edges_on.empty()) return false;
       out.strips = strips_on(edges_on);
+      // A coarse strip whose virtual half-length is a tiny fraction of its lobe's largest (centre just inside a
+      // steep edge of the virtual interpenetration) is outside the contact for the collocation: its influence column
+      // vanishes with c while its required displacement does not, so its amplitude P ~ 1/c and the ratio P/c that
+      // the strips take from it ~ 1/c^2 (a worn tread: c = 3e-9 m gave P = 1e11 Pa and F_n 7e9 N, and F_n jumped by
+      // 3x within 2 nm of approach; docs/physics-reference.md §5.3).
+      for (size_t l = 0; l < on.size(); ++l) {
+        if (out.first[l] < 0) continue;
+        const int base = out.first[l];
+        double c_max = 0.0;
+        for (int k = 0; k < nodes; ++k) c_max = std::max(c_max, out.strips[base + k].half_length_m);
+        for (int k = 0; k < nodes; ++k)
+          if (out.strips[base + k].half_length_m < kCollocationMinHalfLength * c_max)
+            out.strips[base + k].half_length_m = 0.0;
+      }
       return kp_detail::CollocateStripPeaks(patch, out.strips, delta, elastic, blanco, coupling_K, out.peaks,
                                             out.free_peaks);
     };

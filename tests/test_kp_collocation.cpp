@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include "conforma/error.hpp"
 #include "conforma/hertz.hpp"
@@ -103,4 +105,54 @@ TEST(KpCollocation, ConformalMeetsTheExactModelOnTheWornGaugeCorner) {
 }
 
 }  // namespace
+}  // namespace conforma
+
+namespace conforma {
+
+// A worn tread's patch whose virtual interpenetration has two lobes with a steep edge between them
+// (tests/data/kp_worn_tread/two_lobe_patch.txt, from the default scenario with the dynamic provider): the outermost
+// coarse strip of the first lobe sits just inside that edge, where the virtual half-length c drops to nm while the
+// required displacement does not. Its collocated amplitude went as 1/c and the ratio P/c the strips take from it as
+// 1/c^2: within 2 nm of approach F_n jumped from 20 kN to 7e9 N (p_max 3e16 Pa), and the wheel's load control failed
+// there. Such a coarse strip now takes no part (kCollocationMinHalfLength): the force is continuous and smooth.
+TEST(KpCollocation, CoarseStripAtASteepLobeEdgeTakesNoPart) {
+  std::ifstream in(std::string(CONFORMA_SOURCE_DIR) + "/tests/data/kp_worn_tread/two_lobe_patch.txt");
+  ASSERT_TRUE(in.good());
+  std::string line;
+  while (in.peek() == '#') std::getline(in, line);
+  PatchGeometry patch;
+  double approach = 0.0;
+  size_t strips = 0;
+  in >> patch.ds_m >> approach >> strips;
+  for (size_t k = 0; k < strips; ++k) {
+    double s, gap, A, r, alpha, x;
+    in >> s >> gap >> A >> r >> alpha >> x;
+    patch.s_m.push_back(s);
+    patch.gap_m.push_back(gap);
+    patch.longitudinal_curvature_per_m.push_back(A);
+    patch.wheel_radius_m.push_back(r);
+    patch.alpha_rad.push_back(alpha);
+    patch.x_offset_m.push_back(x);
+  }
+  ASSERT_TRUE(in.good());
+  ASSERT_EQ(patch.s_m.size(), 98u);
+  const KpOptions o = ConformalKpecOptions(Material{});
+  std::vector<double> fn;
+  double pmax = 0.0;
+  for (int i = -20; i <= 20; ++i) {  // +-40 nm around the approach of the blow-up, 2 nm steps
+    const KpResult r = SolveKikPiotrowskiForApproach(patch, approach + i * 2e-9, o);
+    ASSERT_EQ(r.status, KpStatus::Ok) << i;
+    fn.push_back(r.fn_N);
+    pmax = std::max(pmax, r.pmax_Pa);
+  }
+  EXPECT_LT(pmax, 3e9);  // about 2.1 GPa throughout
+  // F_n grows with the approach, about 0.7 N per nm here (Hertz: dF/dd = 1.5 F / d); every 2 nm step within 3x that
+  for (size_t k = 1; k < fn.size(); ++k) {
+    const double step = fn[k] - fn[k - 1];
+    const double hertz_like = 1.5 * fn[k] / (approach + (static_cast<int>(k) - 20) * 2e-9) * 2e-9;
+    EXPECT_GT(step, 0.0) << k;
+    EXPECT_LT(step, 3.0 * hertz_like) << k;
+  }
+}
+
 }  // namespace conforma
