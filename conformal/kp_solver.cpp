@@ -66,6 +66,8 @@ using kp_detail::PatchInterpolant;
 constexpr double kCollocationRecutLow = 0.02;
 // Strip collocation (§5.3): a coarse strip whose virtual half-length is below this fraction of its lobe's largest takes
 // no part (c = 0). A Hertzian lobe's outermost coarse strip has c / c_max >= sqrt(1 - (1 - 1/n)^2), 0.42 for n = 11.
+// At its re-entry the strip's ratio P/c is still inflated: F_n may jump there (7.5 % on a worn tread; 10 % removed
+// that jump but changed the Aosta run, which then stopped at wear step 16: docs/physics-reference.md §5.3).
 constexpr double kCollocationMinHalfLength = 0.02;
 constexpr double kCollocationRecutHigh = 0.06;
 // KPEC (§3.3): total gap between the lobes of the eps = 0.5 region, as a multiple of their summed widths, from which
@@ -754,10 +756,10 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       for (size_t l = 0; l < on.size(); ++l) {
         if (out.first[l] < 0) continue;
         const int base = out.first[l];
-        double c_max = 0.0;
-        for (int k = 0; k < nodes; ++k) c_max = std::max(c_max, out.strips[base + k].half_length_m);
+        double lobe_c_max = 0.0;
+        for (int k = 0; k < nodes; ++k) lobe_c_max = std::max(lobe_c_max, out.strips[base + k].half_length_m);
         for (int k = 0; k < nodes; ++k)
-          if (out.strips[base + k].half_length_m < kCollocationMinHalfLength * c_max)
+          if (out.strips[base + k].half_length_m < kCollocationMinHalfLength * lobe_c_max)
             out.strips[base + k].half_length_m = 0.0;
       }
       return kp_detail::CollocateStripPeaks(patch, out.strips, delta, elastic, blanco, coupling_K, out.peaks,

@@ -109,21 +109,15 @@ TEST(KpCollocation, ConformalMeetsTheExactModelOnTheWornGaugeCorner) {
 
 namespace conforma {
 
-// A worn tread's patch whose virtual interpenetration has two lobes with a steep edge between them
-// (tests/data/kp_worn_tread/two_lobe_patch.txt, from the default scenario with the dynamic provider): the outermost
-// coarse strip of the first lobe sits just inside that edge, where the virtual half-length c drops to nm while the
-// required displacement does not. Its collocated amplitude went as 1/c and the ratio P/c the strips take from it as
-// 1/c^2: within 2 nm of approach F_n jumped from 20 kN to 7e9 N (p_max 3e16 Pa), and the wheel's load control failed
-// there. Such a coarse strip now takes no part (kCollocationMinHalfLength): the force is continuous and smooth.
-TEST(KpCollocation, CoarseStripAtASteepLobeEdgeTakesNoPart) {
-  std::ifstream in(std::string(CONFORMA_SOURCE_DIR) + "/tests/data/kp_worn_tread/two_lobe_patch.txt");
-  ASSERT_TRUE(in.good());
+// The patch of a data file (header lines '#'; ds_m, an approach, strip count; per strip s, gap, A, r, alpha, x).
+PatchGeometry ReadPatch(const std::string& name, double* approach) {
+  std::ifstream in(std::string(CONFORMA_SOURCE_DIR) + "/tests/data/kp_worn_tread/" + name);
+  EXPECT_TRUE(in.good()) << name;
   std::string line;
   while (in.peek() == '#') std::getline(in, line);
   PatchGeometry patch;
-  double approach = 0.0;
   size_t strips = 0;
-  in >> patch.ds_m >> approach >> strips;
+  in >> patch.ds_m >> *approach >> strips;
   for (size_t k = 0; k < strips; ++k) {
     double s, gap, A, r, alpha, x;
     in >> s >> gap >> A >> r >> alpha >> x;
@@ -134,25 +128,48 @@ TEST(KpCollocation, CoarseStripAtASteepLobeEdgeTakesNoPart) {
     patch.alpha_rad.push_back(alpha);
     patch.x_offset_m.push_back(x);
   }
-  ASSERT_TRUE(in.good());
-  ASSERT_EQ(patch.s_m.size(), 98u);
+  EXPECT_TRUE(in.good()) << name;
+  return patch;
+}
+
+// A worn tread's patch whose virtual interpenetration has two lobes with a steep edge between them
+// (tests/data/kp_worn_tread/two_lobe_patch.txt, from the default scenario with the dynamic provider): the outermost
+// coarse strip of the first lobe sits just inside that edge, where the virtual half-length c drops to nm while the
+// required displacement does not. Its collocated amplitude went as 1/c and the ratio P/c the strips take from it as
+// 1/c^2: within 2 nm of approach F_n jumped from 20 kN to 7e9 N (p_max 3e16 Pa), and the wheel's load control failed
+// there. Such a coarse strip now takes no part (kCollocationMinHalfLength): the force is continuous and smooth.
+// F_n over [approach - half_range, approach + half_range] in steps of `step` on a patch of tests/data/kp_worn_tread:
+// continuous and rising (each step positive and within 3x the Hertzian 1.5 F/d), p_max below 3 GPa (about 2.1-2.4 GPa).
+void ExpectSmoothRisingForce(const char* name, double half_range, double step) {
   const KpOptions o = ConformalKpecOptions(Material{});
-  std::vector<double> fn;
-  double pmax = 0.0;
-  for (int i = -20; i <= 20; ++i) {  // +-40 nm around the approach of the blow-up, 2 nm steps
-    const KpResult r = SolveKikPiotrowskiForApproach(patch, approach + i * 2e-9, o);
-    ASSERT_EQ(r.status, KpStatus::Ok) << i;
-    fn.push_back(r.fn_N);
+  double approach = 0.0;
+  const PatchGeometry patch = ReadPatch(name, &approach);
+  ASSERT_EQ(patch.s_m.size(), 98u) << name;
+  double previous = 0.0, pmax = 0.0;
+  const int n = static_cast<int>(std::lround(half_range / step));
+  for (int i = -n; i <= n; ++i) {
+    const double a = approach + i * step;
+    const KpResult r = SolveKikPiotrowskiForApproach(patch, a, o);
+    ASSERT_EQ(r.status, KpStatus::Ok) << name << " " << i;
     pmax = std::max(pmax, r.pmax_Pa);
+    if (i > -n) {
+      EXPECT_GT(r.fn_N - previous, 0.0) << name << " " << i;
+      EXPECT_LT(r.fn_N - previous, 3.0 * 1.5 * r.fn_N / a * step) << name << " " << i;
+    }
+    previous = r.fn_N;
   }
-  EXPECT_LT(pmax, 3e9);  // about 2.1 GPa throughout
-  // F_n grows with the approach, about 0.7 N per nm here (Hertz: dF/dd = 1.5 F / d); every 2 nm step within 3x that
-  for (size_t k = 1; k < fn.size(); ++k) {
-    const double step = fn[k] - fn[k - 1];
-    const double hertz_like = 1.5 * fn[k] / (approach + (static_cast<int>(k) - 20) * 2e-9) * 2e-9;
-    EXPECT_GT(step, 0.0) << k;
-    EXPECT_LT(step, 3.0 * hertz_like) << k;
-  }
+  EXPECT_LT(pmax, 3e9) << name;
+}
+
+TEST(KpCollocation, CoarseStripAtASteepLobeEdgeTakesNoPart) {
+  ExpectSmoothRisingForce("two_lobe_patch.txt", 40e-9, 2e-9);  // +-40 nm around the blow-up, 2 nm steps
+}
+
+// Known limitation (docs/physics-reference.md §5.3): where the edge strip re-enters the collocation (c = 2 % of its
+// lobe's largest) its ratio P/c is still inflated; on this second worn-tread patch F_n jumps by 7.5 % there (p_max
+// 2.1 -> 7.0 GPa) and falls slightly beyond. A 10 % threshold passes this test but changed the Aosta wear run.
+TEST(KpCollocation, DISABLED_ReenteringEdgeStripKeepsTheForceContinuous) {
+  ExpectSmoothRisingForce("two_lobe_patch_b.txt", 3e-6, 10e-9);  // +-3 um, 10 nm steps
 }
 
 }  // namespace conforma
