@@ -64,12 +64,12 @@ using kp_detail::PatchInterpolant;
 // Strip collocation (docs/physics-reference.md §5.3): cut of the virtual range (fraction of its width) from which a
 // second collocation solve is blended in, fully at the upper value
 constexpr double kCollocationRecutLow = 0.02;
+constexpr double kCollocationRecutHigh = 0.06;
 // Strip collocation (§5.3): a coarse strip whose virtual half-length is below this fraction of its lobe's largest takes
 // no part (c = 0). A Hertzian lobe's outermost coarse strip has c / c_max >= sqrt(1 - (1 - 1/n)^2), 0.42 for n = 11.
 // At its re-entry the strip's ratio P/c is still inflated: F_n may jump there (7.5 % on a worn tread; 10 % removed
 // that jump but changed the Aosta run, which then stopped at wear step 16: docs/physics-reference.md §5.3).
 constexpr double kCollocationMinHalfLength = 0.02;
-constexpr double kCollocationRecutHigh = 0.06;
 // KPEC (§3.3): total gap between the lobes of the eps = 0.5 region, as a multiple of their summed widths, from which
 // the lobes get separate equivalent ellipses (blended in up to the upper value)
 constexpr double kKpecSeparateLobesLow = 0.1;

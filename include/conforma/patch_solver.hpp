@@ -94,7 +94,7 @@ struct ContactModelSolver {
                                 const WheelContactOptions& options);
   PatchTangentialSolution (*tangential)(ContactModel model, const PatchNormalSolution& normal,
                                         const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                        const WheelContactOptions& options, bool keep_field);
+                                        const WheelContactOptions& options);
   double (*pressure_at)(const PatchNormalSolution& normal, double x_m, double s_m);  // on a solved normal problem
   std::vector<FastsimCreepages> (*strip_creepages)(const PatchNormalSolution& normal, const RigidBodyMotion& motion,
                                                    const PatchReferenceFrame& reference);
@@ -115,11 +115,11 @@ ModelSelection ChoosePatchModel(ContactModel model, const PatchInput& input, dou
 PatchNormalSolution SolvePatchNormal(ContactModel model, const PatchInput& input, double approach_m,
                                      const WheelContactOptions& options);
 // Tangential problem on a solved normal problem; status "no_creepage" without creepage (nothing solved), the
-// model's "not_solved" when it has no tangential part. keep_field false: the caller reads only the totals, and a
-// model may leave `field` and `element_width_m` empty (the KP models do; the totals are the same either way).
+// model's "not_solved" when it has no tangential part. Without options.keep_fields a model may leave `field` and
+// `element_width_m` empty (the KP models do; the totals are the same either way).
 PatchTangentialSolution SolvePatchTangential(ContactModel model, const PatchNormalSolution& normal,
                                              const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                             const WheelContactOptions& options, bool keep_field = true);
+                                             const WheelContactOptions& options);
 // Pressure of a solved normal problem at (x, s) of the patch frame.
 double PatchPressureAt(ContactModel model, const PatchNormalSolution& normal, double x_m, double s_m);
 

@@ -251,7 +251,7 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
   std::vector<FastsimCreepages> creep;
   std::vector<double> alpha;
   const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
-  double load = 0.0, projected = 0.0;
+  double projected = 0.0;
   for (int k = 0; k < kLutStations; ++k) {
     const double* f = &q.stations[k * kLutStationFields];
     const double c = f[0], xm = f[1], peak = f[2];
@@ -270,7 +270,6 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
       patch.bound_pressure_Pa.push_back(p);
       strip_load += p * width * 2.0 * c / n;
     }
-    load += strip_load;
     projected += strip_load * std::cos(f[3]);  // along n0 (KpResult::fn_N sums cos(alpha_j) F_j the same way)
     patch.strips.push_back(strip);
     double w[3] = {0.0, 0.0, 0.0};
@@ -285,7 +284,7 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
     alpha.push_back(f[3]);
   }
   *fx = *fy = *mz = 0.0;
-  if (patch.strips.empty() || !(load > 0.0) || !(projected > 0.0)) {
+  if (patch.strips.empty() || !(projected > 0.0)) {
     t->status = FastsimStatus::NoContact;
     return;
   }

@@ -56,7 +56,7 @@ KpResult ColumnsAsStrips(const BemResult& bem) {
 
 PatchTangentialSolution SolveExactPatchTangential(ContactModel, const PatchNormalSolution& normal,
                                                   const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                                  const WheelContactOptions& options, bool /*keep_field*/) {
+                                                  const WheelContactOptions& options) {
   const BemGrid& grid = normal.bem.grid;
   if (grid.nx < 1 || normal.bem.pressure_Pa.size() == 0)
     throw InputError("exact model: the tangential problem needs the BEM normal solution of the patch");

@@ -41,7 +41,7 @@ PatchNormalSolution SolveHertzPatchNormal(ContactModel, const PatchInput& input,
 
 PatchTangentialSolution SolveHertzPatchTangential(ContactModel, const PatchNormalSolution& normal,
                                                   const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                                  const WheelContactOptions& options, bool /*keep_field*/) {
+                                                  const WheelContactOptions& options) {
   FastsimHertzInput in;
   in.a_m = normal.a_m;
   in.b_m = normal.b_m;

@@ -53,7 +53,7 @@ PatchNormalSolution SolveKpPatchNormal(ContactModel model, const PatchInput& inp
 
 PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNormalSolution& normal,
                                                const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                               const WheelContactOptions& options, bool keep_field) {
+                                               const WheelContactOptions& options) {
   CurvedFastsimOptions co;
   co.elements_per_strip = options.fastsim_elements;
   co.marching = options.fastsim.marching;
@@ -89,7 +89,7 @@ PatchTangentialSolution SolveKpPatchTangential(ContactModel model, const PatchNo
   out.adhesion_area_m2 = t.adhesion_area_m2;
   out.slip_area_m2 = t.slip_area_m2;
   out.frictional_power_W = t.frictional_power_W;
-  if (!keep_field) return out;  // the totals are all the caller reads
+  if (!options.keep_fields) return out;  // the totals are all the caller reads
   out.element_width_m.assign(t.field.x_m.size(), 0.0);
   const std::vector<KpStrip>& strips = normal.kp.strips;
   for (size_t k = 0; k < strips.size() && k < t.strip_first_element.size(); ++k) {

@@ -54,7 +54,7 @@ PatchNormalSolution SolvePatchNormal(ContactModel model, const PatchInput& input
 
 PatchTangentialSolution SolvePatchTangential(ContactModel model, const PatchNormalSolution& normal,
                                              const PatchCreepages& creepages, double rolling_speed_m_per_s,
-                                             const WheelContactOptions& options, bool keep_field) {
+                                             const WheelContactOptions& options) {
   const ContactModelSolver& solver = ContactModelSolverOf(model);
   PatchTangentialSolution out;
   if (!creepages.any()) {  // FASTSIM gives exactly zero traction and slip: nothing to solve
@@ -62,7 +62,7 @@ PatchTangentialSolution SolvePatchTangential(ContactModel model, const PatchNorm
     return out;
   }
   if (!solver.has_tangential) return out;  // "not_solved"
-  return solver.tangential(model, normal, creepages, rolling_speed_m_per_s, options, keep_field);
+  return solver.tangential(model, normal, creepages, rolling_speed_m_per_s, options);
 }
 
 void CopyFieldTotals(PatchTangentialSolution& out) {
@@ -112,9 +112,12 @@ PatchSolution SolvePatch(const PatchProblem& problem, const WheelContactOptions&
       out.normal.status = to_string(out.load.status);
     }
   }
-  if (problem.solve_tangential && out.normal.in_contact)
+  if (problem.solve_tangential && out.normal.in_contact) {
+    WheelContactOptions with_field = options;  // a patch solution always carries its element field
+    with_field.keep_fields = true;
     out.tangential = SolvePatchTangential(out.model, out.normal, problem.creepages, problem.rolling_speed_m_per_s,
-                                          options);
+                                          with_field);
+  }
   return out;
 }
 

@@ -597,7 +597,7 @@ WheelContactReport SolveTangentialStage(const NormalStage& stage, const Wheelset
         creep.per_strip = strip_creepages(s, motion, ref);
       }
       const PatchTangentialSolution t =
-          SolvePatchTangential(model, s, creep, velocity.forward_speed_m_s, options, options.keep_fields);
+          SolvePatchTangential(model, s, creep, velocity.forward_speed_m_s, options);
       p.tangential_status = t.status;
       if (t.solved) {
         p.fx_N = t.fx_N;
