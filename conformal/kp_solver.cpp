@@ -65,11 +65,11 @@ using kp_detail::PatchInterpolant;
 // second collocation solve is blended in, fully at the upper value
 constexpr double kCollocationRecutLow = 0.02;
 constexpr double kCollocationRecutHigh = 0.06;
-// Strip collocation (§5.3): a coarse strip whose virtual half-length is below this fraction of its lobe's largest takes
-// no part (c = 0). A Hertzian lobe's outermost coarse strip has c / c_max >= sqrt(1 - (1 - 1/n)^2), 0.42 for n = 11.
-// At its re-entry the strip's ratio P/c is still inflated: F_n may jump there (7.5 % on a worn tread; 10 % removed
-// that jump but changed the Aosta run, which then stopped at wear step 16: docs/physics-reference.md §5.3).
-constexpr double kCollocationMinHalfLength = 0.02;
+// Strip collocation (§5.3): a coarse strip whose virtual half-length is below this fraction of its lobe's largest has
+// its contact condition blended with KP's constant ratio P / c (CollocationEdgeTie), the weight of the contact
+// condition rising smoothly from 0 at c = 0 to 1 here. A Hertzian lobe's outermost coarse strip has
+// c / c_max >= sqrt(1 - (1 - 1/n)^2), 0.42 for n = 11, so Hertzian lobes keep the pure collocation.
+constexpr double kCollocationEdgeBlend = 0.1;
 // KPEC (§3.3): total gap between the lobes of the eps = 0.5 region, as a multiple of their summed widths, from which
 // the lobes get separate equivalent ellipses (blended in up to the upper value)
 constexpr double kKpecSeparateLobesLow = 0.1;
@@ -303,8 +303,9 @@ void ValidateKpOptions(const KpOptions& options) {
     throw InputError("KpOptions.collocation_strips must be >= 2, got " + std::to_string(options.collocation_strips));
 }
 
-bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStrip>& strips, double delta,
-                         const ElasticConstants& elastic, bool blanco, double coupling_K, std::vector<double>& peaks,
+bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStrip>& strips,
+                         const std::vector<CollocationEdgeTie>& ties, double delta, const ElasticConstants& elastic,
+                         bool blanco, double coupling_K, std::vector<double>& peaks,
                          std::vector<double>& unconstrained) {
   // docs/physics-reference.md §5.3: u_n(s_i, m_i) = sum_j peak_j / (pi G c_j) I_j(s_i) = delta cos(alpha_i) - gap_i
   // at every strip's centre line point (the BEM's gap closure, §10.4), I_j of §3.5 seen from strip i.
@@ -375,6 +376,21 @@ bool CollocateStripPeaks(const PatchInterpolant& patch, const std::vector<KpStri
     for (int r = 0; r < q; ++r) {
       b(r) = required(index[r]);
       for (int c = 0; c < q; ++c) a(r, c) = influence(index[r], index[c]);
+    }
+    // §5.3, steep lobe edge: weight w (contact condition) + (1 - w) A_anchor (P_i - c_i / c_nb P_nb) = 0; a dropped
+    // neighbour carries nothing, so its term vanishes
+    for (int r = 0; r < q && !ties.empty(); ++r) {
+      const int i = index[r];
+      const CollocationEdgeTie& tie = ties[i];
+      if (!(tie.weight < 1.0)) continue;
+      const double scale = (1.0 - tie.weight) * influence(tie.anchor, tie.anchor);
+      b(r) *= tie.weight;
+      for (int c = 0; c < q; ++c) a(r, c) *= tie.weight;
+      a(r, r) += scale;
+      if (tie.neighbour >= 0 && active[tie.neighbour]) {
+        const int c = static_cast<int>(std::lower_bound(index.begin(), index.end(), tie.neighbour) - index.begin());
+        a(r, c) -= scale * strips[i].half_length_m / strips[tie.neighbour].half_length_m;
+      }
     }
     const Eigen::VectorXd x = a.partialPivLu().solve(b);
     if (!x.allFinite()) return false;
@@ -732,6 +748,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       std::vector<int> first;           // index of each lobe's first coarse strip (-1: none)
       std::vector<KpStrip> strips;
       std::vector<double> peaks, free_peaks;  // active-set and unconstrained amplitudes, Pa
+      std::vector<kp_detail::CollocationEdgeTie> ties;  // §5.3, steep lobe edge
     };
     auto solve_on = [&](const std::vector<ContactRange>& on, CoarseSolution& out) {
       out.lobes = on;
@@ -748,21 +765,34 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
       }
       if (edges_on.empty()) return false;
       out.strips = strips_on(edges_on);
-      // A coarse strip whose virtual half-length is a tiny fraction of its lobe's largest (centre just inside a
-      // steep edge of the virtual interpenetration) is outside the contact for the collocation: its influence column
-      // vanishes with c while its required displacement does not, so its amplitude P ~ 1/c and the ratio P/c that
-      // the strips take from it ~ 1/c^2 (a worn tread: c = 3e-9 m gave P = 1e11 Pa and F_n 7e9 N, and F_n jumped by
-      // 3x within 2 nm of approach; docs/physics-reference.md §5.3).
+      // A coarse strip whose virtual half-length is a small fraction of its lobe's largest (centre just inside a steep
+      // edge of the virtual interpenetration): its influence column vanishes with c while its required displacement
+      // does not, so its collocated amplitude P ~ 1/c and the ratio P/c the strips take from it ~ 1/c^2 (a worn tread:
+      // c = 3e-9 m gave P = 1e11 Pa and F_n 7e9 N; docs/physics-reference.md §5.3). Its contact condition is blended
+      // with KP's constant ratio (the inward neighbour's), the condition's weight a smoothstep of c / c_max that
+      // vanishes with c: the amplitude stays bounded and goes to 0 with c, continuously.
+      std::vector<kp_detail::CollocationEdgeTie>& ties = out.ties;
+      ties.assign(out.strips.size(), {});
       for (size_t l = 0; l < on.size(); ++l) {
         if (out.first[l] < 0) continue;
         const int base = out.first[l];
-        double lobe_c_max = 0.0;
-        for (int k = 0; k < nodes; ++k) lobe_c_max = std::max(lobe_c_max, out.strips[base + k].half_length_m);
-        for (int k = 0; k < nodes; ++k)
-          if (out.strips[base + k].half_length_m < kCollocationMinHalfLength * lobe_c_max)
-            out.strips[base + k].half_length_m = 0.0;
+        int longest = 0;
+        for (int k = 1; k < nodes; ++k)
+          if (out.strips[base + k].half_length_m > out.strips[base + longest].half_length_m) longest = k;
+        const double lobe_c_max = out.strips[base + longest].half_length_m;
+        for (int k = 0; k < nodes; ++k) {
+          const double u = lobe_c_max > 0.0 ? std::clamp(out.strips[base + k].half_length_m /
+                                                             (kCollocationEdgeBlend * lobe_c_max), 0.0, 1.0)
+                                            : 1.0;
+          kp_detail::CollocationEdgeTie& tie = ties[base + k];
+          tie.weight = u * u * (3.0 - 2.0 * u);
+          if (tie.weight < 1.0) {
+            tie.anchor = base + longest;
+            tie.neighbour = base + k + (longest > k ? 1 : -1);
+          }
+        }
       }
-      return kp_detail::CollocateStripPeaks(patch, out.strips, delta, elastic, blanco, coupling_K, out.peaks,
+      return kp_detail::CollocateStripPeaks(patch, out.strips, ties, delta, elastic, blanco, coupling_K, out.peaks,
                                             out.free_peaks);
     };
     // Contact edge in s where the amplitude vanishes (p ~ sqrt(distance) at a smooth edge: q = sign(P) P^2 linear in
@@ -826,9 +856,12 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
                                   double(nodes - 1));
       const int k = std::min(static_cast<int>(t), nodes - 2);
       const double w = t - k;
+      // a coarse strip without length takes its tied neighbour's ratio, the limit of its blended row as c -> 0
       auto ratio = [&](int i) {
-        const KpStrip& strip = c.strips[base + i];
-        return strip.half_length_m > 0.0 ? c.peaks[base + i] / strip.half_length_m : 0.0;
+        int j = base + i;
+        while (!(c.strips[j].half_length_m > 0.0) && c.ties[j].neighbour >= 0) j = c.ties[j].neighbour;
+        const KpStrip& strip = c.strips[j];
+        return strip.half_length_m > 0.0 ? c.peaks[j] / strip.half_length_m : 0.0;
       };
       return (1.0 - w) * ratio(k) + w * ratio(k + 1);
     };
