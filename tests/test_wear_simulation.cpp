@@ -111,6 +111,44 @@ TEST(WearSimulation, TotalKmShortensTheLastStep) {
   EXPECT_LT(r.steps.back().max_depth_m, sc.update.cap_m);  // the shortened step removes less than the cap
 }
 
+// update.substeps (docs/physics-reference.md §8.12): a step of cap D in 2 sub-steps is the same computation as two
+// steps of cap D/2, grouped: the same profile and km bit for bit, the counters summed, and the step removes at most D.
+TEST(WearSimulation, SubstepsAreFinerStepsGroupedUnderTheStepsCap) {
+  Scenario grouped = FastMetroSmoothed();
+  grouped.update.substeps = 2;
+  Scenario fine = FastMetroSmoothed();
+  fine.update.cap_m = 0.5 * grouped.update.cap_m;
+  WearSimulationOptions o;
+  o.contact.model = ContactModel::Hertz;
+  o.total_km = 0.0;
+  o.steps = 3;
+  const WearSimulationResult a = RunWearSimulation(grouped, o);
+  o.steps = 6;
+  const WearSimulationResult b = RunWearSimulation(fine, o);
+  ASSERT_EQ(a.status, WearSimulationStatus::Completed) << a.message;
+  ASSERT_EQ(b.status, WearSimulationStatus::Completed) << b.message;
+  ASSERT_EQ(a.steps.size(), 3u);
+  ASSERT_EQ(b.steps.size(), 6u);
+  for (size_t i = 0; i < a.steps.size(); ++i) {
+    const WearStepRecord& s = a.steps[i];
+    const WearStepRecord& f1 = b.steps[2 * i];
+    const WearStepRecord& f2 = b.steps[2 * i + 1];
+    EXPECT_EQ(s.km, f2.km) << "step " << s.step;
+    EXPECT_NEAR(s.step_km, f1.step_km + f2.step_km, 1e-12 * s.km);
+    EXPECT_EQ(s.samples, f1.samples + f2.samples);
+    EXPECT_EQ(s.failed_contacts, f1.failed_contacts + f2.failed_contacts);
+    EXPECT_EQ(s.depth_cap_m, f1.depth_cap_m + f2.depth_cap_m);
+    ASSERT_EQ(s.wheel.sample_count(), f2.wheel.sample_count());
+    for (size_t k = 0; k < s.wheel.sample_count(); ++k) EXPECT_EQ(s.wheel.sample_at(k), f2.wheel.sample_at(k));
+    // the step's largest depth: at most the cap, and at least one sub-step's (equal to it where the two sub-steps'
+    // deepest points lie apart)
+    EXPECT_LE(s.max_depth_m, grouped.update.cap_m * (1.0 + 1e-6)) << "step " << s.step;
+    EXPECT_GE(s.max_depth_m, fine.update.cap_m * (1.0 - 1e-3)) << "step " << s.step;
+    EXPECT_EQ(s.tread_hollows, f2.tread_hollows);
+    std::printf("step %d: %.1f km, largest depth %.3f mm\n", s.step, s.km, s.max_depth_m * 1e3);
+  }
+}
+
 // Adaptive step: a run that stops at an invalid profile with a fixed cap continues past that step when the cap may be
 // halved, every profile valid, and the repeated step removes exactly its (smaller) cap.
 TEST(WearSimulation, InvalidProfileHalvesTheCapInsteadOfStopping) {

@@ -40,8 +40,9 @@
 //   wear_law: usfd | <wear-law file>    (wear_law.hpp; the same law for wheel and rail unless rail_wear_law given)
 //   rail_wear_law: usfd | <file>
 //   contact_model: conformal            (hertz | kp | kpec | conformal; the command line may override)
-//   update: { cap_mm: 0.4, smoothing_mm: 5.0, steps: 20, total_km: 0 (0: no limit; the last step is shortened
-//             to land on it), max_curvature_1_m: 1000, overhang_cut: conserve_area | wear_off
+//   update: { cap_mm: 0.4, smoothing_mm: 5.0, steps: 20, substeps: 1 (each step in this many sub-steps of
+//             cap_mm / substeps, docs/physics-reference.md §8.12), total_km: 0 (0: no limit; the last step is
+//             shortened to land on it), max_curvature_1_m: 1000, overhang_cut: conserve_area | wear_off
 //             (ProfileUpdateOptions::cut_conserves_area; default conserve_area) }
 //   rail: { fixed: true, steps: 0, cap_mm: 0.1, spacing_mm: 0 }  (fixed: paper 003 §7; steps m > 0: paper 003
 //         Fig. 11; spacing_mm: arc-length spacing of the updated rails, 0 = that of the rail before the step)
@@ -121,6 +122,9 @@ struct ScenarioUpdate {
   double cap_m = 0.4e-3;               // largest wheel depth of a step (paper 003 §6)
   double smoothing_cutoff_m = 5e-3;    // DepthSmoothingOptions::cutoff_wavelength_m
   int steps = 20;                      // wheel steps (per rail step)
+  // Sub-steps per wheel step (docs/physics-reference.md §8.12): each with its own kinematics and wear on the profile
+  // the previous one left and a cap of cap_m / substeps, so a step still removes at most cap_m; 1: paper 003's update
+  int substeps = 1;
   double total_km = 0.0;               // 0: unlimited; otherwise stop (and shorten the last step) at this distance
   double max_curvature_1_m = 1.0e3;    // validity check (ProfileValidityOptions)
   bool overhang_cut_conserves_area = true;  // ProfileUpdateOptions::cut_conserves_area (overhang_cut key)

@@ -358,6 +358,8 @@ void Scenario::validate() const {
   if (!(update.cap_m > 0)) throw InputError(where + "update.cap_mm must be > 0");
   if (!(update.smoothing_cutoff_m >= 0)) throw InputError(where + "update.smoothing_mm must be >= 0");
   if (update.steps < 1) throw InputError(where + "update.steps must be >= 1");
+  if (update.substeps < 1 || update.substeps > 100)
+    throw InputError(where + "update.substeps must lie in [1, 100], got " + std::to_string(update.substeps));
   if (!(update.total_km >= 0)) throw InputError(where + "update.total_km must be >= 0");
   if (!rail_steps.fixed && rail_steps.steps < 1) throw InputError(where + "rail.steps must be >= 1 when rail.fixed is false");
   if (!(rail_steps.cap_m > 0)) throw InputError(where + "rail.cap_mm must be > 0");
@@ -534,10 +536,12 @@ Scenario ParseScenario(const std::string& yaml_text, const std::string& source, 
   }
   if (root["contact_model"]) s.model = ModelFromName(r, r.text(root["contact_model"], "contact_model"));
   if (const YAML::Node u = root["update"]) {
-    r.check_keys(u, "update", {"cap_mm", "smoothing_mm", "steps", "total_km", "max_curvature_1_m", "overhang_cut"});
+    r.check_keys(u, "update", {"cap_mm", "smoothing_mm", "steps", "substeps", "total_km", "max_curvature_1_m",
+                                 "overhang_cut"});
     if (u["cap_mm"]) s.update.cap_m = 1e-3 * r.number(u["cap_mm"], "update.cap_mm");
     if (u["smoothing_mm"]) s.update.smoothing_cutoff_m = 1e-3 * r.number(u["smoothing_mm"], "update.smoothing_mm");
     if (u["steps"]) s.update.steps = r.integer(u["steps"], "update.steps");
+    if (u["substeps"]) s.update.substeps = r.integer(u["substeps"], "update.substeps");
     if (u["total_km"]) s.update.total_km = r.number(u["total_km"], "update.total_km");
     if (u["max_curvature_1_m"]) s.update.max_curvature_1_m = r.number(u["max_curvature_1_m"], "update.max_curvature_1_m");
     if (u["overhang_cut"]) {

@@ -179,78 +179,110 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
     for (int j = 1; j <= steps; ++j) {
       if (total_km > 0.0 && km >= total_km * (1.0 - 1e-12)) break;
       const auto t0 = std::chrono::steady_clock::now();
-      const WheelsetTrackGeometry geometry(SetupWith(scenario, wheel, rails));
-      std::vector<KinematicsSeries> series(scenario.classes.size());
-      std::vector<std::string> errors(scenario.classes.size());
-      const int nc = static_cast<int>(scenario.classes.size());
       const size_t fallbacks_before = fallbacks->size();
-#pragma omp parallel for schedule(dynamic, 1)
-      for (int c = 0; c < nc; ++c) {
-        try {
-          series[c] = kinematics(geometry, scenario.classes[c], c);
-        } catch (const std::exception& e) {
-          errors[c] = e.what();
-        }
-      }
-      for (int c = 0; c < nc; ++c)
-        if (!errors[c].empty()) throw InputError("wear step " + std::to_string(j) + ": kinematics of class " +
-                                                 scenario.classes[c].name + ": " + errors[c]);
-      const StepWear wear = ComputeStepWear(geometry, scenario.classes, series, step_options, contact);
-
-      ProfileUpdateOptions uo;
-      uo.max_depth_per_step_m = scenario.update.cap_m;
-      uo.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
-      uo.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
-      uo.cut_conserves_area = scenario.update.overhang_cut_conserves_area;
-      uo.step_index = j;
-      if (total_km > 0.0) uo.max_distance_step_m = (total_km - km) * 1e3;
-      WearDistribution depth = wear.wheel.wheel_depth_per_metre;
-      if (options.edge_taper_m > 0.0) {
-        const double L = depth.length_m();
-        for (size_t i = 0; i < depth.size(); ++i) {
-          const double e = std::min(depth.s(i), L - depth.s(i));
-          if (e < options.edge_taper_m) depth.depth_m[i] *= 0.5 - 0.5 * std::cos(M_PI * e / options.edge_taper_m);
-        }
-      }
-      ProfileUpdateResult up = UpdateProfile(wheel, depth, 1.0, uo);
-      for (int h = 0; h < options.invalid_step_halvings && up.status == ProfileUpdateStatus::InvalidProfile; ++h) {
-        uo.max_depth_per_step_m *= 0.5;
-        up = UpdateProfile(wheel, depth, 1.0, uo);
-      }
-
+      const Profile step_start = wheel;
+      const int substeps = scenario.update.substeps;
       WearStepRecord rec;
       rec.rail_step = k;
       rec.step = j;
-      rec.samples = wear.samples;
-      rec.failed_contacts = wear.failed_contacts;
-      rec.approximate_contacts = wear.approximate_contacts;
-      rec.hertz_fallback_contacts = wear.hertz_fallback_contacts;
-      rec.patches_by_model = wear.patches_by_model;
+      rec.depth_cap_m = 0.0;
+      // update.substeps (docs/physics-reference.md §8.12): the step's wear in `substeps` sub-steps of cap / substeps,
+      // each with its own kinematics and wear on the profile the previous one left
+      for (int m = 0; m < substeps; ++m) {
+        if (m > 0 && total_km > 0.0 && km >= total_km * (1.0 - 1e-12)) break;
+        const WheelsetTrackGeometry geometry(SetupWith(scenario, wheel, rails));
+        std::vector<KinematicsSeries> series(scenario.classes.size());
+        std::vector<std::string> errors(scenario.classes.size());
+        const int nc = static_cast<int>(scenario.classes.size());
+#pragma omp parallel for schedule(dynamic, 1)
+        for (int c = 0; c < nc; ++c) {
+          try {
+            series[c] = kinematics(geometry, scenario.classes[c], c);
+          } catch (const std::exception& e) {
+            errors[c] = e.what();
+          }
+        }
+        for (int c = 0; c < nc; ++c)
+          if (!errors[c].empty()) throw InputError("wear step " + std::to_string(j) + ": kinematics of class " +
+                                                   scenario.classes[c].name + ": " + errors[c]);
+        const StepWear wear = ComputeStepWear(geometry, scenario.classes, series, step_options, contact);
+
+        ProfileUpdateOptions uo;
+        uo.max_depth_per_step_m = substeps > 1 ? scenario.update.cap_m / substeps : scenario.update.cap_m;
+        uo.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
+        uo.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
+        uo.cut_conserves_area = scenario.update.overhang_cut_conserves_area;
+        uo.step_index = j;
+        if (total_km > 0.0) uo.max_distance_step_m = (total_km - km) * 1e3;
+        WearDistribution depth = wear.wheel.wheel_depth_per_metre;
+        if (options.edge_taper_m > 0.0) {
+          const double L = depth.length_m();
+          for (size_t i = 0; i < depth.size(); ++i) {
+            const double e = std::min(depth.s(i), L - depth.s(i));
+            if (e < options.edge_taper_m) depth.depth_m[i] *= 0.5 - 0.5 * std::cos(M_PI * e / options.edge_taper_m);
+          }
+        }
+        ProfileUpdateResult up = UpdateProfile(wheel, depth, 1.0, uo);
+        for (int h = 0; h < options.invalid_step_halvings && up.status == ProfileUpdateStatus::InvalidProfile; ++h) {
+          uo.max_depth_per_step_m *= 0.5;
+          up = UpdateProfile(wheel, depth, 1.0, uo);
+        }
+
+        rec.samples += wear.samples;
+        rec.failed_contacts += wear.failed_contacts;
+        rec.approximate_contacts += wear.approximate_contacts;
+        rec.hertz_fallback_contacts += wear.hertz_fallback_contacts;
+        for (int i = 0; i < kContactModelCount; ++i) rec.patches_by_model[i] += wear.patches_by_model[i];
+        rec.validity = up.validity;
+        rec.depth_cap_m += uo.max_depth_per_step_m;
+        rec.overhang_cut_area_m2 += up.overhang_cut_area_m2;
+        rec.cut_area_scale = m == 0 ? up.cut_area_scale : std::min(rec.cut_area_scale, up.cut_area_scale);
+        rec.cut_area_conserved = rec.cut_area_conserved && up.cut_area_conserved;
+        if (m == 0) {
+          rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
+          rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
+          rec.removed_depth = up.removed_depth;
+        }
+        if (up.status != ProfileUpdateStatus::Updated) {
+          result.status = up.status == ProfileUpdateStatus::NoWear ? WearSimulationStatus::NoWear
+                                                                     : WearSimulationStatus::InvalidProfile;
+          result.message = "rail step " + std::to_string(k) + ", wheel step " + std::to_string(j) +
+                           (substeps > 1 ? ", sub-step " + std::to_string(m + 1) : std::string()) + ": " + up.message;
+          return result;
+        }
+        rail_wear[0].push_back(wear.side[0].rail_depth_per_passage);
+        rail_wear[1].push_back(wear.side[1].rail_depth_per_passage);
+        rail_weights.push_back(up.distance_step_m);
+        if (m > 0) {
+          // the step's wear rate: distance-weighted mean of the sub-steps'; its removed depth: their sum (each on the
+          // grid of the step's first profile, by arc length)
+          const double w_old = rec.step_km * 1e3, w_new = up.distance_step_m;
+          WearDistribution& rate = rec.wheel_depth_per_metre;
+          for (size_t i = 0; i < rate.size(); ++i)
+            rate.depth_m[i] = (w_old * rate.depth_m[i] + w_new * wear.wheel.wheel_depth_per_metre.at(rate.s(i))) /
+                              (w_old + w_new);
+          for (int side = 0; side < 2; ++side) {
+            WearDistribution& r = rec.rail_depth_per_passage[side];
+            const WearDistribution& r_new = wear.side[side].rail_depth_per_passage;
+            for (size_t i = 0; i < r.size(); ++i)
+              r.depth_m[i] = (w_old * r.depth_m[i] + w_new * r_new.at(r.s(i))) / (w_old + w_new);
+          }
+          for (size_t i = 0; i < rec.removed_depth.size(); ++i)
+            rec.removed_depth.depth_m[i] += up.removed_depth.at(rec.removed_depth.s(i));
+        }
+        wheel = up.profile;
+        km += up.distance_step_m * 1e-3;
+        rec.step_km += up.distance_step_m * 1e-3;
+        if (substeps == 1) rec.max_depth_m = up.max_depth_m;
+      }
       for (const KinematicsFallbackLog::Entry& e : fallbacks->since(fallbacks_before))
         rec.kinematics_fallback_reasons.push_back(KinematicsFallbackLog::describe(e));
       rec.kinematics_fallbacks = static_cast<int>(rec.kinematics_fallback_reasons.size());
-      rec.wheel_depth_per_metre = wear.wheel.wheel_depth_per_metre;
-      rec.rail_depth_per_passage = {wear.side[0].rail_depth_per_passage, wear.side[1].rail_depth_per_passage};
-      rec.validity = up.validity;
-      rec.depth_cap_m = uo.max_depth_per_step_m;
-      rec.overhang_cut_area_m2 = up.overhang_cut_area_m2;
-      rec.cut_area_scale = up.cut_area_scale;
-      rec.cut_area_conserved = up.cut_area_conserved;
-      if (up.status != ProfileUpdateStatus::Updated) {
-        result.status = up.status == ProfileUpdateStatus::NoWear ? WearSimulationStatus::NoWear
-                                                                   : WearSimulationStatus::InvalidProfile;
-        result.message = "rail step " + std::to_string(k) + ", wheel step " + std::to_string(j) + ": " + up.message;
-        return result;
-      }
-      rail_wear[0].push_back(rec.rail_depth_per_passage[0]);
-      rail_wear[1].push_back(rec.rail_depth_per_passage[1]);
-      rail_weights.push_back(up.distance_step_m);
-      wheel = up.profile;
-      km += up.distance_step_m * 1e-3;
       rec.km = km;
-      rec.step_km = up.distance_step_m * 1e-3;
-      rec.max_depth_m = up.max_depth_m;
-      rec.removed_depth = up.removed_depth;
+      if (substeps > 1) {
+        const WheelWearDepths step_depth = MeasureWheelWear(step_start, wheel);
+        rec.max_depth_m = std::max(step_depth.tread_m, step_depth.flange_m);
+      }
       rec.wheel = wheel;
       rec.dimensions = MeasureWheelDimensions(wheel);
       const WheelWearDepths wd = MeasureWheelWear(scenario.wheel, wheel);
