@@ -446,6 +446,9 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     double s_mid = 0.0, a_squared_A = 0.0, spread = 0.0, b = 1.0;
     double bottom_gap = 0.0, weight = 1.0;
     double valley_low = -std::numeric_limits<double>::infinity(), valley_high = std::numeric_limits<double>::infinity();
+    // The main well beyond the crest of a well of weight w < 1 (outwards on either side): its level times the
+    // product of (1 - w) of the crests passed, (crest s, that product) in order outwards (§3.3 "wells")
+    std::vector<std::pair<double, double>> fade_low, fade_high;
     double eps(double s, double approach) const {
       const double t = (s - s_mid) / b;
       return std::clamp((a_squared_A - spread * t * t) / approach, 0.0, 1.0);
@@ -453,7 +456,13 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     double level(double s, double delta) const {
       if (s < valley_low || s > valley_high) return 0.0;
       const double e = eps(s, delta - bottom_gap);
-      return e > 0.0 ? bottom_gap + weight * e * (delta - bottom_gap) : 0.0;
+      if (!(e > 0.0)) return 0.0;
+      double factor = weight;
+      for (const auto& f : fade_low)
+        if (s < f.first) factor = weight * f.second;
+      for (const auto& f : fade_high)
+        if (s > f.first) factor = weight * f.second;
+      return bottom_gap + factor * e * (delta - bottom_gap);
     }
   };
   EquivalentEllipse combined;            // one ellipse over every lobe of the eps = 0.5 region
@@ -518,13 +527,20 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
     if (separation_weight > 0.0) {
       // the main well: the connected eps = 0.5 region around the contact point, up to the crests towards the valleys
       // of the other wells (it neither floods them nor jumps when it reaches them)
-      auto is_bottom = [&](size_t i) {
+      auto bottom_weight = [&](size_t i) {  // the weight of the well whose bottom node is i, 0: none
         for (const Valley& v : valleys)
-          if (v.bottom == i) return true;
-        return false;
+          if (v.bottom == i) return v.weight;
+        return 0.0;
       };
+      // The main well ends at the crest towards a well of weight 1 and, towards a well of weight w < 1, reaches
+      // past that crest with the share 1 - w: its edge is sum_k (prod_{l<k} (1 - w_l)) w_k crest_k + (prod (1 - w))
+      // (the edge without those wells), and its level beyond such a crest is multiplied by prod (1 - w) (the
+      // ellipse's fades). A ripple well whose weight fades to 0 thus leaves the main well continuously (its crest
+      // cut the main well until the weight reached 0, and the force then jumped by 17 % on a worn tread:
+      // tests/data/kp_worn_tread/worn_cruise_patch.txt).
       double edge[2] = {s_contact, s_contact};
       double valley_edge[2] = {-kInfinity, kInfinity};
+      std::vector<std::pair<double, double>> fades[2];
       const size_t first_right =
           static_cast<size_t>(std::upper_bound(nodes.begin(), nodes.end(), s_contact) - nodes.begin());
       for (int side = 0; side < 2; ++side) {
@@ -532,30 +548,37 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
         double inside = s_contact, f_in = f0;
         long crest = -1;
         bool done = false;
+        double share = 1.0, edge_sum = 0.0;  // prod (1 - w) of the crests passed; sum of their weighted crests
+        bool in_region = true;               // still inside the eps = 0.5 region
         for (long i = side == 0 ? static_cast<long>(first_right) - 1 : static_cast<long>(first_right);
              i >= 0 && i < static_cast<long>(node_count); i += step) {
-          if (is_bottom(static_cast<size_t>(i))) {
+          const double w = bottom_weight(static_cast<size_t>(i));
+          if (w > 0.0) {
             const double crest_s = crest >= 0 ? nodes[crest] : nodes[i];  // (a bottom next to the contact point)
-            edge[side] = crest_s, valley_edge[side] = crest_s, done = true;
-            break;
+            if (in_region) edge_sum += share * w * crest_s;
+            share *= 1.0 - w;
+            if (!(share > 0.0)) {
+              if (in_region) edge[side] = edge_sum;
+              valley_edge[side] = crest_s, done = true;
+              break;
+            }
+            fades[side].push_back({crest_s, share});
+            crest = -1;
+            if (!in_region) continue;
           }
           if (crest < 0 || node_gaps[i] > node_gaps[crest]) crest = i;
+          if (!in_region) continue;
           const double value = 0.5 * delta - node_gaps[i];
           if (value <= 0.0) {
-            edge[side] = EdgeRoot(half_region, inside, f_in, nodes[i], value), done = true;
-            // the valley of the main well reaches on to the next well's crest
-            for (long j = i; j >= 0 && j < static_cast<long>(node_count); j += step) {
-              if (is_bottom(static_cast<size_t>(j))) {
-                valley_edge[side] = nodes[crest];
-                break;
-              }
-              if (node_gaps[j] > node_gaps[crest]) crest = j;
-            }
-            break;
+            // past the region the scan goes on for the valley's end: the crest of the next well (of weight 1)
+            edge[side] = edge_sum + share * EdgeRoot(half_region, inside, f_in, nodes[i], value);
+            in_region = false;
+            continue;
           }
           inside = nodes[i], f_in = value;
         }
-        if (!done) edge[side] = side == 0 ? patch.domain_low() : patch.domain_high();
+        if (in_region && !done)
+          edge[side] = edge_sum + share * (side == 0 ? patch.domain_low() : patch.domain_high());
       }
       EquivalentEllipse main_well;
       if (edge[1] > edge[0] &&
@@ -563,6 +586,8 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
                       &main_well)) {
         main_well.valley_low = valley_edge[0];
         main_well.valley_high = valley_edge[1];
+        main_well.fade_low = fades[0];
+        main_well.fade_high = fades[1];
         wells.push_back(main_well);
       } else {
         separation_weight = 0.0;

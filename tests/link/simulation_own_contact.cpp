@@ -4,7 +4,7 @@
 // wheel load and full-slip traction mu p opposing a constant small longitudinal slip; the kinematics are one
 // centred wheelset per track class. Checks (exit status 1 with a message when one fails):
 //   - both wheel steps complete, every wheel contact is used (none failed), the wear is > 0;
-//   - each step removes exactly the scenario's depth cap (the step length is chosen for that);
+//   - each step removes exactly the scenario's depth cap (the step length is chosen for that; one sub-step per step);
 //   - the removed depth lies where the patch was: its maximum within the patch's lateral extent (plus the
 //     smoothing), and next to nothing far from it.
 // Usage: link_simulation_own_contact SCENARIO.yaml   (tests/link/CMakeLists.txt: scenarios/default_metro.yaml)
@@ -153,7 +153,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const Scenario scenario = LoadScenario(argv[1]);
+    Scenario scenario = LoadScenario(argv[1]);
+    scenario.update.substeps = 1;  // one update per step, so that a step removes exactly the cap (§8.12)
     WearSimulationOptions options;
     options.contact.model = ContactModel::Hertz;  // only a label here: the contact function above ignores it
     options.steps = 2;
