@@ -57,7 +57,9 @@ ContactLutGrid DynamicKinematicsLutGrid(const Scenario& sc, const WheelsetTrackG
   // lateral: up to the flange contact of either wheel + 3 mm
   const double y_flange = std::max(std::fabs(FlangeContactShift(g, 1.0, qo.flange_contact_angle_rad)),
                                    std::fabs(FlangeContactShift(g, -1.0, qo.flange_contact_angle_rad)));
-  // yaw and loads over the classes: a |c| + 5 mrad; Q0 -/+ the largest load transfer
+  // yaw and loads over the classes: a |c| + 8 mrad (5 mrad let the R 400 m class of the default scenario's worn
+  // wheel reach -8.7 and 8.9 mrad, outside the table: class fallbacks, docs/physics-reference.md §16.7); Q0 -/+ the
+  // largest load transfer
   const double Q0 = v.static_wheel_load_N(qo.gravity_m_s2);
   double c_max = 0.0, dQ_max = 0.0;
   for (const TrackClass& tc : sc.classes) {
@@ -67,7 +69,7 @@ ContactLutGrid DynamicKinematicsLutGrid(const Scenario& sc, const WheelsetTrackG
   }
   if (!(Q0 - dQ_max > 0.0))
     throw InputError("dynamic provider with contact: lut: a wheel is unloaded by the load transfer of a class");
-  return CoverContactLutGrid(DefaultContactLutGrid(), y_flange + 3e-3, 0.5 * v.wheelbase_m * c_max + 5e-3,
+  return CoverContactLutGrid(DefaultContactLutGrid(), y_flange + 3e-3, 0.5 * v.wheelbase_m * c_max + 8e-3,
                              0.5 * (Q0 - dQ_max), 1.5 * (Q0 + dQ_max));
 }
 
