@@ -547,9 +547,8 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
         const long step = side == 0 ? -1 : 1;
         double inside = s_contact, f_in = f0;
         long crest = -1;
-        bool done = false;
         double share = 1.0, edge_sum = 0.0;  // prod (1 - w) of the crests passed; sum of their weighted crests
-        bool in_region = true;               // still inside the eps = 0.5 region
+        bool in_region = true;               // still inside the eps = 0.5 region (edge[side] not yet set)
         for (long i = side == 0 ? static_cast<long>(first_right) - 1 : static_cast<long>(first_right);
              i >= 0 && i < static_cast<long>(node_count); i += step) {
           const double w = bottom_weight(static_cast<size_t>(i));
@@ -558,8 +557,8 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
             if (in_region) edge_sum += share * w * crest_s;
             share *= 1.0 - w;
             if (!(share > 0.0)) {
-              if (in_region) edge[side] = edge_sum;
-              valley_edge[side] = crest_s, done = true;
+              if (in_region) edge[side] = edge_sum, in_region = false;
+              valley_edge[side] = crest_s;
               break;
             }
             fades[side].push_back({crest_s, share});
@@ -577,8 +576,7 @@ KpResult kp_detail::SolveKikPiotrowskiOnInterpolant(const PatchInterpolant& patc
           }
           inside = nodes[i], f_in = value;
         }
-        if (in_region && !done)
-          edge[side] = edge_sum + share * (side == 0 ? patch.domain_low() : patch.domain_high());
+        if (in_region) edge[side] = edge_sum + share * (side == 0 ? patch.domain_low() : patch.domain_high());
       }
       EquivalentEllipse main_well;
       if (edge[1] > edge[0] &&

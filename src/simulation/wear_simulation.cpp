@@ -128,6 +128,13 @@ TrackSetup SetupWith(const Scenario& sc, const Profile& wheel, const std::array<
   return s;
 }
 
+// into := (w_into into + w_from from) / (w_into + w_from) on into's grid, `from` interpolated by arc length (the
+// sub-steps of a wheel step, §8.12, each have the grid of their own profile)
+void MeanResampled(WearDistribution* into, double w_into, const WearDistribution& from, double w_from) {
+  for (size_t i = 0; i < into->size(); ++i)
+    into->depth_m[i] = (w_into * into->depth_m[i] + w_from * from.at(into->s(i))) / (w_into + w_from);
+}
+
 }  // namespace
 
 WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options,
@@ -257,16 +264,9 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
           // the step's wear rate: distance-weighted mean of the sub-steps'; its removed depth: their sum (each on the
           // grid of the step's first profile, by arc length)
           const double w_old = rec.step_km * 1e3, w_new = up.distance_step_m;
-          WearDistribution& rate = rec.wheel_depth_per_metre;
-          for (size_t i = 0; i < rate.size(); ++i)
-            rate.depth_m[i] = (w_old * rate.depth_m[i] + w_new * wear.wheel.wheel_depth_per_metre.at(rate.s(i))) /
-                              (w_old + w_new);
-          for (int side = 0; side < 2; ++side) {
-            WearDistribution& r = rec.rail_depth_per_passage[side];
-            const WearDistribution& r_new = wear.side[side].rail_depth_per_passage;
-            for (size_t i = 0; i < r.size(); ++i)
-              r.depth_m[i] = (w_old * r.depth_m[i] + w_new * r_new.at(r.s(i))) / (w_old + w_new);
-          }
+          MeanResampled(&rec.wheel_depth_per_metre, w_old, wear.wheel.wheel_depth_per_metre, w_new);
+          for (int side = 0; side < 2; ++side)
+            MeanResampled(&rec.rail_depth_per_passage[side], w_old, wear.side[side].rail_depth_per_passage, w_new);
           for (size_t i = 0; i < rec.removed_depth.size(); ++i)
             rec.removed_depth.depth_m[i] += up.removed_depth.at(rec.removed_depth.s(i));
         }
