@@ -270,11 +270,24 @@ class WheelsetTrackGeometry {
                                   double* theta = nullptr, double* radius = nullptr, double* slope = nullptr) const;
   // Rail height and slope at side-frame eta; false outside the rail table.
   bool RailHeight(Side side, double eta, double* z, double* slope) const;
+  // State carried through a run of NormalGap calls on one side and frame (the strips of a patch), each started from
+  // the previous one's solution y_w: the last successful call's silhouette point there, so that the next call's Newton
+  // start is not evaluated again (the same point bit for bit: the silhouette depends only on side, frame and y_w), and
+  // what that call evaluated at its solution which the caller would otherwise evaluate again: the silhouette's radius
+  // r0 + z_w and profile slope at the returned y_w, the rail's height and slope at eta. Default-constructed per frame.
+  struct NormalGapWork {
+    bool has_sample = false;  // the fields below hold the last successful call's solution
+    double y_w = 0.0;
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();  // SilhouettePoint at y_w (the returned wheel_point)
+    double wheel_radius_m = 0.0, wheel_slope = 0.0;   // SilhouettePoint's radius and slope at y_w
+    double rail_z_m = 0.0, rail_slope = 0.0;          // RailHeight at the call's eta
+  };
   // Rigid gap along the local rail normal at side-frame eta of the rail surface: the signed distance from
   // the rail point along its outward normal to the wheel silhouette (< 0: interpenetration). y_w_guess is
   // the starting wheel-profile y (updated to the solution). False if no intersection was found.
+  // work (optional, one per side and frame): see NormalGapWork.
   bool NormalGap(Side side, const Frame& frame, double eta, double* y_w_guess, double* gap_m,
-                 Eigen::Vector3d* wheel_point = nullptr) const;
+                 Eigen::Vector3d* wheel_point = nullptr, NormalGapWork* work = nullptr) const;
   // Arc length on the mounted rail at side-frame eta (rail table), and the inverse.
   double RailArcLength(Side side, double eta) const;
   double RailEtaAtArcLength(Side side, double s) const;

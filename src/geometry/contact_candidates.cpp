@@ -86,19 +86,21 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
   for (std::vector<double>* v : {&p.s_m, &p.gap_m, &p.longitudinal_curvature_per_m, &p.wheel_radius_m, &p.alpha_rad,
                                  &p.x_offset_m})
     v->reserve(n);
+  // each strip's Newton starts at the previous strip's solution, whose silhouette point `work` keeps; it also returns
+  // the rail slope at eta and the wheel's radius r0 + z_w and slope at y_w (NormalGap evaluated them there)
+  WheelsetTrackGeometry::NormalGapWork work;
   for (int j = 0; j < n; ++j) {
     const double s = s_start + (j + 0.5) * ds;
     const double eta = g.RailEtaAtArcLength(side, s);
     double gap;
     Eigen::Vector3d wp;
-    if (!g.NormalGap(side, f, eta, &y_w, &gap, &wp)) continue;  // silhouette not reachable: strip left out
-    double z_r, m_r;
-    g.RailHeight(side, eta, &z_r, &m_r);
+    if (!g.NormalGap(side, f, eta, &y_w, &gap, &wp, &work)) continue;  // silhouette not reachable: strip left out
+    const double m_r = work.rail_slope;
     const double nl = std::sqrt(1 + m_r * m_r);
     const Eigen::Vector2d n_loc(-m_r / nl, 1.0 / nl);
-    double z_w, slope, kappa;
-    g.WheelProfileAt(side, y_w, &z_w, &slope, &kappa);
-    const double radius = g.setup().nominal_radius_m[side_index(side)] + z_w;
+    const double slope = work.wheel_slope, radius = work.wheel_radius_m;
+    double kappa;
+    g.WheelProfileAt(side, y_w, nullptr, nullptr, &kappa);
     p.s_m.push_back(s - s_ref);
     p.gap_m.push_back(gap);
     // docs/physics-reference.md §1.1: rolling curvature of the wheel in the tilted plane, cos(alpha_w) / r; on a

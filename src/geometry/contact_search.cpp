@@ -235,9 +235,11 @@ WheelContactResult WheelsetTrackGeometry::RigidContact(Side side, const Wheelset
     const double half = 0.3e-3 + 2.0 * std::abs(m.gap) * sd;
     const double a = std::max(RailTableBegin(side), m.eta - half), b = std::min(RailTableEnd(side), m.eta + half);
     double y_guess = m.y_w;
+    NormalGapWork work;  // each call starts at the last one's solution: its silhouette point is kept
     auto normal_gap = [&](double eta, double* y_w_out) {
       double gap, yg = y_guess;
-      if (eta < a || eta > b || !NormalGap(side, f, eta, &yg, &gap)) return std::numeric_limits<double>::infinity();
+      if (eta < a || eta > b || !NormalGap(side, f, eta, &yg, &gap, nullptr, &work))
+        return std::numeric_limits<double>::infinity();
       y_guess = yg;
       if (y_w_out) *y_w_out = yg;
       return gap;

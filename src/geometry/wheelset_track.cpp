@@ -407,7 +407,7 @@ double WheelsetTrackGeometry::RailEtaAtArcLength(Side side, double s) const {
 }
 
 bool WheelsetTrackGeometry::NormalGap(Side side, const Frame& f, double eta, double* y_w_guess, double* gap_m,
-                                      Eigen::Vector3d* wheel_point) const {
+                                      Eigen::Vector3d* wheel_point, NormalGapWork* work) const {
   double zr, mr;
   if (!RailHeight(side, eta, &zr, &mr)) return false;
   const double nn = std::sqrt(1 + mr * mr);
@@ -415,28 +415,37 @@ bool WheelsetTrackGeometry::NormalGap(Side side, const Frame& f, double eta, dou
   // intersection of the rail normal line with the silhouette: f(y_w) = (p - P) x n = 0. Newton with the
   // derivative of the untilted wheel, dp/dy_w ~ (1, -r') in (eta, z): exact up to the (small) roll and yaw,
   // so the iteration converges linearly with a tiny factor; secant fallback when it stalls.
-  auto cross = [&](double y_w, Eigen::Vector3d* p, double* r_slope) {
-    if (!SilhouettePoint(side, f, y_w, p, nullptr, nullptr, r_slope)) return std::nan("");
-    return ((*p)(1) - eta) * n_z - ((*p)(2) - zr) * n_eta;
+  auto cross_of = [&](const Eigen::Vector3d& p) { return (p(1) - eta) * n_z - (p(2) - zr) * n_eta; };
+  auto cross = [&](double y_w, Eigen::Vector3d* p, double* r_slope, double* radius) {
+    if (!SilhouettePoint(side, f, y_w, p, nullptr, radius, r_slope)) return std::nan("");
+    return cross_of(*p);
   };
   Eigen::Vector3d p1;
-  double y1 = *y_w_guess, r_slope = 0.0;
-  double f1 = cross(y1, &p1, &r_slope);
+  double y1 = *y_w_guess, r_slope = 0.0, radius = 0.0;
+  double f1;
+  if (work && work->has_sample && work->y_w == y1 && std::signbit(work->y_w) == std::signbit(y1)) {
+    // the start is where the previous call ended: the same silhouette point (a function of side, frame and y_w)
+    p1 = work->point, r_slope = work->wheel_slope, radius = work->wheel_radius_m;
+    f1 = cross_of(p1);
+  } else {
+    f1 = cross(y1, &p1, &r_slope, &radius);
+  }
   if (!std::isfinite(f1)) return false;
   for (int it = 0; it < 40 && std::abs(f1) > 1e-13; ++it) {
     double d = n_z + r_slope * n_eta;
     if (std::abs(d) < 0.05) d = d < 0 ? -0.05 : 0.05;
     const double y2 = y1 - std::clamp(f1 / d, -5e-3, 5e-3);
     Eigen::Vector3d p2;
-    double s2;
-    const double f2 = cross(y2, &p2, &s2);
+    double s2, r2;
+    const double f2 = cross(y2, &p2, &s2, &r2);
     if (!std::isfinite(f2)) return false;
-    y1 = y2; f1 = f2; p1 = p2; r_slope = s2;
+    y1 = y2; f1 = f2; p1 = p2; r_slope = s2; radius = r2;
   }
   if (std::abs(f1) > 1e-9) return false;
   *y_w_guess = y1;
   *gap_m = (p1(1) - eta) * n_eta + (p1(2) - zr) * n_z;
   if (wheel_point) *wheel_point = p1;
+  if (work) *work = {true, y1, p1, radius, r_slope, zr, mr};
   return true;
 }
 
