@@ -288,9 +288,11 @@ class WheelsetTrackGeometry {
   // work (optional, one per side and frame): see NormalGapWork.
   bool NormalGap(Side side, const Frame& frame, double eta, double* y_w_guess, double* gap_m,
                  Eigen::Vector3d* wheel_point = nullptr, NormalGapWork* work = nullptr) const;
-  // Arc length on the mounted rail at side-frame eta (rail table), and the inverse.
+  // Arc length on the mounted rail at side-frame eta (rail table), and the inverse. node_hint (optional): the rail-table node
+  // the inverse's search starts from (0: a binary search), updated; a run of nearby s (the strips of a patch) then
+  // takes a step or two instead of a binary search each, with the same result.
   double RailArcLength(Side side, double eta) const;
-  double RailEtaAtArcLength(Side side, double s) const;
+  double RailEtaAtArcLength(Side side, double s, size_t* node_hint = nullptr) const;
   // Wheel profile quantities at y_w: radial height z_w, slope, curvature (convex > 0).
   bool WheelProfileAt(Side side, double y_w, double* z_w, double* slope, double* curvature) const;
   double WheelTableBegin(Side side) const { return sides_[side_index(side)].wheel.y0; }

@@ -89,9 +89,10 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
   // each strip's Newton starts at the previous strip's solution, whose silhouette point `work` keeps; it also returns
   // the rail slope at eta and the wheel's radius r0 + z_w and slope at y_w (NormalGap evaluated them there)
   WheelsetTrackGeometry::NormalGapWork work;
+  size_t rail_node = 0;  // RailEtaAtArcLength's search: from the previous strip's node
   for (int j = 0; j < n; ++j) {
     const double s = s_start + (j + 0.5) * ds;
-    const double eta = g.RailEtaAtArcLength(side, s);
+    const double eta = g.RailEtaAtArcLength(side, s, &rail_node);
     double gap;
     Eigen::Vector3d wp;
     if (!g.NormalGap(side, f, eta, &y_w, &gap, &wp, &work)) continue;  // silhouette not reachable: strip left out

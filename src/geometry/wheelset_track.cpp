@@ -384,11 +384,21 @@ double WheelsetTrackGeometry::RailArcLength(Side side, double eta) const {
          (w3 - w2) * t.h * g1;
 }
 
-double WheelsetTrackGeometry::RailEtaAtArcLength(Side side, double s) const {
+double WheelsetTrackGeometry::RailEtaAtArcLength(Side side, double s, size_t* node_hint) const {
   const GraphTable& t = sides_[side_index(side)].rail;
   if (s <= t.s.front()) return t.y0;
   if (s >= t.s.back()) return t.y_end();
-  const size_t k = std::upper_bound(t.s.begin(), t.s.end(), s) - t.s.begin();
+  // k: the first node beyond s (std::upper_bound); from the hint, a walk to the same node (the nodes' s never decrease)
+  size_t k;
+  if (node_hint && *node_hint > 0 && *node_hint < t.size() && !std::isnan(s)) {
+    k = *node_hint;
+    while (t.s[k] <= s) ++k;  // ends before t.size(): s < t.s.back()
+    while (k > 0 && t.s[k - 1] > s) --k;
+    *node_hint = k;
+  } else {
+    k = std::upper_bound(t.s.begin(), t.s.end(), s) - t.s.begin();
+    if (node_hint) *node_hint = k;
+  }
   const size_t i = std::clamp<size_t>(k, 1, t.size() - 1) - 1;
   double lo = t.y0 + i * t.h, hi = lo + t.h;
   // Newton on s(eta) = s with ds/deta = sqrt(1 + z'^2), kept inside the bracketing node interval
