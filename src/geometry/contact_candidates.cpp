@@ -140,7 +140,7 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
   const double step = g.options().scan_spacing_m * 0.5;
   const double y_lo = g.WheelTableBegin(side), y_hi = g.WheelTableEnd(side);
   std::vector<std::pair<double, double>> regions;  // (y_w start, y_w end)
-  std::vector<double> seeds;
+  std::vector<WheelsetTrackGeometry::VerticalGapMinimum> seeds;  // each region's minimum
   for (const auto& m : minima) {
     if (!(m.gap_m < 0.0)) continue;
     double a = m.y_w, b = m.y_w;
@@ -152,19 +152,20 @@ CandidateResult FindContactCandidates(const WheelsetTrackGeometry& g, Side side,
     for (const auto& r : regions) duplicate |= std::abs(r.first - ya) < 1e-9;
     if (duplicate) continue;
     regions.emplace_back(ya, yb);
-    seeds.push_back(m.y_w);
+    seeds.push_back(m);
   }
   // weight: the region's interpenetration area, ~ width x depth (a parabolic lobe: 2/3 of it; the factor cancels)
   struct Region { double eta_a, eta_b, s_a, s_b, seed, seed_gap, s_ref, weight; };
   std::vector<Region> rs;
   for (size_t k = 0; k < regions.size(); ++k) {
-    double eta_a = 0, eta_b = 0, eta_seed = 0;
+    double eta_a = 0, eta_b = 0;
     g.VerticalGapAt(side, f, regions[k].first, &eta_a);
     g.VerticalGapAt(side, f, regions[k].second, &eta_b);
-    const double seed_gap = g.VerticalGapAt(side, f, seeds[k], &eta_seed);
+    // the minimum's gap is VerticalGapAt(side, f, y_w) (VerticalGapMinima evaluates it there; finite)
+    const double seed_gap = seeds[k].gap_m;
     if (!(eta_b > eta_a)) continue;
     const double s_a = g.RailArcLength(side, eta_a), s_b = g.RailArcLength(side, eta_b);
-    rs.push_back({eta_a, eta_b, s_a, s_b, seeds[k], seed_gap, 0.5 * (s_a + s_b), (s_b - s_a) * std::max(0.0, -seed_gap)});
+    rs.push_back({eta_a, eta_b, s_a, s_b, seeds[k].y_w, seed_gap, 0.5 * (s_a + s_b), (s_b - s_a) * std::max(0.0, -seed_gap)});
   }
   std::sort(rs.begin(), rs.end(), [](const auto& p, const auto& q) { return p.s_a < q.s_a; });
   std::vector<Region> merged;
