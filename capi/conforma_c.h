@@ -204,7 +204,10 @@ CONFORMA_C_EXPORT conforma_status conforma_model_create(const conforma_track_par
                                                         conforma_model** model, char* error_text,
                                                         size_t error_text_size);
 /* The same handle, but every load-control evaluation reads the contact look-up table in lut_path (an HDF5 file of
- * `conforma lut build`, include/conforma/contact_lut.hpp) instead of solving: ~10-40 times faster. track and contact
+ * `conforma lut build`, include/conforma/contact_lut.hpp) instead of solving. Load control balances the total force,
+ * so a table read still solves the creep forces (FASTSIM) at each of its 2-4 effective loads: about 2 times faster
+ * than the solve (tests/bench/bench_capi_lut.cpp, CPU per wheelset pose: conformal 0.15-0.18 ms against 0.3, hertz
+ * 0.07 ms against 0.15; docs/physics-reference.md §17.5). track and contact
  * must be those the table was made for (model, material, profiles, gauge, radius: CONFORMA_ERROR_INPUT otherwise);
  * the table's elastic-flange rule is taken over. With the table the pose's vertical_m and roll_rad are not used (the
  * table's are those of the rigid equilibrium at lateral_m, yaw_rad), CONFORMA_GIVEN_APPROACH is CONFORMA_ERROR_INPUT,
