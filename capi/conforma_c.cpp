@@ -91,6 +91,9 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   if (e.parallel_wheels != 0 && e.parallel_wheels != 1)
     throw InputError("options.parallel_wheels must be 0 (both wheels on the calling thread) or 1 (the right wheel on "
                      "a second thread), not " + std::to_string(e.parallel_wheels));
+  if (e.table_creep_force != 0 && e.table_creep_force != 1)
+    throw InputError("options.table_creep_force must be 0 (FASTSIM) or 1 (Polach), not " +
+                     std::to_string(e.table_creep_force));
   const bool load_control = e.normal_mode == CONFORMA_LOAD_CONTROL;
   if (load_control) {
     conforma::require_non_negative(e.vertical_load_N[0], "options.vertical_load_N[0] (left)");
@@ -113,8 +116,11 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
     conforma::WheelContactOptions options = contact;  // per-call copy: the handle stays untouched
     options.load_tolerance = e.load_tolerance;
     options.vertical_load_N = load_control ? e.vertical_load_N[conforma::side_index(side)] : -1.0;
-    return model.lut ? conforma::EvaluateContactLut(*model.lut, *model.geometry, side, pose, velocity, options)
-                     : SolveWheelContact(*model.geometry, side, pose, velocity, options);
+    conforma::LutEvaluationOptions table;
+    table.creep_force = e.table_creep_force == 1 ? conforma::LutCreepForce::Polach : conforma::LutCreepForce::Fastsim;
+    return model.lut
+               ? conforma::EvaluateContactLut(*model.lut, *model.geometry, side, pose, velocity, options, nullptr, table)
+               : SolveWheelContact(*model.geometry, side, pose, velocity, options);
   };
   // The two wheels are independent (each its own candidates, load control and tangential problem, on the immutable
   // handle): with parallel_wheels the right one runs on a second thread while this one solves the left, the same
@@ -168,6 +174,7 @@ void conforma_default_evaluation_options(conforma_evaluation_options* o) {
   o->approach_m = 0.05e-3;
   o->load_tolerance = conforma::WheelContactOptions().load_tolerance;
   o->parallel_wheels = 0;
+  o->table_creep_force = 0;
 }
 
 conforma_status conforma_model_create(const conforma_track_params* track, const conforma_contact_params* contact,

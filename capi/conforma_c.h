@@ -69,8 +69,9 @@ extern "C" {
 #endif
 
 /* Version of this interface; bumped on any incompatible change of a struct or function below. */
-#define CONFORMA_C_API_VERSION 3  /* 2: conforma_wheel_result gained warning_count and warnings;
-                                     3: conforma_evaluation_options gained parallel_wheels */
+#define CONFORMA_C_API_VERSION 4  /* 2: conforma_wheel_result gained warning_count and warnings;
+                                     3: conforma_evaluation_options gained parallel_wheels;
+                                     4: conforma_evaluation_options gained table_creep_force */
 #define CONFORMA_MAX_PATCHES 4    /* patches stored per wheel (more are counted in patches_found) */
 #define CONFORMA_ERROR_TEXT 256   /* size of the error texts, including the terminating 0 */
 #define CONFORMA_WARNING_TEXT 1024 /* size of a wheel's warnings text, including the terminating 0 */
@@ -143,6 +144,11 @@ typedef struct conforma_evaluation_options {
   int parallel_wheels;             /* 0 (default): both wheels on the calling thread; 1: the right wheel on a second
                                       thread while the calling thread solves the left (the wheels are independent:
                                       results bit-identical to 0; pays only with a free core, see COST); any other
+                                      value is CONFORMA_ERROR_INPUT */
+  int table_creep_force;           /* with a table (conforma_model_create_with_lut) only: 0 (default) FASTSIM, as the
+                                      solve; 1: Polach's closed form on each patch's ellipse (no spin moment, adhesion
+                                      and slip areas 0; several times cheaper: the dynamic wear provider's default,
+                                      docs/physics-reference.md §16.7, §17.3); ignored without a table; any other
                                       value is CONFORMA_ERROR_INPUT */
 } conforma_evaluation_options;
 

@@ -114,3 +114,52 @@ TEST(CApiLut, WrongModelOrFileIsAnInputError) {
             CONFORMA_ERROR_INPUT);
   EXPECT_EQ(conforma_model_create_with_lut(&track, &contact, nullptr, &model, error, sizeof error), CONFORMA_ERROR_NULL);
 }
+
+// table_creep_force = 1 (Polach on the patch ellipse): in full slip (lateral sliding of 5 % of V) both creep laws
+// give the saturated force mu F_n on every patch; without a table the option is ignored (bit-identical); any value
+// but 0 and 1 is an input error naming the option.
+TEST(CApiLut, PolachCreepForceSaturatesAsFastsimInFullSlip) {
+  conforma_track_params track;
+  conforma_contact_params contact;
+  conforma_default_track_params(&track);
+  conforma_default_contact_params(&contact);
+  contact.model = "hertz";
+  Models m;
+  char error[CONFORMA_ERROR_TEXT];
+  ASSERT_EQ(conforma_model_create(&track, &contact, &m.direct, error, sizeof error), CONFORMA_OK) << error;
+  const std::string file = TableFile();
+  ASSERT_EQ(conforma_model_create_with_lut(&track, &contact, file.c_str(), &m.lut, error, sizeof error), CONFORMA_OK)
+      << error;
+  conforma_evaluation_options o;
+  conforma_default_evaluation_options(&o);
+  o.rigid_equilibrium = 1;
+  o.vertical_load_N[0] = o.vertical_load_N[1] = 50e3;
+  conforma_wheelset_state s = State(1e-3);
+  s.lateral_velocity_m_s = 0.05 * s.forward_speed_m_s;
+  conforma_wheelset_result fastsim, polach;
+  ASSERT_EQ(conforma_evaluate(m.lut, &s, &o, &fastsim), CONFORMA_OK) << fastsim.error_message;
+  o.table_creep_force = 1;
+  ASSERT_EQ(conforma_evaluate(m.lut, &s, &o, &polach), CONFORMA_OK) << polach.error_message;
+  for (int w = 0; w < 2; ++w) {
+    ASSERT_EQ(fastsim.wheel[w].patches_found, polach.wheel[w].patches_found);
+    for (int k = 0; k < fastsim.wheel[w].patches_found && k < CONFORMA_MAX_PATCHES; ++k) {
+      const conforma_patch_result &f = fastsim.wheel[w].patch[k], &p = polach.wheel[w].patch[k];
+      const double bound = contact.friction_coefficient * p.normal_force_N;
+      EXPECT_NEAR(std::hypot(p.longitudinal_force_N, p.lateral_force_N), bound, 0.01 * bound) << "wheel " << w;
+      EXPECT_NEAR(std::hypot(f.longitudinal_force_N, f.lateral_force_N),
+                  contact.friction_coefficient * f.normal_force_N, 0.01 * bound) << "wheel " << w;
+    }
+  }
+  // without a table the option is not used
+  conforma_wheelset_result a, b;
+  o.table_creep_force = 0;
+  ASSERT_EQ(conforma_evaluate(m.direct, &s, &o, &a), CONFORMA_OK) << a.error_message;
+  o.table_creep_force = 1;
+  ASSERT_EQ(conforma_evaluate(m.direct, &s, &o, &b), CONFORMA_OK) << b.error_message;
+  for (int w = 0; w < 2; ++w)
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(a.wheel[w].force_track_N[i], b.wheel[w].force_track_N[i]);
+  o.table_creep_force = 2;
+  conforma_wheelset_result r;
+  EXPECT_EQ(conforma_evaluate(m.lut, &s, &o, &r), CONFORMA_ERROR_INPUT);
+  EXPECT_NE(std::string(r.error_message).find("table_creep_force"), std::string::npos) << r.error_message;
+}

@@ -94,7 +94,7 @@ TEST(CApiStatus, WarningsAsTheCommandLineListsThem) {
       o = CApiMBenchModel::RigidEquilibriumOptions();
     }
   }
-  EXPECT_EQ(conforma_api_version(), 3);  // 3: conforma_evaluation_options.parallel_wheels
+  EXPECT_EQ(conforma_api_version(), 4);  // 4: conforma_evaluation_options.table_creep_force
 }
 
 // The exact model through the C API (issue 14): the same creep forces as the pipeline's SolveWheelContact, i.e. as

@@ -3,7 +3,8 @@
 // item 6 asks <= 100 us for the solve; the table is the fast path of issue 16, docs/physics-reference.md §17). The
 // table (S1002 / 60E1 1:40, y 1 ... 9 mm by 0.25 mm, yaw 0 ... 2 mrad, Q 5 ... 15 kN, both wheels) is built once
 // per process into a temporary file (~1 min on 2 cores), outside the timing. Counters: the table's wheel forces
-// against the direct solve of the same pose (Fz, Fy of the left wheel, N), so the speed is read with its error.
+// against the direct solve of the same pose (Fz, Fy of the left wheel, N), so the speed is read with its error;
+// the _polach cases take the table's creep forces from Polach's closed form (table_creep_force = 1).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -46,7 +47,7 @@ std::string TableFile(conforma::ContactModel model) {
 }
 
 void BM_CApiWheelsetLut(benchmark::State& state, const char* model_name, conforma::ContactModel model,
-                        double lateral_m) {
+                        double lateral_m, int table_creep_force = 0) {
   conforma_track_params track;
   conforma_contact_params contact;
   conforma_default_track_params(&track);
@@ -68,6 +69,7 @@ void BM_CApiWheelsetLut(benchmark::State& state, const char* model_name, conform
   s.axle_angular_velocity_rad_s = 20.0 / 0.46;
   conforma_evaluation_options o;
   conforma_default_evaluation_options(&o);  // load control, 10 kN per wheel
+  o.table_creep_force = table_creep_force;   // 0: FASTSIM (as the solve), 1: Polach
   conforma_wheelset_result r, exact;
   {  // the pose a multibody code would pass (as bench_capi.cpp); the table takes its own vertical position and roll
     conforma_evaluation_options rigid = o;
@@ -85,7 +87,7 @@ void BM_CApiWheelsetLut(benchmark::State& state, const char* model_name, conform
     }
     benchmark::ClobberMemory();
   }
-  if (conforma_evaluate(direct, &s, &o, &exact) == CONFORMA_OK) {
+  if (conforma_evaluate(direct, &s, &o, &exact) == CONFORMA_OK) {  // (the direct solve: FASTSIM)
     state.counters["dFz_left_N"] = r.wheel[0].force_track_N[2] - exact.wheel[0].force_track_N[2];
     state.counters["dFy_left_N"] = r.wheel[0].force_track_N[1] - exact.wheel[0].force_track_N[1];
     state.counters["Fy_left_N"] = exact.wheel[0].force_track_N[1];
@@ -99,6 +101,12 @@ BENCHMARK_CAPTURE(BM_CApiWheelsetLut, conformal_table_load_y3mm, "conformal", co
     ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(BM_CApiWheelsetLut, conformal_table_load_y7mm_flange, "conformal", conforma::ContactModel::Conformal,
                   7e-3)
+    ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(BM_CApiWheelsetLut, conformal_table_polach_load_y3mm, "conformal", conforma::ContactModel::Conformal,
+                  3e-3, 1)
+    ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(BM_CApiWheelsetLut, conformal_table_polach_load_y7mm_flange, "conformal",
+                  conforma::ContactModel::Conformal, 7e-3, 1)
     ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
 BENCHMARK_CAPTURE(BM_CApiWheelsetLut, hertz_table_load_y3mm, "hertz", conforma::ContactModel::Hertz, 3e-3)
     ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
