@@ -57,24 +57,36 @@ conforma_wheelset_state State(double y_m) {
   return s;
 }
 
+// The hertz model of the C API's default track, solved (direct) and read from TableFile() (lut), and evaluation options
+// of load control at 50 kN per wheel from the rigid equilibrium.
+struct HertzModels : Models {
+  conforma_contact_params contact;
+  conforma_evaluation_options options;
+  std::string error;
+  bool Create() {
+    conforma_track_params track;
+    conforma_default_track_params(&track);
+    conforma_default_contact_params(&contact);
+    contact.model = "hertz";
+    char text[CONFORMA_ERROR_TEXT];
+    const std::string file = TableFile();
+    const bool ok =
+        conforma_model_create(&track, &contact, &direct, text, sizeof text) == CONFORMA_OK &&
+        conforma_model_create_with_lut(&track, &contact, file.c_str(), &lut, text, sizeof text) == CONFORMA_OK;
+    error = ok ? "" : text;
+    conforma_default_evaluation_options(&options);
+    options.rigid_equilibrium = 1;
+    options.vertical_load_N[0] = options.vertical_load_N[1] = 50e3;
+    return ok;
+  }
+};
+
 }  // namespace
 
 TEST(CApiLut, TableEvaluationMatchesTheSolverAtANode) {
-  conforma_track_params track;
-  conforma_contact_params contact;
-  conforma_default_track_params(&track);
-  conforma_default_contact_params(&contact);
-  contact.model = "hertz";
-  Models m;
-  char error[CONFORMA_ERROR_TEXT];
-  ASSERT_EQ(conforma_model_create(&track, &contact, &m.direct, error, sizeof error), CONFORMA_OK) << error;
-  const std::string file = TableFile();
-  ASSERT_EQ(conforma_model_create_with_lut(&track, &contact, file.c_str(), &m.lut, error, sizeof error), CONFORMA_OK)
-      << error;
-  conforma_evaluation_options o;
-  conforma_default_evaluation_options(&o);
-  o.rigid_equilibrium = 1;
-  o.vertical_load_N[0] = o.vertical_load_N[1] = 50e3;
+  HertzModels m;
+  ASSERT_TRUE(m.Create()) << m.error;
+  conforma_evaluation_options o = m.options;
   for (double y : {-2e-3, 0.0, 1.5e-3}) {
     const conforma_wheelset_state s = State(y);
     conforma_wheelset_result a, b;
@@ -119,21 +131,10 @@ TEST(CApiLut, WrongModelOrFileIsAnInputError) {
 // give the saturated force mu F_n on every patch; without a table the option is ignored (bit-identical); any value
 // but 0 and 1 is an input error naming the option.
 TEST(CApiLut, PolachCreepForceSaturatesAsFastsimInFullSlip) {
-  conforma_track_params track;
-  conforma_contact_params contact;
-  conforma_default_track_params(&track);
-  conforma_default_contact_params(&contact);
-  contact.model = "hertz";
-  Models m;
-  char error[CONFORMA_ERROR_TEXT];
-  ASSERT_EQ(conforma_model_create(&track, &contact, &m.direct, error, sizeof error), CONFORMA_OK) << error;
-  const std::string file = TableFile();
-  ASSERT_EQ(conforma_model_create_with_lut(&track, &contact, file.c_str(), &m.lut, error, sizeof error), CONFORMA_OK)
-      << error;
-  conforma_evaluation_options o;
-  conforma_default_evaluation_options(&o);
-  o.rigid_equilibrium = 1;
-  o.vertical_load_N[0] = o.vertical_load_N[1] = 50e3;
+  HertzModels m;
+  ASSERT_TRUE(m.Create()) << m.error;
+  const conforma_contact_params& contact = m.contact;
+  conforma_evaluation_options o = m.options;
   conforma_wheelset_state s = State(1e-3);
   s.lateral_velocity_m_s = 0.05 * s.forward_speed_m_s;
   conforma_wheelset_result fastsim, polach;

@@ -1,10 +1,10 @@
-// C API with a contact look-up table of the conformal (and hertz) model (conforma_model_create_with_lut): the same wheelset
-// poses and load control as bench_capi.cpp's conformal_load_* cases, read from a table instead of solved (issue 15
-// item 6 asks <= 100 us for the solve; the table is the fast path of issue 16, docs/physics-reference.md §17). The
-// table (S1002 / 60E1 1:40, y 1 ... 9 mm by 0.25 mm, yaw 0 ... 2 mrad, Q 5 ... 15 kN, both wheels) is built once
-// per process into a temporary file (~1 min on 2 cores), outside the timing. Counters: the table's wheel forces
-// against the direct solve of the same pose (Fz, Fy of the left wheel, N), so the speed is read with its error;
-// the _polach cases take the table's creep forces from Polach's closed form (table_creep_force = 1).
+// C API with a contact look-up table of the conformal (and hertz) model (conforma_model_create_with_lut): the same
+// wheelset poses and load control as bench_capi.cpp's conformal_load_* cases, read from a table instead of solved
+// (issue 15 item 6 asks <= 100 us for the solve; the table is the fast path of issue 16, docs/physics-reference.md
+// §17). The table (S1002 / 60E1 1:40, y 1 ... 9 mm by 0.25 mm, yaw 0 ... 2 mrad, Q 5 ... 15 kN, both wheels) is
+// built once per process into a temporary file (a few s on 2 cores), outside the timing. Counters: the table's wheel
+// forces against the direct solve of the same pose (Fz, Fy of the left wheel, N), so the speed is read with its
+// error; the _polach cases take the table's creep forces from Polach's closed form (table_creep_force = 1).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
