@@ -112,12 +112,12 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   const conforma::WheelsetVelocity velocity{s.forward_speed_m_s, s.lateral_velocity_m_s, s.yaw_rate_rad_s,
                                             s.axle_angular_velocity_rad_s};
   const conforma::WheelContactOptions& contact = model.contact;
+  conforma::LutEvaluationOptions table;  // (with a table only)
+  table.creep_force = e.table_creep_force == 1 ? conforma::LutCreepForce::Polach : conforma::LutCreepForce::Fastsim;
   auto solve = [&](Side side) {
     conforma::WheelContactOptions options = contact;  // per-call copy: the handle stays untouched
     options.load_tolerance = e.load_tolerance;
     options.vertical_load_N = load_control ? e.vertical_load_N[conforma::side_index(side)] : -1.0;
-    conforma::LutEvaluationOptions table;
-    table.creep_force = e.table_creep_force == 1 ? conforma::LutCreepForce::Polach : conforma::LutCreepForce::Fastsim;
     return model.lut
                ? conforma::EvaluateContactLut(*model.lut, *model.geometry, side, pose, velocity, options, nullptr, table)
                : SolveWheelContact(*model.geometry, side, pose, velocity, options);

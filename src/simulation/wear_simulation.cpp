@@ -135,6 +135,38 @@ void MeanResampled(WearDistribution* into, double w_into, const WearDistribution
     into->depth_m[i] = (w_into * into->depth_m[i] + w_from * from.at(into->s(i))) / (w_into + w_from);
 }
 
+// Every class's kinematics on one geometry, in parallel (one class per thread); a class that throws is an InputError
+// naming the wheel step and the class.
+std::vector<KinematicsSeries> ClassKinematics(const WheelsetTrackGeometry& geometry, const Scenario& scenario,
+                                              const KinematicsFunction& kinematics, int step) {
+  const int nc = static_cast<int>(scenario.classes.size());
+  std::vector<KinematicsSeries> series(nc);
+  std::vector<std::string> errors(nc);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int c = 0; c < nc; ++c) {
+    try {
+      series[c] = kinematics(geometry, scenario.classes[c], c);
+    } catch (const std::exception& e) {
+      errors[c] = e.what();
+    }
+  }
+  for (int c = 0; c < nc; ++c)
+    if (!errors[c].empty())
+      throw InputError("wear step " + std::to_string(step) + ": kinematics of class " + scenario.classes[c].name +
+                       ": " + errors[c]);
+  return series;
+}
+
+// Half-cosine taper of the depth over `taper` at both ends of the profile (WearSimulationOptions::edge_taper_m).
+void TaperEdges(WearDistribution* depth, double taper) {
+  if (!(taper > 0.0)) return;
+  const double L = depth->length_m();
+  for (size_t i = 0; i < depth->size(); ++i) {
+    const double e = std::min(depth->s(i), L - depth->s(i));
+    if (e < taper) depth->depth_m[i] *= 0.5 - 0.5 * std::cos(M_PI * e / taper);
+  }
+}
+
 }  // namespace
 
 WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimulationOptions& options,
@@ -198,37 +230,18 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
       for (int m = 0; m < substeps; ++m) {
         if (m > 0 && total_km > 0.0 && km >= total_km * (1.0 - 1e-12)) break;
         const WheelsetTrackGeometry geometry(SetupWith(scenario, wheel, rails));
-        std::vector<KinematicsSeries> series(scenario.classes.size());
-        std::vector<std::string> errors(scenario.classes.size());
-        const int nc = static_cast<int>(scenario.classes.size());
-#pragma omp parallel for schedule(dynamic, 1)
-        for (int c = 0; c < nc; ++c) {
-          try {
-            series[c] = kinematics(geometry, scenario.classes[c], c);
-          } catch (const std::exception& e) {
-            errors[c] = e.what();
-          }
-        }
-        for (int c = 0; c < nc; ++c)
-          if (!errors[c].empty()) throw InputError("wear step " + std::to_string(j) + ": kinematics of class " +
-                                                   scenario.classes[c].name + ": " + errors[c]);
+        const std::vector<KinematicsSeries> series = ClassKinematics(geometry, scenario, kinematics, j);
         const StepWear wear = ComputeStepWear(geometry, scenario.classes, series, step_options, contact);
 
         ProfileUpdateOptions uo;
-        uo.max_depth_per_step_m = substeps > 1 ? scenario.update.cap_m / substeps : scenario.update.cap_m;
+        uo.max_depth_per_step_m = scenario.update.cap_m / substeps;  // (exact for one sub-step)
         uo.smoothing.cutoff_wavelength_m = scenario.update.smoothing_cutoff_m;
         uo.validity.max_curvature_1_m = scenario.update.max_curvature_1_m;
         uo.cut_conserves_area = scenario.update.overhang_cut_conserves_area;
         uo.step_index = j;
         if (total_km > 0.0) uo.max_distance_step_m = (total_km - km) * 1e3;
         WearDistribution depth = wear.wheel.wheel_depth_per_metre;
-        if (options.edge_taper_m > 0.0) {
-          const double L = depth.length_m();
-          for (size_t i = 0; i < depth.size(); ++i) {
-            const double e = std::min(depth.s(i), L - depth.s(i));
-            if (e < options.edge_taper_m) depth.depth_m[i] *= 0.5 - 0.5 * std::cos(M_PI * e / options.edge_taper_m);
-          }
-        }
+        TaperEdges(&depth, options.edge_taper_m);
         ProfileUpdateResult up = UpdateProfile(wheel, depth, 1.0, uo);
         for (int h = 0; h < options.invalid_step_halvings && up.status == ProfileUpdateStatus::InvalidProfile; ++h) {
           uo.max_depth_per_step_m *= 0.5;

@@ -4,6 +4,7 @@
 // parallel_wheels = 1, the right wheel on a second thread); Time column: the wall time.
 #include <benchmark/benchmark.h>
 
+#include "capi_bench_pose.hpp"
 #include "conforma_c.h"
 
 namespace {
@@ -23,26 +24,14 @@ void BM_CApiWheelset(benchmark::State& state, const char* model_name, int mode, 
     state.SkipWithError(error);
     return;
   }
-  conforma_wheelset_state s{};
-  s.lateral_m = lateral_m;
-  s.yaw_rad = 1e-3;
-  s.forward_speed_m_s = 20.0;
-  s.axle_angular_velocity_rad_s = 20.0 / 0.46;
+  conforma_wheelset_state s = conforma_bench::CApiBenchState(lateral_m);
   conforma_evaluation_options o;
   conforma_default_evaluation_options(&o);
   if (load_tolerance > 0.0) o.load_tolerance = load_tolerance;  // else the default (1e-6)
   o.parallel_wheels = parallel_wheels;
   // the pose a multibody code would pass: rigid contact, then (approach mode) 50 um below it
+  conforma_bench::SetRigidPose(model, o, mode == CONFORMA_GIVEN_APPROACH ? 50e-6 : 0.0, &s);
   conforma_wheelset_result r;
-  {
-    conforma_evaluation_options rigid = o;
-    rigid.rigid_equilibrium = 1;
-    rigid.normal_mode = CONFORMA_GIVEN_APPROACH;
-    rigid.approach_m = 0.0;
-    conforma_evaluate(model, &s, &rigid, &r);
-    s.roll_rad = r.roll_rad;
-    s.vertical_m = r.wheel[0].vertical_position_m - (mode == CONFORMA_GIVEN_APPROACH ? 50e-6 : 0.0);
-  }
   o.normal_mode = mode;
   for (auto _ : state) {
     const int status = conforma_evaluate(model, &s, &o, &r);

@@ -17,6 +17,7 @@
 #include "conforma/contact_lut.hpp"
 #include "conforma/contact_lut_io.hpp"
 #include "conforma/standard_profiles.hpp"
+#include "capi_bench_pose.hpp"
 #include "conforma_c.h"
 
 namespace {
@@ -62,24 +63,13 @@ void BM_CApiWheelsetLut(benchmark::State& state, const char* model_name, conform
     conforma_model_destroy(table);
     return;
   }
-  conforma_wheelset_state s{};
-  s.lateral_m = lateral_m;
-  s.yaw_rad = 1e-3;
-  s.forward_speed_m_s = 20.0;
-  s.axle_angular_velocity_rad_s = 20.0 / 0.46;
+  conforma_wheelset_state s = conforma_bench::CApiBenchState(lateral_m);
   conforma_evaluation_options o;
   conforma_default_evaluation_options(&o);  // load control, 10 kN per wheel
   o.table_creep_force = table_creep_force;   // 0: FASTSIM (as the solve), 1: Polach
+  // the pose a multibody code would pass (as bench_capi.cpp); the table takes its own vertical position and roll
+  conforma_bench::SetRigidPose(direct, o, 0.0, &s);
   conforma_wheelset_result r, exact;
-  {  // the pose a multibody code would pass (as bench_capi.cpp); the table takes its own vertical position and roll
-    conforma_evaluation_options rigid = o;
-    rigid.rigid_equilibrium = 1;
-    rigid.normal_mode = CONFORMA_GIVEN_APPROACH;
-    rigid.approach_m = 0.0;
-    conforma_evaluate(direct, &s, &rigid, &exact);
-    s.roll_rad = exact.roll_rad;
-    s.vertical_m = exact.wheel[0].vertical_position_m;
-  }
   for (auto _ : state) {
     if (conforma_evaluate(table, &s, &o, &r) != CONFORMA_OK) {
       state.SkipWithError(r.error_message);
