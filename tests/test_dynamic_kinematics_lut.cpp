@@ -135,6 +135,39 @@ TEST(DynamicKinematicsLut, QueryOutsideTheTableFailsTheClassNamingIt) {
   EXPECT_NE(r.failure.find("lateral"), std::string::npos) << r.failure;
 }
 
+// The provider's run widens a table whose lateral axis the curve leaves (flange contact beyond |y| = 2 mm) and runs
+// the class again on it: it succeeds, the wheelset goes past the narrow table, and the samples are those of a run on
+// the widened table built directly (the widening is only a bigger grid).
+TEST(DynamicKinematicsLut, ProviderWidensATableTheClassLeaves) {
+  const Scenario sc = ParseScenario(
+      ScenarioText("{duration_s: 0.1, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none, contact: lut}", "300"),
+      "test");
+  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
+  ContactLutBuildOptions o;
+  o.grid = ParseContactLutGrid({"-2:2:0.5", "-8:8:4", "20:95:15"});
+  o.contact = ScenarioQuasiStaticOptions(sc, ContactModel::Hertz).contact;
+  const auto narrow = std::make_shared<const ContactLut>(BuildContactLut(g, o));
+  const DynamicClassKinematics r = SimulateClassKinematicsCoveringLut(sc, g, sc.classes[0], ContactModel::Hertz, narrow);
+  ASSERT_TRUE(r.failure.empty()) << r.failure;
+  ASSERT_FALSE(r.series.samples.empty());
+  std::printf("%s\n", r.series.source.c_str());
+  EXPECT_NE(r.series.source.find("table widened for the class"), std::string::npos) << r.series.source;
+  double y_min = 0.0;
+  for (const KinematicsSample& k : r.series.samples) y_min = std::min(y_min, k.pose.lateral_m);
+  EXPECT_LT(y_min, -2e-3) << "the class must need the wider table";
+  // the same class on a table of a grid that covers it from the start, at the same nodes: the same samples
+  ContactLutBuildOptions wide = o;
+  wide.grid = CoverContactLutGrid(o.grid, -y_min + 2e-3, 8e-3, 20e3, 95e3);
+  const DynamicClassKinematics d = SimulateClassKinematicsWithLut(
+      sc, g, sc.classes[0], ContactModel::Hertz, std::make_shared<const ContactLut>(BuildContactLut(g, wide)));
+  ASSERT_TRUE(d.failure.empty()) << d.failure;
+  ASSERT_EQ(d.series.samples.size(), r.series.samples.size());
+  for (size_t i = 0; i < d.series.samples.size(); ++i) {
+    EXPECT_NEAR(d.series.samples[i].pose.lateral_m, r.series.samples[i].pose.lateral_m, 1e-9) << i;
+    EXPECT_NEAR(d.series.samples[i].pose.yaw_rad, r.series.samples[i].pose.yaw_rad, 1e-9) << i;
+  }
+}
+
 // A table whose evaluation gives a non-finite patch (here planted: every left node's contact position NaN) is a
 // refusal too: the NaN is never used and the class fails naming the query.
 TEST(DynamicKinematicsLut, NonFinitePatchFromTheTableFailsTheClass) {

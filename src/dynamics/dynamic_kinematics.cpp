@@ -225,7 +225,7 @@ KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel 
       } catch (const std::exception& e) {
         r.failure = std::string("contact look-up table not built: ") + e.what();
       }
-      if (table) r = SimulateClassKinematicsWithLut(scenario, g, tc, model, table);
+      if (table) r = SimulateClassKinematicsCoveringLut(scenario, g, tc, model, table);
     } else {
       r = SimulateClassKinematics(scenario, g, tc, model, contact);
     }

@@ -13,12 +13,28 @@ namespace conforma {
 
 namespace {
 
-// The first query the table refused and how many; one per class run (the run is single-threaded).
+// The first query the table refused and how many; one per class run (the run is single-threaded). Beyond that, what
+// a wider table would answer: the largest |y| and |psi| of the queries outside the table's lateral or yaw axis
+// (`outside`), and whether any refusal was of another kind (`other`: the load axis, a non-finite patch).
 struct LutRefusals {
   long count = 0;
   std::string first;
+  bool outside = false, other = false;
+  double outside_lateral_abs_m = 0.0, outside_yaw_abs_rad = 0.0;
   void add(const std::string& what) {
     if (count++ == 0) first = what;
+  }
+  // a query at (y, psi) refused with an InputError: outside the grid's lateral or yaw axis, or another refusal
+  void classify(const ContactLutGrid& grid, double y, double psi) {
+    const bool y_out = y < grid.lateral_m.front() || y > grid.lateral_m.back();
+    const bool psi_out = psi < grid.yaw_rad.front() || psi > grid.yaw_rad.back();
+    if (!y_out && !psi_out) {
+      other = true;
+      return;
+    }
+    outside = true;
+    if (y_out) outside_lateral_abs_m = std::max(outside_lateral_abs_m, std::fabs(y));
+    if (psi_out) outside_yaw_abs_rad = std::max(outside_yaw_abs_rad, std::fabs(psi));
   }
 };
 
@@ -75,8 +91,13 @@ ContactLutGrid DynamicKinematicsLutGrid(const Scenario& sc, const WheelsetTrackG
 
 std::shared_ptr<const ContactLut> BuildDynamicKinematicsLut(const Scenario& sc, const WheelsetTrackGeometry& g,
                                                             ContactModel model) {
+  return BuildDynamicKinematicsLutOnGrid(sc, g, model, DynamicKinematicsLutGrid(sc, g, model));
+}
+
+std::shared_ptr<const ContactLut> BuildDynamicKinematicsLutOnGrid(const Scenario& sc, const WheelsetTrackGeometry& g,
+                                                                  ContactModel model, const ContactLutGrid& grid) {
   ContactLutBuildOptions o;
-  o.grid = DynamicKinematicsLutGrid(sc, g, model);
+  o.grid = grid;
   o.contact = ScenarioQuasiStaticOptions(sc, model).contact;
   o.wheel_profile = "wear-step wheel of " + sc.source;
   o.rail_profile = "rail of " + sc.source;
@@ -84,24 +105,28 @@ std::shared_ptr<const ContactLut> BuildDynamicKinematicsLut(const Scenario& sc, 
   return std::make_shared<const ContactLut>(BuildContactLut(g, o));
 }
 
-DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const WheelsetTrackGeometry& g,
-                                                      const TrackClass& tc, ContactModel model,
-                                                      std::shared_ptr<const ContactLut> table) {
+namespace {
+
+// SimulateClassKinematicsWithLut, its refusals in `refusals`.
+DynamicClassKinematics RunClassOnTable(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackClass& tc,
+                                       ContactModel model, std::shared_ptr<const ContactLut> table,
+                                       const std::shared_ptr<LutRefusals>& refusals) {
   if (!table) throw InputError("dynamic provider with contact: lut: no table");
   LutEvaluationOptions evaluation;
   evaluation.creep_force = ParseLutCreepForce(sc.kinematics.dynamic.lut_creep);
   const LutContactFunction lut_contact = MakeLutContactFunction(table, evaluation);
   const LutPoseFunction lut_pose = MakeLutPoseFunction(table);
-  auto refusals = std::make_shared<LutRefusals>();
   // a refused query is recorded and answered "not converged": never used (dynamic_kinematics_lut.hpp)
-  const WheelContactFunction contact = [lut_contact, refusals](const WheelsetTrackGeometry& geometry, Side side,
-                                                                const WheelsetPose& pose, const WheelsetVelocity& velocity,
-                                                                const WheelContactOptions& options) {
+  const WheelContactFunction contact = [lut_contact, refusals, table](const WheelsetTrackGeometry& geometry, Side side,
+                                                                       const WheelsetPose& pose,
+                                                                       const WheelsetVelocity& velocity,
+                                                                       const WheelContactOptions& options) {
     WheelContactReport r;
     try {
       r = lut_contact(geometry, side, pose, velocity, options);
     } catch (const InputError& e) {
       refusals->add(std::string(to_string(side)) + " wheel: " + e.what());
+      refusals->classify(table->grid, pose.lateral_m, pose.yaw_rad);
       r = WheelContactReport{};
       r.status = WheelContactStatus::NotConverged;
       return r;
@@ -111,17 +136,19 @@ DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const 
       std::snprintf(b, sizeof b, "%s wheel: a non-finite patch from the table at y = %.6g mm, psi = %.6g mrad, Q = %.6g N",
                     to_string(side), 1e3 * pose.lateral_m, 1e3 * pose.yaw_rad, options.vertical_load_N);
       refusals->add(b);
+      refusals->other = true;
       r = WheelContactReport{};
       r.status = WheelContactStatus::NotConverged;
     }
     return r;
   };
-  const RigidPoseFunction pose = [lut_pose, refusals](const WheelsetTrackGeometry& geometry, double y, double psi,
-                                                      const EquilibriumOptions& options) {
+  const RigidPoseFunction pose = [lut_pose, refusals, table](const WheelsetTrackGeometry& geometry, double y,
+                                                             double psi, const EquilibriumOptions& options) {
     try {
       return lut_pose(geometry, y, psi, options);
     } catch (const InputError& e) {
       refusals->add(std::string("rigid pose: ") + e.what());
+      refusals->classify(table->grid, y, psi);
       EquilibriumResult r;
       r.status = EquilibriumStatus::NotConverged;
       return r;
@@ -139,6 +166,56 @@ DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const 
     out.series.samples.clear();
   }
   return out;
+}
+
+}  // namespace
+
+DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const WheelsetTrackGeometry& g,
+                                                      const TrackClass& tc, ContactModel model,
+                                                      std::shared_ptr<const ContactLut> table) {
+  return RunClassOnTable(sc, g, tc, model, std::move(table), std::make_shared<LutRefusals>());
+}
+
+DynamicClassKinematics SimulateClassKinematicsCoveringLut(const Scenario& sc, const WheelsetTrackGeometry& g,
+                                                          const TrackClass& tc, ContactModel model,
+                                                          std::shared_ptr<const ContactLut> table) {
+  std::string widened;  // what the widenings did, for the series' source
+  for (int widening = 0;; ++widening) {
+    auto refusals = std::make_shared<LutRefusals>();
+    DynamicClassKinematics out = RunClassOnTable(sc, g, tc, model, table, refusals);
+    const bool wider_answers = refusals->outside && !refusals->other;
+    if (out.failure.empty() || !wider_answers || widening == kMaxLutWidenings) {
+      if (!widened.empty()) {
+        out.series.source += widened;
+        if (!out.failure.empty()) out.failure += " (after" + widened + ")";
+      }
+      return out;
+    }
+    // a grid covering every refused query with a margin (CoverContactLutGrid continues the axes' end spacing)
+    const ContactLutGrid& now = table->grid;
+    const double lateral_abs = std::max({std::fabs(now.lateral_m.front()), std::fabs(now.lateral_m.back()),
+                                         refusals->outside_lateral_abs_m + kLutWideningLateralMarginM});
+    const double yaw_abs = std::max({std::fabs(now.yaw_rad.front()), std::fabs(now.yaw_rad.back()),
+                                     refusals->outside_yaw_abs_rad + kLutWideningYawMarginRad});
+    const ContactLutGrid grid =
+        CoverContactLutGrid(now, lateral_abs, yaw_abs, now.load_N.front(), now.load_N.back());
+    table = BuildDynamicKinematicsLutOnGrid(sc, g, model, grid);
+    char b[240];
+    std::snprintf(b, sizeof b, "%s table widened for the class to |y| <= %.2f mm, |psi| <= %.1f mrad (%ld queries "
+                  "refused, outside up to", widened.empty() ? ";" : ",",
+                  1e3 * std::max(-grid.lateral_m.front(), grid.lateral_m.back()),
+                  1e3 * std::max(-grid.yaw_rad.front(), grid.yaw_rad.back()), refusals->count);
+    widened += b;
+    if (refusals->outside_lateral_abs_m > 0.0) {
+      std::snprintf(b, sizeof b, " |y| %.2f mm", 1e3 * refusals->outside_lateral_abs_m);
+      widened += b;
+    }
+    if (refusals->outside_yaw_abs_rad > 0.0) {
+      std::snprintf(b, sizeof b, " |psi| %.2f mrad", 1e3 * refusals->outside_yaw_abs_rad);
+      widened += b;
+    }
+    widened += ")";
+  }
 }
 
 std::shared_ptr<const ContactLut> DynamicKinematicsLutCache::get(const Scenario& sc, const WheelsetTrackGeometry& g,
