@@ -121,6 +121,44 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("update: {overhang_cut: keep}\n") + kClasses, "update.overhang_cut");
 }
 
+// --set: the file with keys replaced (a scalar, a flow map creating a missing map), the source naming them; the same
+// checks as the file's keys, and malformed overrides named.
+TEST(Scenario, OverridesReplaceKeysOfTheFile) {
+  const std::string file = kDir + "default_metro.yaml";
+  const Scenario s = LoadScenario(file, {"kinematics.provider=dynamic", "load_tolerance=1.1e-6",
+                                         "kinematics.dynamic={contact: lut, duration_s: 64, sample_interval_s: 0.32}"});
+  const Scenario base = LoadScenario(file);
+  EXPECT_EQ(s.kinematics.provider, KinematicsProvider::Dynamic);
+  EXPECT_EQ(base.kinematics.provider, KinematicsProvider::QuasiStatic);
+  EXPECT_EQ(s.load_tolerance, 1.1e-6);
+  EXPECT_TRUE(s.kinematics.dynamic.lut_contact);
+  EXPECT_EQ(s.kinematics.dynamic.duration_s, 64.0);
+  EXPECT_EQ(s.kinematics.dynamic.sample_interval_s, 0.32);
+  EXPECT_EQ(s.kinematics.dynamic.settle_s, base.kinematics.dynamic.settle_s);  // the map's other keys: defaults
+  // everything else as in the file
+  EXPECT_EQ(s.classes.size(), base.classes.size());
+  EXPECT_EQ(s.kinematics.contact_model, base.kinematics.contact_model);
+  EXPECT_EQ(s.update.cap_m, base.update.cap_m);
+  EXPECT_NE(s.source.find("--set load_tolerance=1.1e-6"), std::string::npos) << s.source;
+  EXPECT_EQ(LoadScenario(file, {}).source, file);
+  auto expect_error = [&](const std::string& item, const std::string& named) {
+    try {
+      LoadScenario(file, {item});
+      ADD_FAILURE() << item << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+    }
+  };
+  expect_error("kinematics.provider", "expected KEY=VALUE");
+  expect_error("=dynamic", "expected KEY=VALUE");
+  expect_error("load_tolerance=", "value is empty");
+  expect_error("kinematics..provider=dynamic", "empty part");
+  expect_error("name.first=x", "'name' is not a map");
+  expect_error("kinematics.colour=red", "colour");           // unknown key, as in the file
+  expect_error("load_tolerance=-1", "load_tolerance");        // bad value, as in the file
+  expect_error("kinematics.dynamic={contact: [", "not YAML");
+}
+
 TEST(Scenario, MinimalFileTakesTheDefaults) {
   const Scenario s = ParseScenario(kClasses, "mini.yaml");
   EXPECT_EQ(s.classes.size(), 1u);

@@ -177,6 +177,12 @@ struct Scenario {
 
 // Throws InputError "<file>: <what>" for unreadable/malformed files, unknown keys and bad values.
 Scenario LoadScenario(const std::string& path);
+// LoadScenario with overrides "key.path=value" (the commands' --set, src/simulation/scenario_overrides.cpp): each
+// value is read as YAML (a scalar, or a flow map / list such as "{contact: lut, duration_s: 64}") and replaces the
+// node at the dotted key path of the file (maps created where missing) before the scenario is read; the scenario's
+// source names the overrides. InputError for an override without '=', an empty value or key part, or a path through
+// a node that is not a map; unknown keys and bad values as in the file.
+Scenario LoadScenario(const std::string& path, const std::vector<std::string>& overrides);
 // The scenario's contact settings on `options` (material, elastic flange, load tolerance and balance, the KP FASTSIM
 // variants): what the curving solve, the wear step and the curving command share. Model and load are not touched.
 void ApplyScenarioContact(const Scenario& scenario, WheelContactOptions* options);

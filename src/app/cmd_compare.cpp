@@ -106,6 +106,7 @@ std::vector<PublishedCheck> WriteReport(const std::string& dir, const Scenario& 
 void RegisterCompareCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("compare", "wear evolution with several contact models, Markdown + PNG report");
   struct Args {
+    std::vector<std::string> scenario_overrides;  // --set
     std::string scenario, out = "compare_out", models = "hertz,conformal";
     int steps = 7;
     std::string python;  // empty: PythonOr's default
@@ -114,12 +115,13 @@ void RegisterCompareCommand(CLI::App& app) {
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--out", a->out, "output folder");
+  AddScenarioOverrides(sub, &a->scenario_overrides);
   sub->add_option("--models", a->models, WearModelHelp("comma-separated contact models"));
   sub->add_option("--steps", a->steps, "wheel steps per model");
   sub->add_option("--python", a->python, kPythonHelp);
   sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
   sub->callback([a, sub]() {
-    const Scenario sc = LoadScenario(a->scenario);
+    const Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
     // every check before the minutes of computing: models, output folder, plotting interpreter
     const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
     if (a->steps < 1) throw InputError("option --steps: must be >= 1");

@@ -98,6 +98,7 @@ void PrintSampleSummary(const KinematicsSeries& s) {
 void RegisterCurvingCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("curving", "curving kinematics of a scenario's track classes, with the wheel forces");
   struct Args {
+    std::vector<std::string> scenario_overrides;  // --set
     std::string scenario, model, provider;
     int track_class = -1;
     bool equilibrium = false;
@@ -105,13 +106,14 @@ void RegisterCurvingCommand(CLI::App& app) {
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file")->required();
   sub->add_option("--class", a->track_class, "track class index (default: all)");
+  AddScenarioOverrides(sub, &a->scenario_overrides);
   sub->add_option("--model", a->model, WearModelHelp("contact model") + "; default: the scenario's");
   sub->add_flag("--equilibrium", a->equilibrium,
                 "also print the quasi-static solve itself: status and residual per bogie, flange-contact shift");
   sub->add_option("--provider", a->provider, "kinematics provider: quasistatic, kinematic, centred, dynamic (default: the scenario's; dynamic prints a summary of "
                                           "the samples per wheelset)");
   sub->callback([a, sub]() {
-    Scenario sc = LoadScenario(a->scenario);
+    Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
     const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
     if (!IsWearContactModel(model))
       throw InputError(std::string("scenario contact_model '") + to_string(model) +

@@ -60,6 +60,7 @@ LinearWheelsetContact ProfileLinearContact(const WheelsetTrackGeometry& g, const
 void RegisterDynamicsCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("dynamics", "time-domain lateral vehicle dynamics over a tangent or a curve");
   struct Args {
+    std::vector<std::string> scenario_overrides;  // --set
     std::string scenario, model, out, stepper = "rosenbrock4", irregularity, lut, lut_creep = "fastsim";
     int bogies = 0, jacobian_reuse = 1;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
@@ -70,6 +71,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file (vehicle, profiles, material, contact model)")->required();
   sub->add_option("--model", a->model, WearModelHelp("contact model") + "; default: the scenario's");
+  AddScenarioOverrides(sub, &a->scenario_overrides);
   sub->add_option("--bogies", a->bogies, "number of bogies of the vehicle (default: the scenario's; 1: one bogie, "
                                          "secondary stage against a carbody following the track)");
   sub->add_option("--speed-kmh", a->speed_kmh, "speed, km/h");
@@ -102,7 +104,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--vmax-kmh", a->v_max_kmh, "--eig: upper end of the critical-speed search, km/h");
   sub->add_option("--out", a->out, "time-history CSV file");
   sub->callback([a, sub]() {
-    Scenario sc = LoadScenario(a->scenario);
+    Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
     const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
     if (!IsWearContactModel(model))
       throw InputError(std::string("contact model '") + to_string(model) + "' has no creep forces; usable: " +

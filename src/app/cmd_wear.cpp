@@ -19,6 +19,7 @@ namespace conforma::cli {
 void RegisterWearCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("wear", "wheel (and rail) wear evolution of a scenario");
   struct Args {
+    std::vector<std::string> scenario_overrides;  // --set
     std::string scenario, model, out = "wear_out";
     int steps = -1;
     double km = -1.0;
@@ -28,13 +29,14 @@ void RegisterWearCommand(CLI::App& app) {
   auto a = std::make_shared<Args>();
   sub->add_option("--scenario", a->scenario, "scenario YAML file (scenarios/default_metro.yaml)")->required();
   sub->add_option("--model", a->model, WearModelHelp("contact model") + "; default: the scenario's");
+  AddScenarioOverrides(sub, &a->scenario_overrides);
   sub->add_option("--out", a->out, "output folder");
   sub->add_option("--steps", a->steps, "wheel steps (default: the scenario's)");
   sub->add_option("--km", a->km, "stop at this distance (default: the scenario's total_km; 0 = unlimited)");
   sub->add_option("--python", a->python, std::string(kPythonHelp) + "; only for the rail plots of rail steps");
   sub->add_flag("!--no-plot", a->plot, "no rail plots with rail steps (no python needed)");
   sub->callback([a, sub]() {
-    const Scenario sc = LoadScenario(a->scenario);
+    const Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
     const bool rail_steps = !sc.rail_steps.fixed;
     const std::string python = PythonOr(a->python);
     if (rail_steps && a->plot) RequirePlotPython(python, "--python");  // before the minutes of computing

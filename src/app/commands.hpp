@@ -2,6 +2,7 @@
 // Subcommands of the conforma executable; each file src/app/cmd_<name>.cpp registers one.
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "conforma/wheel_contact_options.hpp"
 
@@ -45,6 +46,13 @@ inline void AddKpFastsimFlags(CLI::App* sub, bool* spin_centre, bool* local_flex
                 "kp, kpec, conformal: FASTSIM's spin about the patch centre (docs/physics-reference.md §5.4)");
   sub->add_flag("--kp-local-flexibilities", *local_flex,
                 "kp, kpec, conformal: strip-wise FASTSIM flexibilities from the local half-length (§5.4)");
+}
+// --set KEY=VALUE (repeatable): overrides of the scenario file's keys (LoadScenario with overrides, scenario.hpp).
+inline void AddScenarioOverrides(CLI::App* sub, std::vector<std::string>* overrides) {
+  sub->add_option("--set", *overrides,
+                  "override a scenario key, KEY a dotted path, VALUE YAML (repeatable), e.g. --set "
+                  "kinematics.provider=dynamic --set 'kinematics.dynamic={contact: lut, duration_s: 64}'")
+      ->allow_extra_args(false);
 }
 inline constexpr const char* kPythonHelp =
     "python interpreter with matplotlib for the plots (default: $CONFORMA_PYTHON, else python3 on PATH)";

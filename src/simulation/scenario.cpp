@@ -598,16 +598,6 @@ void ApplyScenarioContact(const Scenario& scenario, WheelContactOptions* options
   options->kp_local_flexibilities = scenario.kp_local_flexibilities;
 }
 
-Scenario LoadScenario(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open scenario file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string dir = ".";
-  const auto slash = path.find_last_of('/');
-  if (slash != std::string::npos) dir = path.substr(0, slash);
-  if (dir.empty()) dir = "/";
-  return ParseScenario(ss.str(), path, dir);
-}
+Scenario LoadScenario(const std::string& path) { return LoadScenario(path, {}); }
 
 }  // namespace conforma
