@@ -119,17 +119,26 @@ TEST(DynamicKinematicsLut, TangentClassWithIrregularityMatchesTheDirectContact) 
   EXPECT_LT(dp.psi, 0.2e-3);
 }
 
-TEST(DynamicKinematicsLut, QueryOutsideTheTableFailsTheClassNamingIt) {
-  const Scenario sc = ParseScenario(
+// An R 300 m class and a Hertz table of |y| <= 2 mm on its geometry: the curve needs the flange (y < -5 mm).
+struct NarrowTableCase {
+  Scenario sc = ParseScenario(
       ScenarioText("{duration_s: 0.1, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none, contact: lut}", "300"),
       "test");
-  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
-  // a table of |y| <= 2 mm: the curve needs the flange (y < -5 mm)
-  ContactLutBuildOptions o;
-  o.grid = ParseContactLutGrid({"-2:2:0.5", "-8:8:4", "20:95:15"});
-  o.contact = ScenarioQuasiStaticOptions(sc, ContactModel::Hertz).contact;
-  const auto narrow = std::make_shared<const ContactLut>(BuildContactLut(g, o));
-  const DynamicClassKinematics r = SimulateClassKinematicsWithLut(sc, g, sc.classes[0], ContactModel::Hertz, narrow);
+  WheelsetTrackGeometry g{sc.MakeTrackSetup()};
+  ContactLutBuildOptions o = Options();
+  std::shared_ptr<const ContactLut> narrow = std::make_shared<const ContactLut>(BuildContactLut(g, o));
+  ContactLutBuildOptions Options() const {
+    ContactLutBuildOptions b;
+    b.grid = ParseContactLutGrid({"-2:2:0.5", "-8:8:4", "20:95:15"});
+    b.contact = ScenarioQuasiStaticOptions(sc, ContactModel::Hertz).contact;
+    return b;
+  }
+};
+
+TEST(DynamicKinematicsLut, QueryOutsideTheTableFailsTheClassNamingIt) {
+  const NarrowTableCase c;
+  const DynamicClassKinematics r = SimulateClassKinematicsWithLut(c.sc, c.g, c.sc.classes[0], ContactModel::Hertz,
+                                                                  c.narrow);
   EXPECT_TRUE(r.series.samples.empty());
   EXPECT_NE(r.failure.find("contact look-up table refused"), std::string::npos) << r.failure;
   EXPECT_NE(r.failure.find("lateral"), std::string::npos) << r.failure;
@@ -139,15 +148,12 @@ TEST(DynamicKinematicsLut, QueryOutsideTheTableFailsTheClassNamingIt) {
 // the class again on it: it succeeds, the wheelset goes past the narrow table, and the samples are those of a run on
 // the widened table built directly (the widening is only a bigger grid).
 TEST(DynamicKinematicsLut, ProviderWidensATableTheClassLeaves) {
-  const Scenario sc = ParseScenario(
-      ScenarioText("{duration_s: 0.1, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none, contact: lut}", "300"),
-      "test");
-  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
-  ContactLutBuildOptions o;
-  o.grid = ParseContactLutGrid({"-2:2:0.5", "-8:8:4", "20:95:15"});
-  o.contact = ScenarioQuasiStaticOptions(sc, ContactModel::Hertz).contact;
-  const auto narrow = std::make_shared<const ContactLut>(BuildContactLut(g, o));
-  const DynamicClassKinematics r = SimulateClassKinematicsCoveringLut(sc, g, sc.classes[0], ContactModel::Hertz, narrow);
+  const NarrowTableCase c;
+  const Scenario& sc = c.sc;
+  const WheelsetTrackGeometry& g = c.g;
+  const ContactLutBuildOptions& o = c.o;
+  const DynamicClassKinematics r = SimulateClassKinematicsCoveringLut(sc, g, sc.classes[0], ContactModel::Hertz,
+                                                                      c.narrow);
   ASSERT_TRUE(r.failure.empty()) << r.failure;
   ASSERT_FALSE(r.series.samples.empty());
   std::printf("%s\n", r.series.source.c_str());
