@@ -30,8 +30,11 @@
  * COST (tests/bench/bench_capi.cpp, conforma_bench --benchmark_filter=CApiWheelset, both wheels, CPU time): the
  * conformal model takes about 0.2 ms per wheelset pose in approach mode and about 0.3-0.35 ms in load control (three
  * Kik-Piotrowski and FASTSIM solves per wheel); the Hertz model about 0.15 ms in load control. parallel_wheels = 1
- * solves the two wheels on two threads: the wall time can drop towards half where a second core is free, at some
- * CPU more (starting the thread, ~10 us); on a loaded machine it was slower (bench _parallel cases).
+ * solves the two wheels as two sections of an OpenMP region of two threads (OpenMP keeps the second thread between
+ * calls): where a second core is free the wall time drops towards the slower wheel's, at some CPU more (the waiting
+ * thread spins a while after each call; OMP_WAIT_POLICY=passive stops that). Measured on 2 idle cores, load control:
+ * 178 / 159 us wall against 313 / 255 us on one thread (tread y = 3 mm / flange y = 7 mm; a thread started per
+ * call, as before, gave 326 / 239 us).
  *
  * THREAD SAFETY: a model handle is immutable after conforma_model_create(). conforma_evaluate() on the SAME
  * handle may be called from any number of threads at once; each call uses only its own stack/heap workspace.
@@ -141,9 +144,10 @@ typedef struct conforma_evaluation_options {
   double approach_m;               /* rigid_equilibrium with CONFORMA_GIVEN_APPROACH: push-down below rigid contact,
                                       default 5e-5 m */
   double load_tolerance;           /* relative tolerance of load control, > 0; default 1e-6 */
-  int parallel_wheels;             /* 0 (default): both wheels on the calling thread; 1: the right wheel on a second
-                                      thread while the calling thread solves the left (the wheels are independent:
-                                      results bit-identical to 0; pays only with a free core, see COST); any other
+  int parallel_wheels;             /* 0 (default): both wheels on the calling thread; 1: the two wheels on two
+                                      threads of an OpenMP region (the wheels are independent: results bit-identical
+                                      to 0; pays only with a free core, see COST; inside the caller's own parallel
+                                      region, nested parallelism off, both run on the calling thread); any other
                                       value is CONFORMA_ERROR_INPUT */
   int table_creep_force;           /* with a table (conforma_model_create_with_lut) only: 0 (default) FASTSIM, as the
                                       solve; 1: Polach's closed form on each patch's ellipse (no spin moment, adhesion

@@ -1,7 +1,7 @@
 // C API: one wheelset pose (both wheels) per call, as a multibody code calls it each time step. Target
 // (issue 7): <= 100 us median for the conformal model. Load control (10 kN per wheel) and given approach.
 // CPU column: the whole process's CPU time (MeasureProcessCPUTime: both threads of the _parallel cases, which set
-// parallel_wheels = 1, the right wheel on a second thread); Time column: the wall time.
+// parallel_wheels = 1, the wheels on two OpenMP threads); Time column: the wall time.
 #include <benchmark/benchmark.h>
 
 #include "capi_bench_pose.hpp"
