@@ -174,6 +174,31 @@ TEST(DynamicKinematicsLut, ProviderWidensATableTheClassLeaves) {
   }
 }
 
+// dopri5 with a step budget the run cannot keep (here 20 steps per simulated second, ~300 needed): the provider runs
+// the class again with rosenbrock4, names that in the source, and gives the implicit run's samples; no fallback.
+TEST(DynamicKinematicsLut, ExplicitStepperOverItsBudgetIsRunAgainImplicitly) {
+  const std::string keys = "duration_s: 0.2, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none, contact: lut";
+  const Scenario tight = ParseScenario(ScenarioText("{" + keys + ", stepper: dopri5, dopri5_steps_per_s_max: 20}", "300"),
+                                       "test");
+  const Scenario implicit = ParseScenario(ScenarioText("{" + keys + ", stepper: rosenbrock4}", "300"), "test");
+  const WheelsetTrackGeometry g(tight.MakeTrackSetup());
+  const DynamicClassKinematics stopped = SimulateClassKinematicsWithLut(
+      tight, g, tight.classes[0], ContactModel::Hertz, BuildDynamicKinematicsLut(tight, g, ContactModel::Hertz));
+  EXPECT_EQ(stopped.status, DynamicsStatus::StepLimit) << stopped.failure;
+  auto log = std::make_shared<KinematicsFallbackLog>();
+  const KinematicsSeries a = MakeWearKinematics(tight, ContactModel::Hertz, &SolveWheelContact, log)(g, tight.classes[0], 0);
+  const KinematicsSeries b =
+      MakeWearKinematics(implicit, ContactModel::Hertz, &SolveWheelContact, nullptr)(g, implicit.classes[0], 0);
+  EXPECT_EQ(log->size(), 0u);
+  EXPECT_NE(a.source.find("dopri5 reached its step budget (20 per s)"), std::string::npos) << a.source;
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  ASSERT_FALSE(a.samples.empty());
+  for (size_t i = 0; i < a.samples.size(); ++i) {
+    EXPECT_EQ(a.samples[i].pose.lateral_m, b.samples[i].pose.lateral_m) << i;
+    EXPECT_EQ(a.samples[i].pose.yaw_rad, b.samples[i].pose.yaw_rad) << i;
+  }
+}
+
 // A table whose evaluation gives a non-finite patch (here planted: every left node's contact position NaN) is a
 // refusal too: the NaN is never used and the class fails naming the query.
 TEST(DynamicKinematicsLut, NonFinitePatchFromTheTableFailsTheClass) {

@@ -87,6 +87,10 @@ struct ScenarioDynamicKinematics {
   double settle_s = 1.0;            // simulated time discarded at the start (transient from the initial state), s, >= 0
   double sample_interval_s = 0.02;  // time between kept samples, s, > 0 and <= duration_s
   std::string stepper = "rosenbrock4";  // rosenbrock4 | dopri5 (vehicle_dynamics.hpp DynamicsStepper)
+  // dopri5's step budget, steps (accepted and rejected) per simulated second, > 0: a class that needs more (stiff
+  // creep forces at a flange bound the explicit step) stops there and is run again with rosenbrock4
+  // (dynamic_kinematics.hpp). Normal runs take 200-800 per s (docs/physics-reference.md §16.5, §16.7).
+  double dopri5_steps_per_s_max = 4000.0;
   // Contact of the runs: `direct` (the curving contact model solved at every evaluation, SolveWheelContact) or `lut`
   // (a contact look-up table of each wheel step's geometry built in memory, contact_lut.hpp; its rigid equilibrium
   // and contact forces from the table; dynamic_kinematics_lut.hpp).

@@ -94,6 +94,8 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
   o.duration_s = run_s;
   o.output_interval_s = d.sample_interval_s;
   o.stepper = d.stepper == "dopri5" ? DynamicsStepper::Dopri5 : DynamicsStepper::Rosenbrock4;
+  if (o.stepper == DynamicsStepper::Dopri5)  // the explicit stepper's budget (a stiff run: MakeDynamicKinematics)
+    o.max_steps = std::min(o.max_steps, std::max(1L, static_cast<long>(std::ceil(d.dopri5_steps_per_s_max * run_s))));
   o.record_wheels = false;
 
   TrackInput track;
@@ -218,16 +220,31 @@ KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel 
   return [scenario, model, contact, fallbacks, accepted, tables](const WheelsetTrackGeometry& g, const TrackClass& tc,
                                                                  int class_index) {
     DynamicClassKinematics r;
+    std::shared_ptr<const ContactLut> table;
     if (tables) {
-      std::shared_ptr<const ContactLut> table;
       try {
         table = tables->get(scenario, g, model);
       } catch (const std::exception& e) {
         r.failure = std::string("contact look-up table not built: ") + e.what();
       }
-      if (table) r = SimulateClassKinematicsCoveringLut(scenario, g, tc, model, table);
-    } else {
-      r = SimulateClassKinematics(scenario, g, tc, model, contact);
+    }
+    auto run = [&](const Scenario& sc) {
+      return table ? SimulateClassKinematicsCoveringLut(sc, g, tc, model, table)
+                   : SimulateClassKinematics(sc, g, tc, model, contact);
+    };
+    if (table || !tables) r = run(scenario);
+    if (r.status == DynamicsStatus::StepLimit && scenario.kinematics.dynamic.stepper == "dopri5") {
+      // the explicit stepper stopped at its budget (stiff contact): the class again with the implicit one
+      char b[200];
+      std::snprintf(b, sizeof b, "dopri5 reached its step budget (%g per s) at t = %.3f s; run again with rosenbrock4",
+                    scenario.kinematics.dynamic.dopri5_steps_per_s_max, r.simulated_time_s);
+      Scenario implicit = scenario;
+      implicit.kinematics.dynamic.stepper = "rosenbrock4";
+      r = run(implicit);
+      if (r.failure.empty())
+        r.series.source += std::string("; ") + b;
+      else
+        r.failure += std::string(" (") + b + ")";
     }
     std::lock_guard<std::mutex> lock(accepted->mutex);
     if (r.failure.empty()) {
