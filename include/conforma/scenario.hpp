@@ -8,6 +8,7 @@
 //   kinematics: { provider: quasistatic | centred | kinematic | dynamic, tangent_amplitude_mm: 3, tangent_phases: 8,
 //                 cant_base_m: 1.5, free_axle_rotation: true, axle_torque_Nm: 0, contact_model: hertz,
 //                 dynamic: { duration_s: 4, settle_s: 1, sample_interval_s: 0.02, stepper: rosenbrock4,
+//                            dopri5_steps_per_s_max: 4000,
 //                            contact: direct | lut, lut_creep: polach | fastsim (with contact: lut),
 //                            irregularity: { spectrum: ore_b176_low, seed: 1, wavelength_min_m: 3,
 //                                            wavelength_max_m: 70 } | none } }
