@@ -23,7 +23,8 @@ namespace conforma {
 namespace {
 
 // One bogie of the metro vehicle (cost), S1002 / 50E4 1:20, Hertz, elastic flange 60 deg as the default scenario.
-std::string ScenarioText(const std::string& dynamic, const std::string& radius, const std::string& cant_mm = "40") {
+std::string ScenarioText(const std::string& dynamic, const std::string& radius, const std::string& cant_mm = "40",
+                         const std::string& speed_kmh = "54") {
   return "name: dynlut\n"
          "vehicle: {base: metro, bogie_count: 1}\n"
          "kinematics: {provider: dynamic, contact_model: hertz, dynamic: " + dynamic + "}\n"
@@ -32,7 +33,7 @@ std::string ScenarioText(const std::string& dynamic, const std::string& radius, 
          "elastic_flange_deg: 60\n"
          "contact_model: hertz\n"
          "track_classes:\n"
-         "  - {name: c, radius_m: " + radius + ", cant_mm: " + cant_mm + ", speed_kmh: 54, share: 100}\n";
+         "  - {name: c, radius_m: " + radius + ", cant_mm: " + cant_mm + ", speed_kmh: " + speed_kmh + ", share: 100}\n";
 }
 
 struct Difference {
@@ -174,28 +175,39 @@ TEST(DynamicKinematicsLut, ProviderWidensATableTheClassLeaves) {
   }
 }
 
-// dopri5 with a step budget the run cannot keep (here 20 steps per simulated second, ~300 needed): the provider runs
-// the class again with rosenbrock4, names that in the source, and gives the implicit run's samples; no fallback.
-TEST(DynamicKinematicsLut, ExplicitStepperOverItsBudgetIsRunAgainImplicitly) {
+// A step budget between what rosenbrock4 and dopri5 need on a flange-contact curve (dopri5's explicit step is
+// bounded by the stiff creep forces): dopri5 stops at it (StepLimit), and the provider runs the class again with
+// rosenbrock4 on the same budget, names that in the source and gives the implicit run's samples; no fallback.
+TEST(DynamicKinematicsLut, ExplicitStepperOverTheBudgetIsRunAgainImplicitly) {
   const std::string keys = "duration_s: 0.2, settle_s: 0.1, sample_interval_s: 0.05, irregularity: none, contact: lut";
-  const Scenario tight = ParseScenario(ScenarioText("{" + keys + ", stepper: dopri5, dopri5_steps_per_s_max: 20}", "300"),
-                                       "test");
-  const Scenario implicit = ParseScenario(ScenarioText("{" + keys + ", stepper: rosenbrock4}", "300"), "test");
-  const WheelsetTrackGeometry g(tight.MakeTrackSetup());
-  const DynamicClassKinematics stopped = SimulateClassKinematicsWithLut(
-      tight, g, tight.classes[0], ContactModel::Hertz, BuildDynamicKinematicsLut(tight, g, ContactModel::Hertz));
+  auto parse = [&](const std::string& extra) {
+    return ParseScenario(ScenarioText("{" + keys + ", " + extra + "}", "300", "0", "10"), "test");
+  };
+  const Scenario explicit_free = parse("stepper: dopri5"), implicit_free = parse("stepper: rosenbrock4");
+  const WheelsetTrackGeometry g(explicit_free.MakeTrackSetup());
+  const auto table = BuildDynamicKinematicsLut(explicit_free, g, ContactModel::Hertz);
+  const TrackClass& tc = explicit_free.classes[0];
+  const DynamicClassKinematics e = SimulateClassKinematicsWithLut(explicit_free, g, tc, ContactModel::Hertz, table);
+  const DynamicClassKinematics i = SimulateClassKinematicsWithLut(implicit_free, g, tc, ContactModel::Hertz, table);
+  ASSERT_TRUE(e.failure.empty() && i.failure.empty()) << e.failure << i.failure;
+  std::printf("R 300 m at 10 km/h, 0.3 s: dopri5 %ld steps, rosenbrock4 %ld\n", e.steps, i.steps);
+  // a budget of 400 per s: 120 steps over the 0.3 s, between the two
+  ASSERT_GT(e.steps, 160);
+  ASSERT_LT(i.steps, 80);
+  const Scenario tight = parse("stepper: dopri5, steps_per_s_max: 400");
+  const Scenario implicit = parse("stepper: rosenbrock4, steps_per_s_max: 400");
+  const DynamicClassKinematics stopped = SimulateClassKinematicsWithLut(tight, g, tc, ContactModel::Hertz, table);
   EXPECT_EQ(stopped.status, DynamicsStatus::StepLimit) << stopped.failure;
   auto log = std::make_shared<KinematicsFallbackLog>();
-  const KinematicsSeries a = MakeWearKinematics(tight, ContactModel::Hertz, &SolveWheelContact, log)(g, tight.classes[0], 0);
-  const KinematicsSeries b =
-      MakeWearKinematics(implicit, ContactModel::Hertz, &SolveWheelContact, nullptr)(g, implicit.classes[0], 0);
+  const KinematicsSeries a = MakeWearKinematics(tight, ContactModel::Hertz, &SolveWheelContact, log)(g, tc, 0);
+  const KinematicsSeries b = MakeWearKinematics(implicit, ContactModel::Hertz, &SolveWheelContact, nullptr)(g, tc, 0);
   EXPECT_EQ(log->size(), 0u);
-  EXPECT_NE(a.source.find("dopri5 reached its step budget (20 per s)"), std::string::npos) << a.source;
+  EXPECT_NE(a.source.find("dopri5 reached the step budget (400 per s)"), std::string::npos) << a.source;
   ASSERT_EQ(a.samples.size(), b.samples.size());
   ASSERT_FALSE(a.samples.empty());
-  for (size_t i = 0; i < a.samples.size(); ++i) {
-    EXPECT_EQ(a.samples[i].pose.lateral_m, b.samples[i].pose.lateral_m) << i;
-    EXPECT_EQ(a.samples[i].pose.yaw_rad, b.samples[i].pose.yaw_rad) << i;
+  for (size_t k = 0; k < a.samples.size(); ++k) {
+    EXPECT_EQ(a.samples[k].pose.lateral_m, b.samples[k].pose.lateral_m) << k;
+    EXPECT_EQ(a.samples[k].pose.yaw_rad, b.samples[k].pose.yaw_rad) << k;
   }
 }
 

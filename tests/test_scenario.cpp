@@ -119,8 +119,8 @@ TEST(Scenario, UnknownKeysAndBadValuesAreNamed) {
   ExpectError(std::string("kp_spin_about_centre: maybe\n") + kClasses, "kp_spin_about_centre");
   ExpectError(std::string("kp_local_flexibilities: [1]\n") + kClasses, "kp_local_flexibilities");
   ExpectError(std::string("update: {overhang_cut: keep}\n") + kClasses, "update.overhang_cut");
-  ExpectError(std::string("kinematics: {dynamic: {dopri5_steps_per_s_max: 0}}\n") + kClasses,
-              "kinematics.dynamic.dopri5_steps_per_s_max");
+  ExpectError(std::string("kinematics: {dynamic: {steps_per_s_max: 0}}\n") + kClasses,
+              "kinematics.dynamic.steps_per_s_max");
 }
 
 // --set: the file with keys replaced (a scalar, a flow map creating a missing map), the source naming them; the same

@@ -29,10 +29,10 @@
 //              a_nc (the model's own loads); weight 1 / (number of samples); curvature c(s).
 // CONTACT: kinematics.dynamic.contact `direct` (default) as above, `lut` a contact look-up table of the wheel step's
 //              geometry for the contact forces and the rigid equilibrium of the dynamics (dynamic_kinematics_lut.hpp).
-// STIFFNESS: with `stepper: dopri5` the run has a budget of dopri5_steps_per_s_max steps per simulated second; a
-//              class that reaches it (stiff creep forces at a flange bound the explicit step: a conformal R 400 m run
-//              of 65 s took 2,000,000 steps, 1,666 s, before it stopped) is run again with rosenbrock4, which the
-//              series' source then names (the failure, if that run fails too).
+// STIFFNESS: the run has a budget of steps_per_s_max steps per simulated second (StepLimit beyond); a dopri5 run
+//              that reaches it (stiff creep forces at a flange bound the explicit step: a conformal R 400 m run of
+//              65 s took 2,000,000 steps, 1,666 s, before it stopped) is run again with rosenbrock4 on the same
+//              budget, which the series' source then names (the failure, if that run fails too).
 // FAILURES are never silent: an integration that stops early (DynamicsResult status), a sample without rigid
 // equilibrium or an unloaded wheel makes the class fall back like a rejected quasi-static solve (wear_simulation.hpp
 // MakeScenarioKinematics): to the last accepted series of the class, else the kinematic curving estimate, with the

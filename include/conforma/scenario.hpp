@@ -8,7 +8,7 @@
 //   kinematics: { provider: quasistatic | centred | kinematic | dynamic, tangent_amplitude_mm: 3, tangent_phases: 8,
 //                 cant_base_m: 1.5, free_axle_rotation: true, axle_torque_Nm: 0, contact_model: hertz,
 //                 dynamic: { duration_s: 4, settle_s: 1, sample_interval_s: 0.02, stepper: rosenbrock4,
-//                            dopri5_steps_per_s_max: 4000,
+//                            steps_per_s_max: 4000,
 //                            contact: direct | lut, lut_creep: polach | fastsim (with contact: lut),
 //                            irregularity: { spectrum: ore_b176_low, seed: 1, wavelength_min_m: 3,
 //                                            wavelength_max_m: 70 } | none } }
@@ -88,10 +88,11 @@ struct ScenarioDynamicKinematics {
   double settle_s = 1.0;            // simulated time discarded at the start (transient from the initial state), s, >= 0
   double sample_interval_s = 0.02;  // time between kept samples, s, > 0 and <= duration_s
   std::string stepper = "rosenbrock4";  // rosenbrock4 | dopri5 (vehicle_dynamics.hpp DynamicsStepper)
-  // dopri5's step budget, steps (accepted and rejected) per simulated second, > 0: a class that needs more (stiff
-  // creep forces at a flange bound the explicit step) stops there and is run again with rosenbrock4
-  // (dynamic_kinematics.hpp). Normal runs take 200-800 per s (docs/physics-reference.md §16.5, §16.7).
-  double dopri5_steps_per_s_max = 4000.0;
+  // The integration's step budget, steps (accepted and rejected) per simulated second, > 0: a class that needs more
+  // stops there (StepLimit); with dopri5 (stiff creep forces at a flange bound the explicit step) it is run again
+  // with rosenbrock4 on the same budget (dynamic_kinematics.hpp). Normal runs take 200-1000 per s
+  // (docs/physics-reference.md §16.5, §16.7).
+  double steps_per_s_max = 4000.0;
   // Contact of the runs: `direct` (the curving contact model solved at every evaluation, SolveWheelContact) or `lut`
   // (a contact look-up table of each wheel step's geometry built in memory, contact_lut.hpp; its rigid equilibrium
   // and contact forces from the table; dynamic_kinematics_lut.hpp).

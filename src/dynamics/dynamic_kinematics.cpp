@@ -94,8 +94,8 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
   o.duration_s = run_s;
   o.output_interval_s = d.sample_interval_s;
   o.stepper = d.stepper == "dopri5" ? DynamicsStepper::Dopri5 : DynamicsStepper::Rosenbrock4;
-  if (o.stepper == DynamicsStepper::Dopri5)  // the explicit stepper's budget (a stiff run: MakeDynamicKinematics)
-    o.max_steps = std::min(o.max_steps, std::max(1L, static_cast<long>(std::ceil(d.dopri5_steps_per_s_max * run_s))));
+  // the step budget (a stiff run with dopri5: MakeDynamicKinematics runs it again with rosenbrock4)
+  o.max_steps = std::min(o.max_steps, std::max(1L, static_cast<long>(std::ceil(d.steps_per_s_max * run_s))));
   o.record_wheels = false;
 
   TrackInput track;
@@ -236,8 +236,8 @@ KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel 
     if (r.status == DynamicsStatus::StepLimit && scenario.kinematics.dynamic.stepper == "dopri5") {
       // the explicit stepper stopped at its budget (stiff contact): the class again with the implicit one
       char b[200];
-      std::snprintf(b, sizeof b, "dopri5 reached its step budget (%g per s) at t = %.3f s; run again with rosenbrock4",
-                    scenario.kinematics.dynamic.dopri5_steps_per_s_max, r.simulated_time_s);
+      std::snprintf(b, sizeof b, "dopri5 reached the step budget (%g per s) at t = %.3f s; run again with rosenbrock4",
+                    scenario.kinematics.dynamic.steps_per_s_max, r.simulated_time_s);
       Scenario implicit = scenario;
       implicit.kinematics.dynamic.stepper = "rosenbrock4";
       r = run(implicit);

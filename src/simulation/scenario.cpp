@@ -275,7 +275,7 @@ std::vector<TrackClass> ClassesFromCsv(const Reader& r, const YAML::Node& n, dou
 // kinematics.dynamic (ScenarioDynamicKinematics); every bad value names its key.
 void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynamicKinematics* d) {
   r.check_keys(n, "kinematics.dynamic",
-               {"duration_s", "settle_s", "sample_interval_s", "stepper", "dopri5_steps_per_s_max", "contact",
+               {"duration_s", "settle_s", "sample_interval_s", "stepper", "steps_per_s_max", "contact",
                 "lut_creep", "irregularity"});
   if (n["duration_s"]) d->duration_s = r.number(n["duration_s"], "kinematics.dynamic.duration_s");
   if (!(d->duration_s > 0)) r.fail("kinematics.dynamic.duration_s", "must be > 0");
@@ -287,10 +287,10 @@ void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynami
   if (n["stepper"]) d->stepper = r.text(n["stepper"], "kinematics.dynamic.stepper");
   if (d->stepper != "rosenbrock4" && d->stepper != "dopri5")
     r.fail("kinematics.dynamic.stepper", "unknown stepper '" + d->stepper + "' (rosenbrock4, dopri5)");
-  if (n["dopri5_steps_per_s_max"])
-    d->dopri5_steps_per_s_max = r.number(n["dopri5_steps_per_s_max"], "kinematics.dynamic.dopri5_steps_per_s_max");
-  if (!(d->dopri5_steps_per_s_max > 0 && std::isfinite(d->dopri5_steps_per_s_max)))
-    r.fail("kinematics.dynamic.dopri5_steps_per_s_max", "must be > 0");
+  if (n["steps_per_s_max"])
+    d->steps_per_s_max = r.number(n["steps_per_s_max"], "kinematics.dynamic.steps_per_s_max");
+  if (!(d->steps_per_s_max > 0 && std::isfinite(d->steps_per_s_max)))
+    r.fail("kinematics.dynamic.steps_per_s_max", "must be > 0");
   if (n["contact"]) {
     const std::string c = r.text(n["contact"], "kinematics.dynamic.contact");
     if (c != "direct" && c != "lut") r.fail("kinematics.dynamic.contact", "unknown contact '" + c + "' (direct, lut)");
