@@ -87,8 +87,8 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
     throw InputError("options.rigid_equilibrium must be 0 (the state's vertical_m and roll_rad) or 1 (rigid contact "
                      "of both wheels), not " + std::to_string(e.rigid_equilibrium));
   if (e.parallel_wheels != 0 && e.parallel_wheels != 1)
-    throw InputError("options.parallel_wheels must be 0 (both wheels on the calling thread) or 1 (the right wheel on "
-                     "a second thread), not " + std::to_string(e.parallel_wheels));
+    throw InputError("options.parallel_wheels must be 0 (both wheels on the calling thread) or 1 (the two wheels on "
+                     "two threads), not " + std::to_string(e.parallel_wheels));
   if (e.table_creep_force != 0 && e.table_creep_force != 1)
     throw InputError("options.table_creep_force must be 0 (FASTSIM) or 1 (Polach), not " +
                      std::to_string(e.table_creep_force));

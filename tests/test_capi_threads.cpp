@@ -99,7 +99,7 @@ TEST(CApiThreads, ConcurrentEvaluationsOnOneHandleEqualTheSerialRun) {
   }
 }
 
-// parallel_wheels = 1 (the right wheel on a second thread) and 0 (the default: both on the calling thread) give the
+// parallel_wheels = 1 (the wheels on two OpenMP threads) and 0 (the default: both on the calling thread) give the
 // same result to the last bit, in load control and given approach; any other value is an input error.
 TEST(CApiThreads, ParallelWheelsEqualTheSerialWheels) {
   ModelHolder h("conformal");

@@ -57,14 +57,17 @@ DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& scenario, 
 // |y| + 1 mm, |psi| + 4 mrad, the axes' end spacing continued: CoverContactLutGrid) is built for this class alone
 // and the class run again on it, at most kMaxLutWidenings times. A class still refused fails as above, the
 // widenings named in `failure`; a widened run names its grid in series.source. Deterministic: a class's widening
-// depends only on its own run (the other classes keep the wheel step's table).
+// depends only on its own run (the other classes keep the wheel step's table). `last_table` (optional): the table
+// of the returned run (the widened one, if any), for a rerun of the class (MakeDynamicKinematics' stepper rerun)
+// that should not widen again.
 constexpr int kMaxLutWidenings = 2;
 constexpr double kLutWideningLateralMarginM = 1e-3;
 constexpr double kLutWideningYawMarginRad = 4e-3;
 DynamicClassKinematics SimulateClassKinematicsCoveringLut(const Scenario& scenario,
                                                           const WheelsetTrackGeometry& geometry,
                                                           const TrackClass& track_class, ContactModel model,
-                                                          std::shared_ptr<const ContactLut> table);
+                                                          std::shared_ptr<const ContactLut> table,
+                                                          std::shared_ptr<const ContactLut>* last_table = nullptr);
 
 // The table of a run's current wheel step: built on the first request for a geometry whose profiles (wheel and
 // rail samples of both sides, nominal radii, inclination) differ from the last one's, while the other classes'

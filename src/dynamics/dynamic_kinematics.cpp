@@ -228,11 +228,12 @@ KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel 
         r.failure = std::string("contact look-up table not built: ") + e.what();
       }
     }
+    // (a rerun starts from the table the last run ended on: a widening is not built twice)
     auto run = [&](const Scenario& sc) {
-      return table ? SimulateClassKinematicsCoveringLut(sc, g, tc, model, table)
+      return table ? SimulateClassKinematicsCoveringLut(sc, g, tc, model, table, &table)
                    : SimulateClassKinematics(sc, g, tc, model, contact);
     };
-    if (table || !tables) r = run(scenario);
+    if (table || !tables) r = run(scenario);  // (else the table was not built: r holds that failure)
     if (r.status == DynamicsStatus::StepLimit && scenario.kinematics.dynamic.stepper == "dopri5") {
       // the explicit stepper stopped at its budget (stiff contact): the class again with the implicit one
       char b[200];

@@ -14,12 +14,13 @@ namespace conforma {
 namespace {
 
 // The first query the table refused and how many; one per class run (the run is single-threaded). Beyond that, what
-// a wider table would answer: the largest |y| and |psi| of the queries outside the table's lateral or yaw axis
-// (`outside`), and whether any refusal was of another kind (`other`: the load axis, a non-finite patch).
+// a wider table would answer: the largest |y| and |psi| of the queries outside the table's lateral or yaw axis (0:
+// none; the provider's axes hold 0, so a query outside has |y| > 0 or |psi| > 0), and whether any refusal was of
+// another kind (`other`: the load axis, a non-finite patch).
 struct LutRefusals {
   long count = 0;
   std::string first;
-  bool outside = false, other = false;
+  bool other = false;
   double outside_lateral_abs_m = 0.0, outside_yaw_abs_rad = 0.0;
   void add(const std::string& what) {
     if (count++ == 0) first = what;
@@ -28,14 +29,12 @@ struct LutRefusals {
   void classify(const ContactLutGrid& grid, double y, double psi) {
     const bool y_out = y < grid.lateral_m.front() || y > grid.lateral_m.back();
     const bool psi_out = psi < grid.yaw_rad.front() || psi > grid.yaw_rad.back();
-    if (!y_out && !psi_out) {
-      other = true;
-      return;
-    }
-    outside = true;
+    other |= !y_out && !psi_out;
     if (y_out) outside_lateral_abs_m = std::max(outside_lateral_abs_m, std::fabs(y));
     if (psi_out) outside_yaw_abs_rad = std::max(outside_yaw_abs_rad, std::fabs(psi));
   }
+  // every refusal was outside the lateral or yaw axis: a wider table answers them
+  bool only_outside() const { return !other && (outside_lateral_abs_m > 0.0 || outside_yaw_abs_rad > 0.0); }
 };
 
 // Every profile sample of both sides, the nominal radii and the mounting: equal keys, equal geometry.
@@ -178,13 +177,14 @@ DynamicClassKinematics SimulateClassKinematicsWithLut(const Scenario& sc, const 
 
 DynamicClassKinematics SimulateClassKinematicsCoveringLut(const Scenario& sc, const WheelsetTrackGeometry& g,
                                                           const TrackClass& tc, ContactModel model,
-                                                          std::shared_ptr<const ContactLut> table) {
+                                                          std::shared_ptr<const ContactLut> table,
+                                                          std::shared_ptr<const ContactLut>* last_table) {
   std::string widened;  // what the widenings did, for the series' source
   for (int widening = 0;; ++widening) {
     auto refusals = std::make_shared<LutRefusals>();
     DynamicClassKinematics out = RunClassOnTable(sc, g, tc, model, table, refusals);
-    const bool wider_answers = refusals->outside && !refusals->other;
-    if (out.failure.empty() || !wider_answers || widening == kMaxLutWidenings) {
+    if (out.failure.empty() || !refusals->only_outside() || widening == kMaxLutWidenings) {
+      if (last_table) *last_table = table;
       if (!widened.empty()) {
         out.series.source += widened;
         if (!out.failure.empty()) out.failure += " (after" + widened + ")";
