@@ -191,18 +191,18 @@ TEST(DynamicKinematicsLut, ExplicitStepperOverTheBudgetIsRunAgainImplicitly) {
   const DynamicClassKinematics i = SimulateClassKinematicsWithLut(implicit_free, g, tc, ContactModel::Hertz, table);
   ASSERT_TRUE(e.failure.empty() && i.failure.empty()) << e.failure << i.failure;
   std::printf("R 300 m at 10 km/h, 0.3 s: dopri5 %ld steps, rosenbrock4 %ld\n", e.steps, i.steps);
-  // a budget of 400 per s: 120 steps over the 0.3 s, between the two
+  // a running budget of 100 per s: 100 (t + 1 s) step attempts by t, 130 at the end of the 0.3 s, between the two
   ASSERT_GT(e.steps, 160);
   ASSERT_LT(i.steps, 80);
-  const Scenario tight = parse("stepper: dopri5, steps_per_s_max: 400");
-  const Scenario implicit = parse("stepper: rosenbrock4, steps_per_s_max: 400");
+  const Scenario tight = parse("stepper: dopri5, steps_per_s_max: 100");
+  const Scenario implicit = parse("stepper: rosenbrock4, steps_per_s_max: 100");
   const DynamicClassKinematics stopped = SimulateClassKinematicsWithLut(tight, g, tc, ContactModel::Hertz, table);
   EXPECT_EQ(stopped.status, DynamicsStatus::StepLimit) << stopped.failure;
   auto log = std::make_shared<KinematicsFallbackLog>();
   const KinematicsSeries a = MakeWearKinematics(tight, ContactModel::Hertz, &SolveWheelContact, log)(g, tc, 0);
   const KinematicsSeries b = MakeWearKinematics(implicit, ContactModel::Hertz, &SolveWheelContact, nullptr)(g, tc, 0);
   EXPECT_EQ(log->size(), 0u);
-  EXPECT_NE(a.source.find("dopri5 reached the step budget (400 per s)"), std::string::npos) << a.source;
+  EXPECT_NE(a.source.find("dopri5 reached the step budget (100 per s)"), std::string::npos) << a.source;
   ASSERT_EQ(a.samples.size(), b.samples.size());
   ASSERT_FALSE(a.samples.empty());
   for (size_t k = 0; k < a.samples.size(); ++k) {

@@ -188,6 +188,52 @@ TEST(VehicleDynamicsLinear, BogieCriticalSpeedTimeDomainAgreesWithEigenvalues) {
   EXPECT_NEAR(0.5 * (lo + hi) / Vc, 1.0, 0.05);
 }
 
+// The running step budget (DynamicsOptions::max_steps_per_s): above the run's own step rate it changes nothing (the
+// same history to the bit); below it the run stops with StepLimit as soon as the step attempts pass
+// max_steps_per_s (t + grace), long before the end, and says so; a negative budget is an input error.
+TEST(VehicleDynamicsLinear, RunningStepBudgetStopsARunOverItsRateOnly) {
+  VehicleParameters v = Bogie();
+  DynamicsOptions o;
+  o.model.contact_kind = DynamicsContactKind::Linear;
+  o.model.linear = Linear(0.2);
+  o.model.speed_m_s = 20.0;
+  o.duration_s = 2.0;
+  o.output_interval_s = 0.01;
+  o.record_wheels = false;
+  const VehicleDynamicsModel model(v, nullptr, TrackInput{}, o.model);
+  o.initial_positions.assign(model.position_count(), 0.0);
+  o.initial_positions[model.wheelset_index(0)] = 2e-3;
+  const DynamicsResult free = SimulateVehicleDynamics(model, o);
+  ASSERT_EQ(free.status, DynamicsStatus::Completed) << free.message;
+  const double attempts = static_cast<double>(free.steps + free.rejected_steps);
+  const double rate = attempts / o.duration_s;  // the run's mean rate of step attempts per simulated second
+  std::printf("linear bogie, 2 s: %.0f step attempts, %.0f per s\n", attempts, rate);
+  ASSERT_GT(attempts, 50.0);
+
+  DynamicsOptions generous = o;
+  generous.max_steps_per_s = 2.0 * rate;  // the grace (1 s) covers the start
+  const DynamicsResult same = SimulateVehicleDynamics(model, generous);
+  ASSERT_EQ(same.status, DynamicsStatus::Completed) << same.message;
+  ASSERT_EQ(same.history.size(), free.history.size());
+  for (size_t i = 0; i < free.history.size(); ++i) EXPECT_EQ(same.history[i].state, free.history[i].state) << i;
+
+  DynamicsOptions tight = o;
+  tight.max_steps_per_s = 0.25 * rate;
+  tight.step_budget_grace_s = 0.1;
+  const DynamicsResult stopped = SimulateVehicleDynamics(model, tight);
+  EXPECT_EQ(stopped.status, DynamicsStatus::StepLimit);
+  EXPECT_NE(stopped.message.find("step budget exceeded"), std::string::npos) << stopped.message;
+  EXPECT_LT(stopped.simulated_time_s, 0.5 * o.duration_s);
+  // it stopped at the first attempt over the budget
+  const double used = static_cast<double>(stopped.steps + stopped.rejected_steps);
+  EXPECT_GT(used, tight.max_steps_per_s * (stopped.simulated_time_s + tight.step_budget_grace_s));
+  EXPECT_LE(used - 1.0, tight.max_steps_per_s * (stopped.simulated_time_s + tight.step_budget_grace_s) + 1.0);
+
+  DynamicsOptions negative = o;
+  negative.max_steps_per_s = -1.0;
+  EXPECT_THROW(SimulateVehicleDynamics(model, negative), InputError);
+}
+
 TEST(VehicleDynamicsLinear, EigenvaluesNeedLinearContactAndStatusNamesAreDistinct) {
   DynamicsModelOptions m;  // nonlinear by default
   EXPECT_THROW(AnalyseLinearStability(Bogie(), m), InputError);

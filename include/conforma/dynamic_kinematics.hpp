@@ -29,7 +29,8 @@
 //              a_nc (the model's own loads); weight 1 / (number of samples); curvature c(s).
 // CONTACT: kinematics.dynamic.contact `direct` (default) as above, `lut` a contact look-up table of the wheel step's
 //              geometry for the contact forces and the rigid equilibrium of the dynamics (dynamic_kinematics_lut.hpp).
-// STIFFNESS: the run has a budget of steps_per_s_max steps per simulated second (StepLimit beyond); a dopri5 run
+// STIFFNESS: the run has a running budget of steps_per_s_max steps per simulated second (StepLimit as soon as
+//              the step attempts exceed steps_per_s_max (t + 1 s), DynamicsOptions::max_steps_per_s); a dopri5 run
 //              that reaches it (stiff creep forces at a flange bound the explicit step: a conformal R 400 m run of
 //              65 s took 2,000,000 steps, 1,666 s, before it stopped) is run again with rosenbrock4 on the same
 //              budget, which the series' source then names (the failure, if that run fails too).

@@ -41,6 +41,12 @@ struct DynamicsOptions {
   double max_step_s = 0.01;              // > 0 (0.01 s at 20 m/s is 0.2 m of track)
   double min_step_s = 1e-9;              // > 0: below this the integration stops (status StepTooSmall)
   long max_steps = 2000000;              // >= 1
+  // > 0: a running step budget as well, StepLimit as soon as the step attempts (accepted and rejected) exceed
+  // max_steps_per_s (t + step_budget_grace_s) at the simulated time t: a run that stalls (the step collapsing at a
+  // force discontinuity or a flange) stops within about a second of simulated time of it, not only at the end of
+  // the run's whole budget. 0: max_steps alone.
+  double max_steps_per_s = 0.0;          // >= 0
+  double step_budget_grace_s = 1.0;      // >= 0: the start's allowance (a settling transient), in simulated seconds
   // Jacobian difference steps of the scaled states (rosenbrock4), > 0.
   double jacobian_step = 1e-4;
   // rosenbrock4: a Jacobian serves this many step attempts at new states (1: a fresh one every step, the
@@ -58,7 +64,8 @@ struct DynamicsOptions {
 };
 
 // Completed: duration reached. ContactFailed: a wheelset's contact failed and halving the step did not help
-// (message). StepTooSmall: the error control pushed the step below min_step_s. StepLimit: max_steps reached.
+// (message). StepTooSmall: the error control pushed the step below min_step_s. StepLimit: max_steps reached, or the
+// running budget max_steps_per_s.
 // NonFinite: a state or derivative became NaN / inf.
 enum class DynamicsStatus { Completed, ContactFailed, StepTooSmall, StepLimit, NonFinite };
 const char* to_string(DynamicsStatus status);  // "completed", "contact_failed", "step_too_small", "step_limit", "non_finite"

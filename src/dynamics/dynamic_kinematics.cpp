@@ -94,8 +94,8 @@ DynamicClassKinematics SimulateClassKinematics(const Scenario& sc, const Wheelse
   o.duration_s = run_s;
   o.output_interval_s = d.sample_interval_s;
   o.stepper = d.stepper == "dopri5" ? DynamicsStepper::Dopri5 : DynamicsStepper::Rosenbrock4;
-  // the step budget (a stiff run with dopri5: MakeDynamicKinematics runs it again with rosenbrock4)
-  o.max_steps = std::min(o.max_steps, std::max(1L, static_cast<long>(std::ceil(d.steps_per_s_max * run_s))));
+  // the running step budget (a stiff run with dopri5: MakeDynamicKinematics runs it again with rosenbrock4)
+  o.max_steps_per_s = d.steps_per_s_max;
   o.record_wheels = false;
 
   TrackInput track;

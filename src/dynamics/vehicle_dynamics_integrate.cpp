@@ -1,6 +1,7 @@
 // Time integration of the lateral vehicle model with Boost.Odeint (vehicle_dynamics.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 
@@ -42,6 +43,8 @@ void DynamicsOptions::validate() const {
   require_positive(jacobian_step, "jacobian_step");
   if (jacobian_reuse_steps < 1) throw InputError("option 'jacobian_reuse_steps' must be >= 1");
   if (max_steps < 1) throw InputError("option 'max_steps' must be >= 1");
+  require_non_negative(max_steps_per_s, "max_steps_per_s");
+  require_non_negative(step_budget_grace_s, "step_budget_grace_s");
 }
 
 namespace {
@@ -301,6 +304,16 @@ DynamicsResult SimulateVehicleDynamics(const VehicleDynamicsModel& model, const 
     if (result.steps + result.rejected_steps >= options.max_steps) {
       result.status = DynamicsStatus::StepLimit;
       result.message = "max_steps reached at t = " + std::to_string(t) + " s";
+      break;
+    }
+    if (options.max_steps_per_s > 0.0 &&
+        result.steps + result.rejected_steps > options.max_steps_per_s * (t + options.step_budget_grace_s)) {
+      result.status = DynamicsStatus::StepLimit;
+      char text[200];
+      std::snprintf(text, sizeof text, "step budget exceeded at t = %.6f s: %ld step attempts (%g per s of simulated time "
+                    "+ %g s)", t, result.steps + result.rejected_steps, options.max_steps_per_s,
+                    options.step_budget_grace_s);
+      result.message = text;
       break;
     }
   }
