@@ -211,6 +211,44 @@ TEST(DynamicKinematicsLut, ExplicitStepperOverTheBudgetIsRunAgainImplicitly) {
   }
 }
 
+// The stall of docs/physics-reference.md §16.7 (session 22): a wheel worn in the 64 s window run of the default
+// scenario (tests/data/flange_root_stall/worn_wheel.prw, the first sub-step of step 5), R 400 m with 90 mm cant at
+// 50 km/h. On the hertz table the leading wheelset sits on a worn flange root with up to 7 rigid gap minima (one
+// Hertz ellipse each, appearing and leaving every 0.01 mm) and both steppers stop at the step budget within a
+// fraction of a second; the provider runs the class again on a table of the auto contact model (the flange root one
+// curved patch), where it completes with the leading wheelset held at its flange: y within the flange-contact band,
+// not climbing (on the hertz table it ran out to -8.9 mm, the wheel lifted 6 mm, §16.7). No fallback.
+TEST(DynamicKinematicsLut, StalledHertzClassIsRunAgainOnAnAutoTable) {
+  const std::string text =
+      "name: stall\n"
+      "vehicle: {base: metro, bogie_count: 1}\n"
+      "kinematics: {provider: dynamic, contact_model: hertz, dynamic: {contact: lut, stepper: dopri5, duration_s: 0.3, "
+      "settle_s: 0.1, sample_interval_s: 0.05, irregularity: none}}\n"
+      "profiles: {wheel: " CONFORMA_SOURCE_DIR "/tests/data/flange_root_stall/worn_wheel.prw, rail: 50E4, "
+      "wheel_radius_mm: 355.5}\n"
+      "track: {rail_inclination: \"1:20\"}\n"
+      "elastic_flange_deg: 60\n"
+      "contact_model: conformal\n"
+      "track_classes:\n"
+      "  - {name: R400, radius_m: 400, cant_mm: 90, speed_kmh: 50, share: 100}\n";
+  const Scenario sc = ParseScenario(text, "test");
+  const WheelsetTrackGeometry g(sc.MakeTrackSetup());
+  const TrackClass& tc = sc.classes[0];
+  auto log = std::make_shared<KinematicsFallbackLog>();
+  const KinematicsSeries s = MakeWearKinematics(sc, ContactModel::Hertz, &SolveWheelContact, log)(g, tc, 0);
+  std::printf("%s\n", s.source.c_str());
+  EXPECT_EQ(log->size(), 0u);
+  EXPECT_NE(s.source.find("the hertz table's run stopped at the step budget"), std::string::npos) << s.source;
+  EXPECT_NE(s.source.find("dopri5 reached the step budget"), std::string::npos) << s.source;
+  EXPECT_NE(s.source.find("run again on a table of the auto contact model"), std::string::npos) << s.source;
+  ASSERT_FALSE(s.samples.empty());
+  const double y_flange = FlangeContactShift(g, 1.0);  // the rigid flange contact towards the outer (right) rail
+  for (const KinematicsSample& k : s.samples) {
+    if (k.wheelset != 0) continue;
+    EXPECT_NEAR(k.pose.lateral_m, y_flange, 0.3e-3) << k.time_s;
+  }
+}
+
 // A table whose evaluation gives a non-finite patch (here planted: every left node's contact position NaN) is a
 // refusal too: the NaN is never used and the class fails naming the query.
 TEST(DynamicKinematicsLut, NonFinitePatchFromTheTableFailsTheClass) {
@@ -256,6 +294,8 @@ TEST(DynamicKinematicsLut, KeysAreCheckedAndDirectIsTheDefault) {
       {"{contact: lut, lut_creep: brush}", "kinematics.dynamic.lut_creep"},
       {"{lut_creep: polach}", "kinematics.dynamic.lut_creep"},  // only with contact: lut
       {"{contact: lut, lut: x}", "lut"},
+      {"{contact: lut, stall_model: conformal}", "kinematics.dynamic.stall_model"},
+      {"{stall_model: auto}", "kinematics.dynamic.stall_model"},  // only with contact: lut
   };
   for (const auto& [yaml, key] : cases) {
     try {
@@ -270,6 +310,7 @@ TEST(DynamicKinematicsLut, KeysAreCheckedAndDirectIsTheDefault) {
   const Scenario lut = ParseScenario(ScenarioText("{contact: lut}", "600"), "test");
   EXPECT_TRUE(lut.kinematics.dynamic.lut_contact);
   EXPECT_EQ(lut.kinematics.dynamic.lut_creep, "polach");
+  EXPECT_EQ(lut.kinematics.dynamic.stall_model, "auto");
   EXPECT_EQ(ParseScenario(ScenarioText("{contact: lut, lut_creep: fastsim}", "600"), "test").kinematics.dynamic.lut_creep,
             "fastsim");
 }

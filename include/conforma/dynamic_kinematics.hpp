@@ -33,7 +33,10 @@
 //              the step attempts exceed steps_per_s_max (t + 1 s), DynamicsOptions::max_steps_per_s); a dopri5 run
 //              that reaches it (stiff creep forces at a flange bound the explicit step: a conformal R 400 m run of
 //              65 s took 2,000,000 steps, 1,666 s, before it stopped) is run again with rosenbrock4 on the same
-//              budget, which the series' source then names (the failure, if that run fails too).
+//              budget, which the series' source then names (the failure, if that run fails too). A class that
+//              stops at the budget on a hertz table with both steppers (the multi-Hertz contact on a worn flange
+//              root with many gap minima, docs/physics-reference.md §16.7 session 22) is run again on a table of
+//              the `auto` contact model built for it, unless kinematics.dynamic.stall_model is `none`.
 // FAILURES are never silent: an integration that stops early (DynamicsResult status), a sample without rigid
 // equilibrium or an unloaded wheel makes the class fall back like a rejected quasi-static solve (wear_simulation.hpp
 // MakeScenarioKinematics): to the last accepted series of the class, else the kinematic curving estimate, with the

@@ -10,6 +10,7 @@
 //                 dynamic: { duration_s: 4, settle_s: 1, sample_interval_s: 0.02, stepper: rosenbrock4,
 //                            steps_per_s_max: 4000,
 //                            contact: direct | lut, lut_creep: polach | fastsim (with contact: lut),
+//                            stall_model: auto | none (with contact: lut),
 //                            irregularity: { spectrum: ore_b176_low, seed: 1, wavelength_min_m: 3,
 //                                            wavelength_max_m: 70 } | none } }
 //       quasistatic: kinematics_quasistatic.hpp (Ceres, contact model in the loop) -- the default;
@@ -98,6 +99,9 @@ struct ScenarioDynamicKinematics {
   // and contact forces from the table; dynamic_kinematics_lut.hpp).
   bool lut_contact = false;         // contact: lut
   std::string lut_creep = "polach"; // lut_creep (contact: lut only): polach | fastsim (contact_lut.hpp LutCreepForce)
+  // stall_model (contact: lut only): auto | none. auto: a class whose run on a hertz table stops at the step budget
+  // (both steppers) is run again on a table of the `auto` contact model (dynamic_kinematics.hpp); none: it falls back.
+  std::string stall_model = "auto";
   // Track irregularity (track_irregularity.hpp SynthesizeTrackIrregularity) under every class; `irregularity: none`
   // gives the perfect track (the samples then settle on the steady curving state).
   bool irregularity = true;

@@ -229,23 +229,48 @@ KinematicsFunction MakeDynamicKinematics(const Scenario& scenario, ContactModel 
       }
     }
     // (a rerun starts from the table the last run ended on: a widening is not built twice)
-    auto run = [&](const Scenario& sc) {
-      return table ? SimulateClassKinematicsCoveringLut(sc, g, tc, model, table, &table)
-                   : SimulateClassKinematics(sc, g, tc, model, contact);
+    auto run = [&](const Scenario& sc, ContactModel m) {
+      return table ? SimulateClassKinematicsCoveringLut(sc, g, tc, m, table, &table)
+                   : SimulateClassKinematics(sc, g, tc, m, contact);
     };
-    if (table || !tables) r = run(scenario);  // (else the table was not built: r holds that failure)
-    if (r.status == DynamicsStatus::StepLimit && scenario.kinematics.dynamic.stepper == "dopri5") {
-      // the explicit stepper stopped at its budget (stiff contact): the class again with the implicit one
-      char b[200];
-      std::snprintf(b, sizeof b, "dopri5 reached the step budget (%g per s) at t = %.3f s; run again with rosenbrock4",
-                    scenario.kinematics.dynamic.steps_per_s_max, r.simulated_time_s);
-      Scenario implicit = scenario;
-      implicit.kinematics.dynamic.stepper = "rosenbrock4";
-      r = run(implicit);
-      if (r.failure.empty())
-        r.series.source += std::string("; ") + b;
-      else
-        r.failure += std::string(" (") + b + ")";
+    auto run_with_rerun = [&](ContactModel m) {
+      DynamicClassKinematics out = run(scenario, m);
+      if (out.status == DynamicsStatus::StepLimit && scenario.kinematics.dynamic.stepper == "dopri5") {
+        // the explicit stepper stopped at its budget (stiff contact): the class again with the implicit one
+        char b[200];
+        std::snprintf(b, sizeof b, "dopri5 reached the step budget (%g per s) at t = %.3f s; run again with rosenbrock4",
+                      scenario.kinematics.dynamic.steps_per_s_max, out.simulated_time_s);
+        Scenario implicit = scenario;
+        implicit.kinematics.dynamic.stepper = "rosenbrock4";
+        out = run(implicit, m);
+        if (out.failure.empty())
+          out.series.source += std::string("; ") + b;
+        else
+          out.failure += std::string(" (") + b + ")";
+      }
+      return out;
+    };
+    if (table || !tables) r = run_with_rerun(model);  // (else the table was not built: r holds that failure)
+    if (r.status == DynamicsStatus::StepLimit && table && model == ContactModel::Hertz &&
+        scenario.kinematics.dynamic.stall_model == "auto") {
+      // Stalled on the hertz table, with either stepper: the multi-Hertz contact (one ellipse per rigid gap minimum)
+      // on a worn flange root with many minima (docs/physics-reference.md §16.7, session 22). The class again on a
+      // table of the auto contact model, which solves such a region as one curved patch; built for this class.
+      const std::string stalled = r.failure;
+      try {
+        table = BuildDynamicKinematicsLut(scenario, g, ContactModel::Auto);
+        char b[160];
+        std::snprintf(b, sizeof b, "run again on a table of the auto contact model (built in %.1f s)",
+                      table->header.generation_s);
+        r = run_with_rerun(ContactModel::Auto);
+        const std::string note = "the hertz table's run stopped at the step budget: " + stalled + "; " + b;
+        if (r.failure.empty())
+          r.series.source += "; " + note;
+        else
+          r.failure = note + ": " + r.failure;
+      } catch (const std::exception& e) {
+        r.failure = stalled + "; the auto table for the rerun was not built: " + e.what();
+      }
     }
     std::lock_guard<std::mutex> lock(accepted->mutex);
     if (r.failure.empty()) {

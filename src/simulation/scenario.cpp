@@ -276,7 +276,7 @@ std::vector<TrackClass> ClassesFromCsv(const Reader& r, const YAML::Node& n, dou
 void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynamicKinematics* d) {
   r.check_keys(n, "kinematics.dynamic",
                {"duration_s", "settle_s", "sample_interval_s", "stepper", "steps_per_s_max", "contact",
-                "lut_creep", "irregularity"});
+                "lut_creep", "stall_model", "irregularity"});
   if (n["duration_s"]) d->duration_s = r.number(n["duration_s"], "kinematics.dynamic.duration_s");
   if (!(d->duration_s > 0)) r.fail("kinematics.dynamic.duration_s", "must be > 0");
   if (n["settle_s"]) d->settle_s = r.number(n["settle_s"], "kinematics.dynamic.settle_s");
@@ -301,6 +301,12 @@ void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynami
     d->lut_creep = r.text(n["lut_creep"], "kinematics.dynamic.lut_creep");
     if (d->lut_creep != "polach" && d->lut_creep != "fastsim")
       r.fail("kinematics.dynamic.lut_creep", "unknown creep force '" + d->lut_creep + "' (polach, fastsim)");
+  }
+  if (n["stall_model"]) {
+    if (!d->lut_contact) r.fail("kinematics.dynamic.stall_model", "only with contact: lut");
+    d->stall_model = r.text(n["stall_model"], "kinematics.dynamic.stall_model");
+    if (d->stall_model != "auto" && d->stall_model != "none")
+      r.fail("kinematics.dynamic.stall_model", "unknown model '" + d->stall_model + "' (auto, none)");
   }
   if (const YAML::Node i = n["irregularity"]) {
     if (i.IsScalar()) {
