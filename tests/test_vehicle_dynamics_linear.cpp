@@ -40,22 +40,33 @@ VehicleParameters Bogie() {
   return v;
 }
 
+// A run with linear contact of the given conicity at speed_m_s for duration_s, sampled every interval_s, no wheel
+// records; StartDisplaced: every body at rest on the centre line but the leading wheelset 2 mm off it.
+DynamicsOptions LinearRun(double conicity, double speed_m_s, double duration_s, double interval_s) {
+  DynamicsOptions o;
+  o.model.contact_kind = DynamicsContactKind::Linear;
+  o.model.linear = Linear(conicity);
+  o.model.speed_m_s = speed_m_s;
+  o.duration_s = duration_s;
+  o.output_interval_s = interval_s;
+  o.record_wheels = false;
+  return o;
+}
+void StartDisplaced(const VehicleDynamicsModel& model, DynamicsOptions* o) {
+  o->initial_positions.assign(model.position_count(), 0.0);
+  o->initial_positions[model.wheelset_index(0)] = 2e-3;
+}
+
 TEST(VehicleDynamicsLinear, FreeWheelsetKinematicWavelength) {
   VehicleParameters v = Bogie();
   v.primary_longitudinal_stiffness_N_m = 1e-6;  // no suspension (validate() asks for > 0): free wheelsets
   v.primary_lateral_stiffness_N_m = 1e-6;
   const double lambda = 0.2, r0 = v.nominal_wheel_radius_m, e = v.contact_half_distance_m;
   const double expected = 2.0 * M_PI * std::sqrt(r0 * e / lambda);  // Klingel
-  DynamicsOptions o;
-  o.model.contact_kind = DynamicsContactKind::Linear;
-  o.model.linear = Linear(lambda);
-  o.model.speed_m_s = 2.0;  // low speed: the wheelset's inertia is negligible
-  o.duration_s = 3.2 * expected / o.model.speed_m_s;
-  o.output_interval_s = 2e-3;
-  o.record_wheels = false;
+  const double V = 2.0;  // low speed: the wheelset's inertia is negligible
+  DynamicsOptions o = LinearRun(lambda, V, 3.2 * expected / V, 2e-3);
   const VehicleDynamicsModel model(v, nullptr, TrackInput{}, o.model);
-  o.initial_positions.assign(model.position_count(), 0.0);
-  o.initial_positions[model.wheelset_index(0)] = 2e-3;
+  StartDisplaced(model, &o);
   const DynamicsResult r = SimulateVehicleDynamics(model, o);
   ASSERT_EQ(r.status, DynamicsStatus::Completed) << r.message;
   // zero crossings of y (linear interpolation between samples)
@@ -192,17 +203,9 @@ TEST(VehicleDynamicsLinear, BogieCriticalSpeedTimeDomainAgreesWithEigenvalues) {
 // same history to the bit); below it the run stops with StepLimit as soon as the step attempts pass
 // max_steps_per_s (t + grace), long before the end, and says so; a negative budget is an input error.
 TEST(VehicleDynamicsLinear, RunningStepBudgetStopsARunOverItsRateOnly) {
-  VehicleParameters v = Bogie();
-  DynamicsOptions o;
-  o.model.contact_kind = DynamicsContactKind::Linear;
-  o.model.linear = Linear(0.2);
-  o.model.speed_m_s = 20.0;
-  o.duration_s = 2.0;
-  o.output_interval_s = 0.01;
-  o.record_wheels = false;
-  const VehicleDynamicsModel model(v, nullptr, TrackInput{}, o.model);
-  o.initial_positions.assign(model.position_count(), 0.0);
-  o.initial_positions[model.wheelset_index(0)] = 2e-3;
+  DynamicsOptions o = LinearRun(0.2, 20.0, 2.0, 0.01);
+  const VehicleDynamicsModel model(Bogie(), nullptr, TrackInput{}, o.model);
+  StartDisplaced(model, &o);
   const DynamicsResult free = SimulateVehicleDynamics(model, o);
   ASSERT_EQ(free.status, DynamicsStatus::Completed) << free.message;
   const double attempts = static_cast<double>(free.steps + free.rejected_steps);
