@@ -155,9 +155,9 @@ DynamicClassKinematics RunClassOnTable(const Scenario& sc, const WheelsetTrackGe
   };
   DynamicClassKinematics out = SimulateClassKinematics(sc, g, tc, model, contact, pose);
   char b[160];
-  std::snprintf(b, sizeof b, ", contact look-up table %zu x %zu x %zu (built in %.2f s), %s creep forces",
+  std::snprintf(b, sizeof b, ", contact look-up table %zu x %zu x %zu of the %s model (built in %.2f s), %s creep forces",
                 table->grid.lateral_m.size(), table->grid.yaw_rad.size(), table->grid.load_N.size(),
-                table->header.generation_s, sc.kinematics.dynamic.lut_creep.c_str());
+                to_string(table->header.model), table->header.generation_s, sc.kinematics.dynamic.lut_creep.c_str());
   out.series.source += b;
   if (refusals->count > 0) {
     out.failure = "contact look-up table refused " + std::to_string(refusals->count) + " queries, the first: " +
