@@ -310,8 +310,8 @@ DynamicsResult SimulateVehicleDynamics(const VehicleDynamicsModel& model, const 
         result.steps + result.rejected_steps > options.max_steps_per_s * (t + options.step_budget_grace_s)) {
       result.status = DynamicsStatus::StepLimit;
       char text[200];
-      std::snprintf(text, sizeof text, "step budget exceeded at t = %.6f s: %ld step attempts (%g per s of simulated time "
-                    "+ %g s)", t, result.steps + result.rejected_steps, options.max_steps_per_s,
+      std::snprintf(text, sizeof text, "step budget exceeded at t = %.6f s: %ld step attempts, over %g per simulated "
+                    "second x (t + %g s)", t, result.steps + result.rejected_steps, options.max_steps_per_s,
                     options.step_budget_grace_s);
       result.message = text;
       break;
