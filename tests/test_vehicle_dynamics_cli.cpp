@@ -89,5 +89,18 @@ TEST(VehicleDynamicsCli, ContactFailureIsNotSilent) {
   EXPECT_NE(r.err.find("wheelset"), std::string::npos) << r.err;
 }
 
+// --max-steps-per-s: a run over its running step budget stops with step_limit, exits non-zero and says why; a
+// negative budget is an input error naming the option.
+TEST(VehicleDynamicsCli, RunningStepBudgetStopsTheRunAndSaysSo) {
+  const std::string base = "dynamics --scenario " + kScenario + " --bogies 1 --model hertz --speed-kmh 40 --duration 0.1";
+  const test::CliRun r = test::RunCli(base + " --max-steps-per-s 10");  // 10 (t + 1 s): about 11 step attempts
+  EXPECT_NE(r.exit_code, 0) << r.out;
+  EXPECT_NE(r.out.find("dynamics: step_limit"), std::string::npos) << r.out << r.err;
+  EXPECT_NE(r.err.find("step budget exceeded"), std::string::npos) << r.err;
+  const test::CliRun bad = test::RunCli(base + " --max-steps-per-s -1");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("--max-steps-per-s"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace conforma

@@ -63,6 +63,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     std::vector<std::string> scenario_overrides;  // --set
     std::string scenario, model, out, stepper = "rosenbrock4", irregularity, lut, lut_creep = "fastsim";
     int bogies = 0, jacobian_reuse = 1;
+    double max_steps_per_s = 0.0;
     double speed_kmh = 60.0, duration = 5.0, interval = 0.01, radius = 0.0, tangent = 50.0, transition = 50.0,
            curve = 100.0, cant_mm = 0.0, start = 0.0, friction = 0.3, offset_mm = 1.0, amplitude_mm = 3.0, atol = 1e-3, rtol = 1e-4;
     bool linear = false, eig = false;
@@ -96,6 +97,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
   sub->add_option("--offset-mm", a->offset_mm, "initial lateral offset of every wheelset, mm (the disturbance)");
   sub->add_option("--stepper", a->stepper, "rosenbrock4 (implicit, default) or dopri5 (explicit)");
   sub->add_option("--jacobian-reuse", a->jacobian_reuse, "rosenbrock4: steps a Jacobian serves (1: every step)");
+  sub->add_option("--max-steps-per-s", a->max_steps_per_s,
+                  "running step budget: stop (step_limit) as soon as the step attempts exceed this x (t + 1 s) at the "
+                  "simulated time t, so a run that stalls stops early (0: only the limit of 2,000,000 steps)");
   sub->add_option("--atol", a->atol, "absolute tolerance of the scaled state (mm, mrad, mm/s, ...)");
   sub->add_option("--rtol", a->rtol, "relative tolerance");
   sub->add_flag("--linear", a->linear, "linear contact from the profile pair instead of the contact model");
@@ -180,6 +184,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
     o.absolute_tolerance = a->atol;
     o.relative_tolerance = a->rtol;
     o.jacobian_reuse_steps = a->jacobian_reuse;
+    if (!(a->max_steps_per_s >= 0.0 && std::isfinite(a->max_steps_per_s)))
+      throw InputError("--max-steps-per-s: must be >= 0, got " + std::to_string(a->max_steps_per_s));
+    o.max_steps_per_s = a->max_steps_per_s;
     if (a->stepper == "rosenbrock4") o.stepper = DynamicsStepper::Rosenbrock4;
     else if (a->stepper == "dopri5") o.stepper = DynamicsStepper::Dopri5;
     else throw InputError("--stepper: unknown stepper '" + a->stepper + "' (rosenbrock4, dopri5)");
