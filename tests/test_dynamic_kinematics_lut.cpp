@@ -24,11 +24,11 @@ namespace {
 
 // One bogie of the metro vehicle (cost), S1002 / 50E4 1:20, Hertz, elastic flange 60 deg as the default scenario.
 std::string ScenarioText(const std::string& dynamic, const std::string& radius, const std::string& cant_mm = "40",
-                         const std::string& speed_kmh = "54") {
+                         const std::string& speed_kmh = "54", const std::string& wheel = "S1002") {
   return "name: dynlut\n"
          "vehicle: {base: metro, bogie_count: 1}\n"
          "kinematics: {provider: dynamic, contact_model: hertz, dynamic: " + dynamic + "}\n"
-         "profiles: {wheel: S1002, rail: 50E4, wheel_radius_mm: 355.5}\n"
+         "profiles: {wheel: " + wheel + ", rail: 50E4, wheel_radius_mm: 355.5}\n"
          "track: {rail_inclination: \"1:20\"}\n"
          "elastic_flange_deg: 60\n"
          "contact_model: hertz\n"
@@ -219,19 +219,11 @@ TEST(DynamicKinematicsLut, ExplicitStepperOverTheBudgetIsRunAgainImplicitly) {
 // curved patch), where it completes with the leading wheelset held at its flange: y within the flange-contact band,
 // not climbing (on the hertz table it ran out to -8.9 mm, the wheel lifted 6 mm, §16.7). No fallback.
 TEST(DynamicKinematicsLut, StalledHertzClassIsRunAgainOnAnAutoTable) {
-  const std::string text =
-      "name: stall\n"
-      "vehicle: {base: metro, bogie_count: 1}\n"
-      "kinematics: {provider: dynamic, contact_model: hertz, dynamic: {contact: lut, stepper: dopri5, duration_s: 0.3, "
-      "settle_s: 0.1, sample_interval_s: 0.05, irregularity: none}}\n"
-      "profiles: {wheel: " CONFORMA_SOURCE_DIR "/tests/data/flange_root_stall/worn_wheel.prw, rail: 50E4, "
-      "wheel_radius_mm: 355.5}\n"
-      "track: {rail_inclination: \"1:20\"}\n"
-      "elastic_flange_deg: 60\n"
-      "contact_model: conformal\n"
-      "track_classes:\n"
-      "  - {name: R400, radius_m: 400, cant_mm: 90, speed_kmh: 50, share: 100}\n";
-  const Scenario sc = ParseScenario(text, "test");
+  const Scenario sc = ParseScenario(
+      ScenarioText("{contact: lut, stepper: dopri5, duration_s: 0.3, settle_s: 0.1, sample_interval_s: 0.05, "
+                   "irregularity: none}",
+                   "400", "90", "50", CONFORMA_SOURCE_DIR "/tests/data/flange_root_stall/worn_wheel.prw"),
+      "test");
   const WheelsetTrackGeometry g(sc.MakeTrackSetup());
   const TrackClass& tc = sc.classes[0];
   auto log = std::make_shared<KinematicsFallbackLog>();

@@ -184,8 +184,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     o.absolute_tolerance = a->atol;
     o.relative_tolerance = a->rtol;
     o.jacobian_reuse_steps = a->jacobian_reuse;
-    if (!(a->max_steps_per_s >= 0.0 && std::isfinite(a->max_steps_per_s)))
-      throw InputError("--max-steps-per-s: must be >= 0, got " + std::to_string(a->max_steps_per_s));
+    require_non_negative(a->max_steps_per_s, "--max-steps-per-s");
     o.max_steps_per_s = a->max_steps_per_s;
     if (a->stepper == "rosenbrock4") o.stepper = DynamicsStepper::Rosenbrock4;
     else if (a->stepper == "dopri5") o.stepper = DynamicsStepper::Dopri5;
