@@ -247,6 +247,47 @@ TEST(GeometryContact, LoadGivenCandidateCarriesTheLoadInHertz) {
   EXPECT_THROW(FindContactCandidatesForLoad(g, Side::Left, p, -1.0, Material{}), InputError);
 }
 
+// CandidateOptions::strip_geometry = false (the multi-Hertz model's candidate search): the same regions, reference
+// points, Hertz estimates and patch count as the full search, bit for bit, with a patch's strips cut after the
+// second (and its rigid approach NaN, not a wrong number), over poses from the tread to the flange on both wheels.
+TEST(GeometryContact, CandidatesWithoutStripGeometryKeepTheRegions) {
+  const WheelsetTrackGeometry g = standard_track();
+  CandidateOptions regions_only;
+  regions_only.strip_geometry = false;
+  int poses = 0, flange_poses = 0;
+  for (double y_mm = -9.0; y_mm <= 9.0; y_mm += 1.5) {
+    for (double yaw : {-4e-3, 0.0, 3e-3}) {
+      for (Side side : {Side::Left, Side::Right}) {
+        WheelsetPose p;
+        p.lateral_m = y_mm * 1e-3;
+        p.yaw_rad = yaw;
+        const CandidateResult full = FindContactCandidatesForLoad(g, side, p, 60e3, Material{});
+        const CandidateResult cut = FindContactCandidatesForLoad(g, side, p, 60e3, Material{}, regions_only);
+        ASSERT_EQ(full.status, cut.status);
+        ASSERT_EQ(full.candidates.size(), cut.candidates.size());
+        EXPECT_EQ(full.pose.vertical_m, cut.pose.vertical_m);
+        ++poses;
+        for (size_t k = 0; k < full.candidates.size(); ++k) {
+          const ContactCandidate &a = full.candidates[k], &b = cut.candidates[k];
+          EXPECT_EQ(a.region_start_s_m, b.region_start_s_m);
+          EXPECT_EQ(a.region_end_s_m, b.region_end_s_m);
+          EXPECT_EQ(a.reference.rail_s_m, b.reference.rail_s_m);
+          EXPECT_EQ(a.reference.gap_m, b.reference.gap_m);
+          EXPECT_EQ(a.reference.contact_angle_rad, b.reference.contact_angle_rad);
+          EXPECT_EQ(a.normal_force_estimate_N, b.normal_force_estimate_N);
+          EXPECT_GT(a.patch.strips(), 4u);
+          EXPECT_EQ(b.patch.strips(), 2u);
+          EXPECT_TRUE(std::isfinite(a.patch.rigid_approach_m));
+          EXPECT_TRUE(std::isnan(b.patch.rigid_approach_m));
+          flange_poses += a.reference.contact_angle_rad > 0.8 ? 1 : 0;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(poses, 78);
+  EXPECT_GT(flange_poses, 0);  // the flange is among the regions compared
+}
+
 TEST(GeometryContact, CreepageLimits) {
   const WheelsetTrackGeometry g = standard_track();
   WheelsetPose p;

@@ -48,6 +48,11 @@ struct CandidateOptions {
   // this (WheelsetTrackGeometry::MinimumVerticalGap), so a flange pressed against the rail interpenetrates
   // and the load control finds the vertical position with the flange force included. Default: all count.
   double max_touching_contact_angle_rad = 1e300;  // rad
+  // false: each patch's strips stop at its second reachable one (the condition for a region to yield a patch is
+  // the same, checked on the same strips); patch.rigid_approach_m is then NaN and the strips are not the region's.
+  // For a caller that reads only the regions, their reference points and the rigid contact points (the multi-Hertz
+  // model with the total-force balance, wheel_contact.cpp): the strip geometry is most of the search's cost.
+  bool strip_geometry = true;
 };
 
 // Ok: at least one candidate; NoContact: the wheel faces the rail but does not interpenetrate it (or no region

@@ -95,6 +95,7 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
     const double eta = g.RailEtaAtArcLength(side, s, &rail_node);
     double gap;
     Eigen::Vector3d wp;
+    if (!o.strip_geometry && p.s_m.size() >= 2) break;  // the region yields a patch: enough for the caller
     if (!g.NormalGap(side, f, eta, &y_w, &gap, &wp, &work)) continue;  // silhouette not reachable: strip left out
     const double m_r = work.rail_slope;
     const double nl = std::sqrt(1 + m_r * m_r);
@@ -121,6 +122,7 @@ ContactCandidate build_patch(const WheelsetTrackGeometry& g, Side side, const Wh
     for (double& gj : p.gap_m) gj -= gap_min;
     p.rigid_approach_m = std::max(0.0, -gap_min);
   }
+  if (!o.strip_geometry) p.rigid_approach_m = std::numeric_limits<double>::quiet_NaN();  // not the region's
   return c;
 }
 

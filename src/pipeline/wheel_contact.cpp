@@ -166,6 +166,7 @@ struct NormalStage {
   bool finished = false;      // the report is final (unloaded, no contact, no load bracket)
   CandidateResult candidates;
   std::vector<RigidContactPoint> hertz_points;
+  std::vector<size_t> hertz_region;  // hertz model: the index of each point's region in the candidate search's list
   std::vector<ContactModel> patch_model;
   std::vector<double> auto_alpha_c_deg;
   std::vector<PatchFrame> frames;
@@ -205,6 +206,10 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
   candidate_options.combine_distance_m = options.patch_combine_distance_m;
   candidate_options.max_touching_contact_angle_rad = options.max_touching_contact_angle_rad;
   const bool load_control = options.vertical_load_N >= 0.0;
+  // The hertz model reads only the regions and the rigid contact points (§1); their strip geometry is wanted only by
+  // the pressure balance's bracket (phase 1 below), found again there when it is needed.
+  candidate_options.strip_geometry =
+      !(options.model == ContactModel::Hertz && (!load_control || BalancesTotalVerticalForce(options)));
   stage.finished = true;
   if (load_control && options.vertical_load_N == 0.0) return stage;  // unloaded wheel: no contact
   CandidateResult& candidates = stage.candidates;
@@ -259,7 +264,10 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
     std::sort(points.begin(), points.end(), [](const auto& x, const auto& y) { return x.rail_s_m < y.rail_s_m; });
     if (options.model == ContactModel::Hertz && !points.empty()) {
       std::vector<ContactCandidate> split;  // only the region's bookkeeping is used for a Hertz patch
-      for (const RigidContactPoint& p : points) split.push_back(candidates.candidates[region_of(p)]);
+      for (const RigidContactPoint& p : points) {
+        split.push_back(candidates.candidates[region_of(p)]);
+        stage.hertz_region.push_back(region_of(p));
+      }
       candidates.candidates = std::move(split);
       hertz_points = points;
     } else {
@@ -385,7 +393,16 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
     // patch's approach grows with it): the Hertz push-down of the candidates is close, so the first bracket is the
     // size of the largest rigid approach; its last evaluation is at the solution (no re-solve).
     double scale = 0.0;
-    for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
+    if (candidate_options.strip_geometry) {
+      for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
+    } else {
+      // (hertz: the same regions with their strips, from the same search; each point's region as above)
+      candidate_options.strip_geometry = true;
+      const CandidateResult full = FindContactCandidatesForLoad(geometry, side, pose, candidate_load_N,
+                                                                options.material, candidate_options);
+      for (const size_t region : stage.hertz_region)
+        scale = std::max(scale, full.candidates.at(region).patch.rigid_approach_m);
+    }
     scale = std::max(scale, 1e-6);
     // (with the total-force balance to follow, phase 1 only starts phase 2: a 1e-3 tolerance is enough)
     const double pressure_tolerance =
