@@ -29,7 +29,7 @@
  *
  * COST (tests/bench/bench_capi.cpp, conforma_bench --benchmark_filter=CApiWheelset, both wheels, CPU time): the
  * conformal model takes about 0.2 ms per wheelset pose in approach mode and about 0.3-0.35 ms in load control (three
- * Kik-Piotrowski and FASTSIM solves per wheel); the Hertz model about 0.15 ms in load control. parallel_wheels = 1
+ * Kik-Piotrowski and FASTSIM solves per wheel); the Hertz model about 0.1 ms in load control. parallel_wheels = 1
  * solves the two wheels as two sections of an OpenMP region of two threads (OpenMP keeps the second thread between
  * calls): where a second core is free the wall time drops towards the slower wheel's, at some CPU more (the waiting
  * thread spins a while after each call; OMP_WAIT_POLICY=passive stops that). Measured on 2 idle cores, load control:
