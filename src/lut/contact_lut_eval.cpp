@@ -251,6 +251,16 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
   std::vector<FastsimCreepages> creep;
   std::vector<double> alpha;
   const FastsimFlexibilities L = FastsimHertzFlexibilities(in, options.fastsim);
+  // the element means of the semi-ellipse, the same on every station (elements from the leading edge)
+  std::vector<double> element_mean(n);
+  for (int e = 0; e < n; ++e) {
+    const double t2 = 1.0 - 2.0 * e / n, t1 = 1.0 - 2.0 * (e + 1.0) / n;
+    element_mean[e] = SemiEllipseMean(t1, t2);
+  }
+  patch.strips.reserve(kLutStations);
+  patch.bound_pressure_Pa.reserve(static_cast<size_t>(kLutStations) * n);
+  creep.reserve(kLutStations);
+  alpha.reserve(kLutStations);
   double projected = 0.0;
   for (int k = 0; k < kLutStations; ++k) {
     const double* f = &q.stations[k * kLutStationFields];
@@ -265,8 +275,7 @@ void SolveOnStations(const LutPatch& q, const double* u, const FastsimHertzInput
     strip.n_elements = n;
     double strip_load = 0.0;
     for (int e = 0; e < n; ++e) {
-      const double t2 = 1.0 - 2.0 * e / n, t1 = 1.0 - 2.0 * (e + 1.0) / n;  // from the leading edge
-      const double p = peak * SemiEllipseMean(t1, t2);
+      const double p = peak * element_mean[e];
       patch.bound_pressure_Pa.push_back(p);
       strip_load += p * width * 2.0 * c / n;
     }

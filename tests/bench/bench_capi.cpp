@@ -79,5 +79,10 @@ BENCHMARK_CAPTURE(BM_CApiWheelset, conformal_load_y7mm_flange_parallel, "conform
 BENCHMARK_CAPTURE(BM_CApiWheelset, hertz_load_y3mm, "hertz", CONFORMA_LOAD_CONTROL, 3e-3)
     ->Unit(benchmark::kMicrosecond)
     ->MeasureProcessCPUTime();
+// auto: per patch from its undeformed geometry (Hertz on a flat tread patch, KP where it is conformal, §9.2)
+BENCHMARK_CAPTURE(BM_CApiWheelset, auto_load_y3mm, "auto", CONFORMA_LOAD_CONTROL, 3e-3)
+    ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(BM_CApiWheelset, auto_load_y7mm_flange, "auto", CONFORMA_LOAD_CONTROL, 7e-3)
+    ->Unit(benchmark::kMicrosecond)->MeasureProcessCPUTime();
 
 }  // namespace
