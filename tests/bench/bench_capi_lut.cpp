@@ -83,6 +83,7 @@ void BM_CApiWheelsetLut(benchmark::State& state, const char* model_name, conform
     state.counters["Fy_left_N"] = exact.wheel[0].force_track_N[1];
   }
   state.counters["patches_left"] = r.wheel[0].patches_found;
+  state.counters["table_reads"] = r.wheel[0].load_iterations + r.wheel[1].load_iterations;  // both wheels
   conforma_model_destroy(table);
   conforma_model_destroy(direct);
 }
