@@ -400,8 +400,12 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
       candidate_options.strip_geometry = true;
       const CandidateResult full = FindContactCandidatesForLoad(geometry, side, pose, candidate_load_N,
                                                                 options.material, candidate_options);
-      for (const size_t region : stage.hertz_region)
-        scale = std::max(scale, full.candidates.at(region).patch.rigid_approach_m);
+      if (stage.hertz_region.empty()) {  // (no rigid point at first touch: the regions were not split)
+        for (const ContactCandidate& c : full.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
+      } else {
+        for (const size_t region : stage.hertz_region)
+          scale = std::max(scale, full.candidates.at(region).patch.rigid_approach_m);
+      }
     }
     scale = std::max(scale, 1e-6);
     // (with the total-force balance to follow, phase 1 only starts phase 2: a 1e-3 tolerance is enough)
