@@ -90,13 +90,16 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
     if (!ok) break;
   }
   double phi = b, fphi = fb, zphi = zb;
+  // the true residual F(phi) of the end taken (the Illinois step scales the bracket's stored values): F is a function
+  // of phi alone, so its value where the end was evaluated is the value at the end
+  double fphi_true = fb, fa_true = fa, fb_true = fb;
   if (ok && fa * fb <= 0) {
     IllinoisBracket bracket(a, fa, b, fb);  // the one root finder's step (root_finding.hpp); z rides along
     for (; it < options.max_iterations; ++it) {
       if (std::abs(bracket.f_low()) < std::abs(bracket.f_high())) {
-        phi = bracket.low(); fphi = bracket.f_low(); zphi = za;
+        phi = bracket.low(); fphi = bracket.f_low(); zphi = za; fphi_true = fa_true;
       } else {
-        phi = bracket.high(); fphi = bracket.f_high(); zphi = zb;
+        phi = bracket.high(); fphi = bracket.f_high(); zphi = zb; fphi_true = fb_true;
       }
       if (std::abs(fphi) < options.tolerance_m) break;
       const double c = bracket.FalsePosition();  // regula falsi with the Illinois modification
@@ -106,12 +109,13 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
       const bool on_low_side = !(fc * bracket.f_high() > 0);
       bracket.Replace(c, fc, on_low_side);
       (on_low_side ? za : zb) = zc;
+      (on_low_side ? fa_true : fb_true) = fc;
       if (std::abs(bracket.high() - bracket.low()) < 1e-15) break;
     }
   }
   if (ok) {
-    fphi = F(phi, &zphi, &ok);  // true residual (the Illinois step scales stored values)
-    if (ok && std::abs(fphi) < options.tolerance_m) out.status = EquilibriumStatus::Converged;
+    fphi = fphi_true;
+    if (std::abs(fphi) < options.tolerance_m) out.status = EquilibriumStatus::Converged;
   }
   out.iterations = it;
   pose.roll_rad = phi;
