@@ -113,10 +113,7 @@ EquilibriumResult WheelsetTrackGeometry::SolveRigidEquilibrium(double lateral_m,
       if (std::abs(bracket.high() - bracket.low()) < 1e-15) break;
     }
   }
-  if (ok) {
-    fphi = fphi_true;
-    if (std::abs(fphi) < options.tolerance_m) out.status = EquilibriumStatus::Converged;
-  }
+  if (ok && std::abs(fphi_true) < options.tolerance_m) out.status = EquilibriumStatus::Converged;
   out.iterations = it;
   pose.roll_rad = phi;
   pose.vertical_m = zphi;

@@ -392,21 +392,16 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
     // Phase 1, the one load control (load_control.hpp) on the pressure forces alone (monotone in the push: every
     // patch's approach grows with it): the Hertz push-down of the candidates is close, so the first bracket is the
     // size of the largest rigid approach; its last evaluation is at the solution (no re-solve).
-    double scale = 0.0;
-    if (candidate_options.strip_geometry) {
-      for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
-    } else {
-      // (hertz: the same regions with their strips, from the same search; each point's region as above)
+    if (!candidate_options.strip_geometry) {
+      // (hertz: each patch gets its region's strips, from the same search again; each point's region as above)
       candidate_options.strip_geometry = true;
       const CandidateResult full = FindContactCandidatesForLoad(geometry, side, pose, candidate_load_N,
                                                                 options.material, candidate_options);
-      if (stage.hertz_region.empty()) {  // (no rigid point at first touch: the regions were not split)
-        for (const ContactCandidate& c : full.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
-      } else {
-        for (const size_t region : stage.hertz_region)
-          scale = std::max(scale, full.candidates.at(region).patch.rigid_approach_m);
-      }
+      for (size_t j = 0; j < n; ++j)
+        candidates.candidates[j].patch = full.candidates.at(stage.hertz_region.empty() ? j : stage.hertz_region[j]).patch;
     }
+    double scale = 0.0;
+    for (const ContactCandidate& c : candidates.candidates) scale = std::max(scale, c.patch.rigid_approach_m);
     scale = std::max(scale, 1e-6);
     // (with the total-force balance to follow, phase 1 only starts phase 2: a 1e-3 tolerance is enough)
     const double pressure_tolerance =
