@@ -1,5 +1,5 @@
 // Flange contact in the curving solve: the Hertz wheel forces stay continuous as the flange comes into contact
-// (multi-Hertz, wheel_contact.cpp), and the quasi-static solve of a stiff bogie in a sharp curve finds the
+// (multi-Hertz, wheel_normal_stage.cpp), and the quasi-static solve of a stiff bogie in a sharp curve finds the
 // flange-contact equilibrium (multi-start, derailed attempts rejected; kinematics_quasistatic.hpp).
 // Set-up: the Aosta scenario (ALn 501, S1002 on 60E1 at 1:20, r0 = 430 mm, its friction, elastic flange at 60 deg
 // in the curving solve; the first test's wheel forces use a rigid or an elastic flange as stated).

@@ -51,7 +51,7 @@ struct CandidateOptions {
   // false: each patch's strips stop at its second reachable one (the condition for a region to yield a patch is
   // the same, checked on the same strips); patch.rigid_approach_m is then NaN and the strips are not the region's.
   // For a caller that reads only the regions, their reference points and the rigid contact points (the multi-Hertz
-  // model with the total-force balance, wheel_contact.cpp): the strip geometry is most of the search's cost.
+  // model with the total-force balance, wheel_normal_stage.cpp): the strip geometry is most of the search's cost.
   bool strip_geometry = true;
 };
 
