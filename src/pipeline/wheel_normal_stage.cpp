@@ -41,41 +41,12 @@ PatchFrame FrameOfContactAngle(double contact_angle_rad) {
   return {Eigen::Vector3d(0.0, -sd, cd), Eigen::Vector3d(0.0, cd, sd)};
 }
 
-// Stage 1: candidates, model per patch, normal problem (load control); with total-force load control also the
-// tangential problem at every push-down (NormalStage::coupled). In load control the candidates are found for
-// candidate_load_N (the wheel load, or the fixed point's load of LoadBalance::TotalConsistent, SolveNormalStage);
-// the load control balances options.vertical_load_N. start_vertical_m (total-force balance only): the wheel's vertical
-// position where the direct total-force balance (step 0 of §3.6.1) starts; NaN: the candidates' Hertz push-down.
-// Options validated by the caller.
-NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
-                                const WheelsetVelocity& velocity, const WheelContactOptions& options,
-                                double candidate_load_N, double start_vertical_m = std::nan("")) {
-  NormalStage stage;
-  WheelContactReport& report = stage.report;
-  report.side = side;
-  report.model = options.model;
-  report.pose = pose;
-
-  // 1. Candidates: at the Hertz push-down for the load (load control) or at the given pose.
-  CandidateOptions candidate_options;
-  candidate_options.strip_width_m = options.candidate_strip_width_m;
-  candidate_options.combine_distance_m = options.patch_combine_distance_m;
-  candidate_options.max_touching_contact_angle_rad = options.max_touching_contact_angle_rad;
-  const bool load_control = options.vertical_load_N >= 0.0;
-  // The hertz model reads only the regions and the rigid contact points (§1); their strip geometry is wanted only by
-  // the pressure balance's bracket (phase 1 below), found again there when it is needed.
-  candidate_options.strip_geometry =
-      !(options.model == ContactModel::Hertz && (!load_control || BalancesTotalVerticalForce(options)));
-  stage.finished = true;
-  if (load_control && options.vertical_load_N == 0.0) return stage;  // unloaded wheel: no contact
+// The rigid contact points of the hertz and auto models (stage.hertz_points): hertz, one per rigid gap minimum at
+// first touch, each patch taking its region's bookkeeping (stage.hertz_region); auto, one per region (its deepest
+// minimum, else the region's reference point). Other models: empty points, one per candidate.
+void AssignRigidContactPoints(NormalStage& stage, const WheelsetTrackGeometry& geometry, Side side,
+                              const WheelsetPose& pose, const WheelContactOptions& options) {
   CandidateResult& candidates = stage.candidates;
-  if (load_control) report.candidate_load_N = candidate_load_N, report.candidate_searches = 1;
-  candidates = load_control ? FindContactCandidatesForLoad(geometry, side, pose, candidate_load_N,
-                                                           options.material, candidate_options)
-                            : FindContactCandidates(geometry, side, pose, candidate_options);
-  if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return stage;
-  report.pose = candidates.pose;
-  // Hertz (and auto, which may choose Hertz): the rigid contact points (gap minima) inside each region.
   std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
   if (options.model == ContactModel::Hertz || options.model == ContactModel::Auto) {
     // Multi-Hertz (docs/physics-reference.md §1): one ellipse per rigid gap minimum of the wheel at first touch, each
@@ -137,9 +108,14 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
   } else {
     hertz_points.resize(candidates.candidates.size());
   }
+}
+
+// The model of each patch: the chosen one, or per patch from the undeformed geometry at the candidates' pose
+// (auto, model_selection.hpp; the approach there is the Hertz push-down in load control); and each patch's frame.
+void ChoosePatchModelsAndFrames(NormalStage& stage, const WheelContactOptions& options) {
+  const CandidateResult& candidates = stage.candidates;
+  const std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
   const size_t n = candidates.candidates.size();
-  // The model of each patch: the chosen one, or per patch from the undeformed geometry at the candidates' pose
-  // (auto, model_selection.hpp; the approach there is the Hertz push-down in load control).
   std::vector<ContactModel>& patch_model = stage.patch_model;
   std::vector<double>& auto_alpha_c_deg = stage.auto_alpha_c_deg;
   patch_model.assign(n, options.model);
@@ -161,6 +137,49 @@ NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side
                                           hertz_points[j].roller_angle_rad)
                     : TiltedByRollerAngle(FrameOf(candidates.candidates[j].patch),
                                           candidates.candidates[j].reference.roller_angle_rad);
+}
+
+// Stage 1: candidates, model per patch, normal problem (load control); with total-force load control also the
+// tangential problem at every push-down (NormalStage::coupled). In load control the candidates are found for
+// candidate_load_N (the wheel load, or the fixed point's load of LoadBalance::TotalConsistent, SolveNormalStage);
+// the load control balances options.vertical_load_N. start_vertical_m (total-force balance only): the wheel's vertical
+// position where the direct total-force balance (step 0 of §3.6.1) starts; NaN: the candidates' Hertz push-down.
+// Options validated by the caller.
+NormalStage SolveNormalStageFor(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,
+                                const WheelsetVelocity& velocity, const WheelContactOptions& options,
+                                double candidate_load_N, double start_vertical_m = std::nan("")) {
+  NormalStage stage;
+  WheelContactReport& report = stage.report;
+  report.side = side;
+  report.model = options.model;
+  report.pose = pose;
+
+  // 1. Candidates: at the Hertz push-down for the load (load control) or at the given pose.
+  CandidateOptions candidate_options;
+  candidate_options.strip_width_m = options.candidate_strip_width_m;
+  candidate_options.combine_distance_m = options.patch_combine_distance_m;
+  candidate_options.max_touching_contact_angle_rad = options.max_touching_contact_angle_rad;
+  const bool load_control = options.vertical_load_N >= 0.0;
+  // The hertz model reads only the regions and the rigid contact points (§1); their strip geometry is wanted only by
+  // the pressure balance's bracket (phase 1 below), found again there when it is needed.
+  candidate_options.strip_geometry =
+      !(options.model == ContactModel::Hertz && (!load_control || BalancesTotalVerticalForce(options)));
+  stage.finished = true;
+  if (load_control && options.vertical_load_N == 0.0) return stage;  // unloaded wheel: no contact
+  CandidateResult& candidates = stage.candidates;
+  if (load_control) report.candidate_load_N = candidate_load_N, report.candidate_searches = 1;
+  candidates = load_control ? FindContactCandidatesForLoad(geometry, side, pose, candidate_load_N,
+                                                           options.material, candidate_options)
+                            : FindContactCandidates(geometry, side, pose, candidate_options);
+  if (candidates.status != CandidateStatus::Ok || candidates.candidates.empty()) return stage;
+  report.pose = candidates.pose;
+  // Hertz (and auto, which may choose Hertz): the rigid contact points (gap minima) inside each region.
+  AssignRigidContactPoints(stage, geometry, side, pose, options);
+  const std::vector<RigidContactPoint>& hertz_points = stage.hertz_points;
+  const size_t n = candidates.candidates.size();
+  ChoosePatchModelsAndFrames(stage, options);
+  const std::vector<ContactModel>& patch_model = stage.patch_model;
+  const std::vector<PatchFrame>& frames = stage.frames;
 
   // 2. Normal problem for a vertical push `dz` beyond the candidates' pose: patch j's approach along its own
   // reference normal grows by dz n0_z.

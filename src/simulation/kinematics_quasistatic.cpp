@@ -327,6 +327,168 @@ void InitialGuess(const BogieContext& ctx, double* p) {
 }
 
 
+// One bogie's equilibrium at the carbody yaw (the residuals of BogieResiduals): a start from the kinematic guess,
+// then (not converged) continuation in c = 1/R and further starts in the flange regimes; the best attempt and its
+// unknowns.
+std::pair<BogieQuasiStaticReport, std::array<double, kUnknowns>> SolveBogieCase(const BogieContext& base,
+                                                                                double carbody_yaw, double y_right,
+                                                                                double y_left,
+                                                                                const QuasiStaticOptions& options) {
+  const double c = base.c;
+  BogieContext ctx = base;
+  ctx.carbody_yaw = carbody_yaw;
+  BogieQuasiStaticReport rep;
+  rep.carbody_yaw_rad = carbody_yaw;
+  std::array<double, kUnknowns> p{};
+  InitialGuess(ctx, p.data());
+  if (c == 0.0) p[0] = p[3] = p[6] = 1e3 * options.tangent_start_offset_m;
+  AttemptResult a = SolveBogie(ctx, p.data());
+  rep.iterations += a.iterations;
+  if (!a.converged && options.continuation_steps > 0 && c != 0.0) {  // continuation in c = 1/R
+    rep.continuation_used = true;
+    const std::array<double, kUnknowns> direct = p;
+    const AttemptResult direct_result = a;
+    std::fill(p.begin(), p.end(), 0.0);
+    for (int k = 1; k <= options.continuation_steps; ++k) {
+      const double f = static_cast<double>(k) / options.continuation_steps;
+      ctx.c = f * c;
+      ctx.a_nc = f * base.a_nc;
+      ctx.carbody_yaw = f * carbody_yaw;
+      a = SolveBogie(ctx, p.data());
+      rep.iterations += a.iterations;
+    }
+    if (Better(direct_result, a)) p = direct, a = direct_result;  // keep the better one
+    ctx.c = c;
+    ctx.a_nc = base.a_nc;
+    ctx.carbody_yaw = carbody_yaw;
+  }
+  // Further starts in the flange regimes of a stiff bogie in a sharp curve, where the two starts above can
+  // stall in a local minimum of the residual (the flange forces rise by ~2 Q0 within 0.05 mm): leading
+  // wheelset at the outer flange with the trailing one at the inner flange, centred, or at the outer flange.
+  if (!a.converged && options.multi_start && c != 0.0) {
+    const double out = c > 0.0 ? -1.0 : 1.0;
+    const double y_out = out < 0.0 ? y_right : y_left, y_in = out < 0.0 ? y_left : y_right;
+    for (const double y1 : {y_in, 0.0, y_out}) {
+      std::array<double, kUnknowns> q{};
+      WheelsetShiftGuess(ctx, y_out, y1, q.data());
+      const AttemptResult attempt = SolveBogie(ctx, q.data());
+      rep.iterations += attempt.iterations;
+      ++rep.extra_starts;
+      if (Better(attempt, a)) p = q, a = attempt;
+      if (a.converged) break;
+    }
+  }
+  rep.max_residual = a.max_residual;
+  rep.contact_evaluations = ctx.contact_evaluations;
+  rep.failed_contact_evaluations = ctx.failed_contact_evaluations;
+  rep.derailed = a.beyond_margin;
+  rep.climbing = a.climbing;
+  rep.status = a.converged ? QuasiStaticStatus::Converged
+               : std::isfinite(a.max_residual) ? QuasiStaticStatus::NotConverged
+                                                : QuasiStaticStatus::NoContact;
+  rep.lateral_m = 1e-3 * p[6];
+  rep.yaw_rad = 1e-3 * p[7];
+  return std::make_pair(rep, p);
+}
+
+// The reports of bogie b's two wheelsets at its solution p (the contact re-evaluated there: the forces are
+// deterministic), its residuals into the last bogie report.
+void AppendWheelsetReports(const BogieContext& base, double carbody_yaw, int b, const std::array<double, kUnknowns>& p,
+                           const QuasiStaticOptions& options, QuasiStaticResult* result) {
+  BogieContext ctx = base;
+  ctx.carbody_yaw = carbody_yaw;
+  WheelsetForces f[2];
+  for (int j = 0; j < 2; ++j) f[j] = EvaluateWheelset(ctx, 1e-3 * p[3 * j], 1e-3 * p[3 * j + 1], p[3 * j + 2]);
+  double r[kUnknowns];
+  Suspension s{};
+  BogieResiduals(ctx, p.data(), f, r, &s);
+  for (int k = 0; k < kUnknowns; ++k) result->bogies.back().residuals[k] = r[k];
+  for (int j = 0; j < 2; ++j) {
+    WheelsetQuasiStaticReport w;
+    w.wheelset = 2 * b + j;
+    w.bogie = b;
+    w.pose = f[j].pose;
+    w.pose.lateral_m = 1e-3 * p[3 * j];
+    w.pose.yaw_rad = 1e-3 * p[3 * j + 1];
+    w.velocity = f[j].velocity;
+    w.primary_lateral_force_N = s.lateral[j];
+    w.primary_yaw_moment_Nm = s.yaw[j];
+    for (Side side : {Side::Left, Side::Right}) {
+      const int i = side_index(side);
+      WheelQuasiStaticReport& wr = w.wheel[i];
+      const WheelContactReport& cr = f[j].report[i];
+      wr.status = cr.status;
+      wr.vertical_load_N = base.Q[i];
+      wr.patch_count = static_cast<int>(cr.patches.size());
+      for (const PatchReport& pr : cr.patches) {
+        wr.longitudinal_force_N += pr.fx_N;
+        wr.max_contact_angle_rad = std::max(wr.max_contact_angle_rad, pr.contact_angle_rad);
+        if (pr.contact_angle_rad > options.flange_contact_angle_rad) wr.flange_contact = true;
+      }
+      wr.lateral_force_N = side_sign(side) * cr.lateral_force_N;
+      wr.y_over_q = -cr.lateral_force_N / base.Q[i];  // towards the gauge side = -eta
+      result->total_lateral_force_N += wr.lateral_force_N;
+    }
+    result->wheelsets.push_back(w);
+  }
+}
+
+// Tangent track: the samples of the kinematic oscillation about the centred wheelset (header comment), every
+// wheelset of the result at each phase.
+void AppendTangentOscillationSamples(const WheelsetTrackGeometry& geometry, const BogieContext& base,
+                                     const TrackClass& track_class, const QuasiStaticOptions& options,
+                                     const WheelContactFunction& contact, QuasiStaticResult* result) {
+  const double A = options.tangent_amplitude_m;
+  const EquilibriumResult eq_amp = geometry.SolveRigidEquilibrium(-A, 0.0);
+  double conicity = eq_amp.status == EquilibriumStatus::Converged ? -eq_amp.rolling_radius_difference_m / (2.0 * A) : 0.0;
+  conicity = std::max(conicity, 1e-3);  // a (nearly) cylindrical tread: long wavelength, still finite
+  const double k = 1.0 / std::sqrt(base.r0 * base.b0 / conicity);  // 2 pi / L_K (Klingel)
+  const double V = track_class.speed_m_s;
+  // Axle speed per phase from the torque balance (§12.3): every wheelset of the vehicle has the same pose,
+  // velocities and loads at a given phase, so each phase is solved once.
+  AxleRollingSpeedOptions rolling;
+  rolling.applied_torque_Nm = base.axle_torque_Nm;
+  rolling.torque_tolerance_Nm = options.residual_tolerance * base.Q0 * base.r0;
+  std::map<int, double> axle_speed;  // phase -> Omega
+  for (const WheelsetQuasiStaticReport& w : result->wheelsets) {
+    WheelsetPose guess;
+    for (int n = 0; n < options.tangent_phases; ++n) {
+      const double theta = 2.0 * M_PI * n / options.tangent_phases;
+      KinematicsSample s;
+      s.wheelset = w.wheelset;
+      s.time_s = theta / (k * V);
+      s.weight = 1.0 / options.tangent_phases;
+      const double y = A * std::sin(theta), psi = A * k * std::cos(theta);
+      const EquilibriumResult eq = geometry.SolveRigidEquilibrium(y, psi, guess);
+      if (eq.status == EquilibriumStatus::Converged) guess = eq.pose;
+      s.pose = eq.pose;
+      s.pose.lateral_m = y;
+      s.pose.yaw_rad = psi;
+      s.velocity.forward_speed_m_s = V;
+      s.velocity.lateral_velocity_m_s = V * psi;
+      s.velocity.yaw_rate_rad_s = -V * A * k * k * std::sin(theta);
+      s.velocity.axle_angular_velocity_rad_s = V / base.r0;
+      if (options.free_axle_rotation) {
+        auto known = axle_speed.find(n);
+        if (known == axle_speed.end()) {
+          const AxleRollingSpeedResult roll = SolveAxleRollingSpeed(geometry, s.pose, s.velocity, base.Q,
+                                                                    base.contact_options, contact, base.r0, rolling);
+          if (roll.status != AxleRollingSpeedStatus::Converged) {
+            ++result->tangent_rolling_failures;
+            if (result->status == QuasiStaticStatus::Converged) result->status = QuasiStaticStatus::NotConverged;
+          }
+          known = axle_speed.emplace(n, roll.axle_angular_velocity_rad_s).first;
+        }
+        s.velocity.axle_angular_velocity_rad_s = known->second;
+      }
+      s.vertical_load_N[0] = base.Q[0];
+      s.vertical_load_N[1] = base.Q[1];
+      s.track_curvature_per_m = 0.0;
+      result->series.samples.push_back(s);
+    }
+  }
+}
+
 }  // namespace
 
 QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, const WheelsetTrackGeometry& geometry,
@@ -400,60 +562,8 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
     }
     auto it = solved.find(carbody_yaw);
     if (it == solved.end()) {
-      BogieContext ctx = base;
-      ctx.carbody_yaw = carbody_yaw;
-      BogieQuasiStaticReport rep;
-      rep.carbody_yaw_rad = carbody_yaw;
-      std::array<double, kUnknowns> p{};
-      InitialGuess(ctx, p.data());
-      if (c == 0.0) p[0] = p[3] = p[6] = 1e3 * options.tangent_start_offset_m;
-      AttemptResult a = SolveBogie(ctx, p.data());
-      rep.iterations += a.iterations;
-      if (!a.converged && options.continuation_steps > 0 && c != 0.0) {  // continuation in c = 1/R
-        rep.continuation_used = true;
-        const std::array<double, kUnknowns> direct = p;
-        const AttemptResult direct_result = a;
-        std::fill(p.begin(), p.end(), 0.0);
-        for (int k = 1; k <= options.continuation_steps; ++k) {
-          const double f = static_cast<double>(k) / options.continuation_steps;
-          ctx.c = f * c;
-          ctx.a_nc = f * base.a_nc;
-          ctx.carbody_yaw = f * carbody_yaw;
-          a = SolveBogie(ctx, p.data());
-          rep.iterations += a.iterations;
-        }
-        if (Better(direct_result, a)) p = direct, a = direct_result;  // keep the better one
-        ctx.c = c;
-        ctx.a_nc = base.a_nc;
-        ctx.carbody_yaw = carbody_yaw;
-      }
-      // Further starts in the flange regimes of a stiff bogie in a sharp curve, where the two starts above can
-      // stall in a local minimum of the residual (the flange forces rise by ~2 Q0 within 0.05 mm): leading
-      // wheelset at the outer flange with the trailing one at the inner flange, centred, or at the outer flange.
-      if (!a.converged && options.multi_start && c != 0.0) {
-        const double out = c > 0.0 ? -1.0 : 1.0;
-        const double y_out = out < 0.0 ? y_right : y_left, y_in = out < 0.0 ? y_left : y_right;
-        for (const double y1 : {y_in, 0.0, y_out}) {
-          std::array<double, kUnknowns> q{};
-          WheelsetShiftGuess(ctx, y_out, y1, q.data());
-          const AttemptResult attempt = SolveBogie(ctx, q.data());
-          rep.iterations += attempt.iterations;
-          ++rep.extra_starts;
-          if (Better(attempt, a)) p = q, a = attempt;
-          if (a.converged) break;
-        }
-      }
-      rep.max_residual = a.max_residual;
-      rep.contact_evaluations = ctx.contact_evaluations;
-      rep.failed_contact_evaluations = ctx.failed_contact_evaluations;
-      rep.derailed = a.beyond_margin;
-      rep.climbing = a.climbing;
-      rep.status = a.converged ? QuasiStaticStatus::Converged
-                   : std::isfinite(a.max_residual) ? QuasiStaticStatus::NotConverged
-                                                    : QuasiStaticStatus::NoContact;
-      rep.lateral_m = 1e-3 * p[6];
-      rep.yaw_rad = 1e-3 * p[7];
-      it = solved.emplace(carbody_yaw, std::make_pair(rep, p)).first;
+      const auto solution = SolveBogieCase(base, carbody_yaw, y_right, y_left, options);
+      it = solved.emplace(carbody_yaw, solution).first;
     }
     BogieQuasiStaticReport rep = it->second.first;
     rep.bogie = b;
@@ -466,43 +576,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
     if (rep.status == QuasiStaticStatus::NoContact) result.status = QuasiStaticStatus::NoContact;
     result.bogies.push_back(rep);
 
-    // Reports at the solution (re-evaluated: the contact forces are deterministic).
-    BogieContext ctx = base;
-    ctx.carbody_yaw = carbody_yaw;
-    WheelsetForces f[2];
-    for (int j = 0; j < 2; ++j) f[j] = EvaluateWheelset(ctx, 1e-3 * p[3 * j], 1e-3 * p[3 * j + 1], p[3 * j + 2]);
-    double r[kUnknowns];
-    Suspension s{};
-    BogieResiduals(ctx, p.data(), f, r, &s);
-    for (int k = 0; k < kUnknowns; ++k) result.bogies.back().residuals[k] = r[k];
-    for (int j = 0; j < 2; ++j) {
-      WheelsetQuasiStaticReport w;
-      w.wheelset = 2 * b + j;
-      w.bogie = b;
-      w.pose = f[j].pose;
-      w.pose.lateral_m = 1e-3 * p[3 * j];
-      w.pose.yaw_rad = 1e-3 * p[3 * j + 1];
-      w.velocity = f[j].velocity;
-      w.primary_lateral_force_N = s.lateral[j];
-      w.primary_yaw_moment_Nm = s.yaw[j];
-      for (Side side : {Side::Left, Side::Right}) {
-        const int i = side_index(side);
-        WheelQuasiStaticReport& wr = w.wheel[i];
-        const WheelContactReport& cr = f[j].report[i];
-        wr.status = cr.status;
-        wr.vertical_load_N = base.Q[i];
-        wr.patch_count = static_cast<int>(cr.patches.size());
-        for (const PatchReport& pr : cr.patches) {
-          wr.longitudinal_force_N += pr.fx_N;
-          wr.max_contact_angle_rad = std::max(wr.max_contact_angle_rad, pr.contact_angle_rad);
-          if (pr.contact_angle_rad > options.flange_contact_angle_rad) wr.flange_contact = true;
-        }
-        wr.lateral_force_N = side_sign(side) * cr.lateral_force_N;
-        wr.y_over_q = -cr.lateral_force_N / base.Q[i];  // towards the gauge side = -eta
-        result.total_lateral_force_N += wr.lateral_force_N;
-      }
-      result.wheelsets.push_back(w);
-    }
+    AppendWheelsetReports(base, carbody_yaw, b, p, options, &result);
   }
 
   // Samples.
@@ -521,56 +595,7 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
     }
     return result;
   }
-  // Tangent track: kinematic oscillation about the centred wheelset (header comment).
-  const double A = options.tangent_amplitude_m;
-  const EquilibriumResult eq_amp = geometry.SolveRigidEquilibrium(-A, 0.0);
-  double conicity = eq_amp.status == EquilibriumStatus::Converged ? -eq_amp.rolling_radius_difference_m / (2.0 * A) : 0.0;
-  conicity = std::max(conicity, 1e-3);  // a (nearly) cylindrical tread: long wavelength, still finite
-  const double k = 1.0 / std::sqrt(base.r0 * base.b0 / conicity);  // 2 pi / L_K (Klingel)
-  const double V = track_class.speed_m_s;
-  // Axle speed per phase from the torque balance (§12.3): every wheelset of the vehicle has the same pose,
-  // velocities and loads at a given phase, so each phase is solved once.
-  AxleRollingSpeedOptions rolling;
-  rolling.applied_torque_Nm = base.axle_torque_Nm;
-  rolling.torque_tolerance_Nm = options.residual_tolerance * base.Q0 * base.r0;
-  std::map<int, double> axle_speed;  // phase -> Omega
-  for (const WheelsetQuasiStaticReport& w : result.wheelsets) {
-    WheelsetPose guess;
-    for (int n = 0; n < options.tangent_phases; ++n) {
-      const double theta = 2.0 * M_PI * n / options.tangent_phases;
-      KinematicsSample s;
-      s.wheelset = w.wheelset;
-      s.time_s = theta / (k * V);
-      s.weight = 1.0 / options.tangent_phases;
-      const double y = A * std::sin(theta), psi = A * k * std::cos(theta);
-      const EquilibriumResult eq = geometry.SolveRigidEquilibrium(y, psi, guess);
-      if (eq.status == EquilibriumStatus::Converged) guess = eq.pose;
-      s.pose = eq.pose;
-      s.pose.lateral_m = y;
-      s.pose.yaw_rad = psi;
-      s.velocity.forward_speed_m_s = V;
-      s.velocity.lateral_velocity_m_s = V * psi;
-      s.velocity.yaw_rate_rad_s = -V * A * k * k * std::sin(theta);
-      s.velocity.axle_angular_velocity_rad_s = V / base.r0;
-      if (options.free_axle_rotation) {
-        auto known = axle_speed.find(n);
-        if (known == axle_speed.end()) {
-          const AxleRollingSpeedResult roll = SolveAxleRollingSpeed(geometry, s.pose, s.velocity, base.Q,
-                                                                    base.contact_options, contact, base.r0, rolling);
-          if (roll.status != AxleRollingSpeedStatus::Converged) {
-            ++result.tangent_rolling_failures;
-            if (result.status == QuasiStaticStatus::Converged) result.status = QuasiStaticStatus::NotConverged;
-          }
-          known = axle_speed.emplace(n, roll.axle_angular_velocity_rad_s).first;
-        }
-        s.velocity.axle_angular_velocity_rad_s = known->second;
-      }
-      s.vertical_load_N[0] = base.Q[0];
-      s.vertical_load_N[1] = base.Q[1];
-      s.track_curvature_per_m = 0.0;
-      result.series.samples.push_back(s);
-    }
-  }
+  AppendTangentOscillationSamples(geometry, base, track_class, options, contact, &result);
   return result;
 }
 
