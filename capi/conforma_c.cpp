@@ -247,6 +247,7 @@ conforma_status conforma_model_create_with_lut(const conforma_track_params* trac
   if (status != CONFORMA_OK) return status;
   try {
     auto lut = std::make_shared<const conforma::ContactLut>(conforma::LoadContactLut(lut_path));
+    conforma::CheckContactLutGeometry(*lut, *(*model)->geometry);
     // the table's elastic-flange rule (not a parameter of conforma_contact_params); the model, material and track
     // must be the table's (checked here once, and by every evaluation)
     (*model)->contact.max_touching_contact_angle_rad = lut->header.max_touching_contact_angle_rad;

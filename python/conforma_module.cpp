@@ -130,6 +130,8 @@ py::dict WheelDict(const WheelsetTrackGeometry& geometry, const WheelContactRepo
 // A track: the geometry of S1002-type wheels on two rails (interop::MakeTrackGeometry, as the command line).
 struct Track {
   std::shared_ptr<const WheelsetTrackGeometry> geometry;
+  // ContactLutGeometryDigest of the geometry, computed at its first table evaluation (under the GIL)
+  mutable std::string lut_digest;
 };
 
 Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<double> inclination_rad,
@@ -144,7 +146,7 @@ Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<d
   if (wheel_is_name && rail_is_name) {
     spec.wheel = wheel.cast<std::string>(), spec.rail = rail.cast<std::string>();
     py::gil_scoped_release release;
-    return Track{interop::MakeTrackGeometry(spec)};
+    return Track{interop::MakeTrackGeometry(spec), {}};
   }
   Profile w = wheel_is_name ? WheelProfileByNameOrFile(wheel.cast<std::string>()) : wheel.cast<Profile>();
   bool built_in = false;
@@ -153,7 +155,7 @@ Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<d
   if (r.kind() != ProfileKind::Rail) throw InputError("Track: the rail profile is a wheel profile");
   const double incl = inclination_rad ? *inclination_rad : built_in ? rail_inclination_1in40() : 0.0;
   py::gil_scoped_release release;
-  return Track{interop::MakeTrackGeometry(w, r, incl, spec)};
+  return Track{interop::MakeTrackGeometry(w, r, incl, spec), {}};
 }
 
 WheelContactOptions ContactOptions(const std::string& model, double load_N, double mu, double shear_modulus_Pa,
@@ -248,6 +250,11 @@ py::dict LutEvaluate(const ContactLut& lut, const Track& track, const std::strin
                            axle_angular_velocity_rad_s.value_or(speed_m_s / r0)};
   LutEvaluationOptions evaluation;
   evaluation.creep_force = ParseLutCreepForce(creep_force);
+  // the table's geometry (contact_lut.hpp): another wheel or rail is refused, not answered from the table
+  if (!lut.header.geometry_digest.empty()) {
+    if (track.lut_digest.empty()) track.lut_digest = ContactLutGeometryDigest(*track.geometry);
+    if (track.lut_digest != lut.header.geometry_digest) CheckContactLutGeometry(lut, *track.geometry);
+  }
   WheelContactReport r;
   {
     py::gil_scoped_release release;

@@ -136,6 +136,9 @@ struct ContactLutHeader {
   double match_distance_m = kDefaultLutMatchDistance_m;  // patches farther apart along the rail are different patches
   // Geometry fingerprint, checked at evaluation against the geometry passed: rail origin eta per side, nominal radius
   std::array<double, 2> rail_origin_eta_m{}, nominal_radius_m{};
+  // FNV-1a (64 bit, hex) of GeometryFingerprint (geometry.hpp: every profile sample and the mounting) of the geometry
+  // the table was built for; empty in tables written before it was recorded (then not checked)
+  std::string geometry_digest;
   double generation_s = 0.0;  // wall time of BuildContactLut, s
   int threads = 0;            // OpenMP threads used
 };
@@ -145,6 +148,14 @@ struct ContactLut {
   ContactLutGrid grid;
   std::array<std::vector<LutNode>, 2> nodes;  // [Left, Right], grid.index order
 };
+
+// ContactLutHeader::geometry_digest of a geometry.
+std::string ContactLutGeometryDigest(const WheelsetTrackGeometry& geometry);
+// InputError when the table records a geometry digest and `geometry` is not the geometry it was built for (other
+// wheel or rail profiles, gauge, flange-back distance, inclination or radii): a table read from a file and paired with
+// a geometry is checked once with this (CLI lut eval / check, dynamics --lut, the C API's
+// conforma_model_create_with_lut, Python's ContactLut.evaluate).
+void CheckContactLutGeometry(const ContactLut& lut, const WheelsetTrackGeometry& geometry);
 
 struct ContactLutBuildOptions {
   ContactLutGrid grid;  // the axes (ContactLutGrid::validate)

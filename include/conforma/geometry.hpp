@@ -370,4 +370,9 @@ inline bool WheelsetTrackGeometry::GraphTable::eval(double y, double* value, dou
 // flange_angle_rad); signed (negative for c > 0).
 double FlangeContactShift(const WheelsetTrackGeometry& geometry, double curvature_sign, double flange_angle_rad = 0.5);
 
+// Every number that defines the geometry: the mounting (gauge, gauge height, flange-back distance and position,
+// nominal radii, inclination, roller radii) and every profile sample of both wheels and rails. Equal fingerprints,
+// equal geometry (the dynamic provider's table cache; a contact LUT's digest, contact_lut.hpp).
+std::vector<double> GeometryFingerprint(const WheelsetTrackGeometry& geometry);
+
 }  // namespace conforma

@@ -14,12 +14,16 @@
 
 namespace conforma {
 
+// The most bogies a vehicle may have: a 32-car train unit of two bogies each. The dynamics' dense Jacobian grows as
+// its square (1,000 bogies took 4.7 GB within 25 s before this bound).
+constexpr int kMaxBogieCount = 64;
+
 struct VehicleParameters {
   std::string name = "vehicle";
   double wheelset_mass_kg = 1300.0;
   double bogie_frame_mass_kg = 3000.0;
   double carbody_mass_per_bogie_kg = 15000.0;   // share of the carbody (and payload) mass carried by one bogie
-  int bogie_count = 2;
+  int bogie_count = 2;                          // 1 ... kMaxBogieCount
   double bogie_centre_distance_m = 15.0;        // between consecutive bogie centres
   double wheelbase_m = 2.5;                     // of the two-axle bogie (2a)
   double nominal_wheel_radius_m = 0.46;         // r0

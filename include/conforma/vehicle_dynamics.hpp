@@ -28,11 +28,14 @@ namespace conforma {
 enum class DynamicsStepper { Rosenbrock4, Dopri5 };
 const char* to_string(DynamicsStepper stepper);  // "rosenbrock4", "dopri5"
 
+// The most history rows a run may ask for (duration_s / output_interval_s), kept in memory.
+constexpr double kMaxHistoryRows = 1e7;
+
 // validate() throws InputError naming the option.
 struct DynamicsOptions {
   DynamicsModelOptions model;            // speed, contact, gravity, ...
   double duration_s = 5.0;               // simulated time, s, > 0
-  double output_interval_s = 0.01;       // time between history samples, s, > 0
+  double output_interval_s = 0.01;       // time between history samples, s, > 0, duration / it <= kMaxHistoryRows
   DynamicsStepper stepper = DynamicsStepper::Rosenbrock4;  // see DynamicsStepper and the header comment
   // Error tolerances of the scaled state (mm, mrad, mm/s, mrad/s, per mille): absolute and relative.
   double absolute_tolerance = 1e-3;      // > 0

@@ -22,6 +22,14 @@ namespace conforma {
 // be astronomically large (a 1e308 N load kept the reference BEM busy for more than 300 s).
 constexpr double kMaxWheelLoadN = 1e7;
 
+// The largest given creepage accepted: |xi|, |eta| <= 1e3 (a relative slip of 100,000 %), |phi| <= 1e3 1/m (a wheel
+// of 1 mm radius spinning about the contact normal). Beyond this nothing physical changes (full slip), and near
+// 1e154 the squares of the creepages overflow: xi = 1e300 gave F_x = NaN, xi = 1e155 F_x = 0 (fuzzing, session 24).
+constexpr double kMaxGivenCreepage = 1e3;
+// The most FASTSIM elements per strip accepted (fastsim_elements): 10,000, ~300 times the default; 1e8 ran out of
+// memory after 9 s.
+constexpr int kMaxFastsimElements = 10000;
+
 // What load control balances against the load (docs/physics-reference.md §3.6.1).
 //   Total:    the wheel's total vertical force, pressure AND creep forces of all patches (WheelContactReport::
 //             vertical_force_N), as CONTACT, multibody codes and Nadal's criterion do: every load-control
@@ -99,7 +107,7 @@ struct WheelContactOptions {
   // When set, these creepages are used at every patch instead of the wheelset kinematics (then no per-strip rigid
   // slip for the conformal model, and the velocity's forward speed need not be > 0).
   bool creepages_given = false;
-  Creepages creepages;                 // xi, eta (-), phi (1/m); finite; read only with creepages_given
+  Creepages creepages;                 // xi, eta (-), phi (1/m); finite, |.| <= kMaxGivenCreepage; read only with creepages_given
   // Load control: what is balanced against vertical_load_N (see LoadBalance); default total. With Total or
   // TotalConsistent (and solve_tangential) the normal problem depends on the velocity and the tangential options too.
   LoadBalance load_balance = LoadBalance::Total;

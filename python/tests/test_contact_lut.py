@@ -64,3 +64,13 @@ def test_file_is_self_describing(table):
         assert (units.decode() if isinstance(units, bytes) else units) == "N"
         offsets = f["left/node_patch_offset"][:]
         assert len(offsets) == 9 * 2 * 2 + 1 and offsets[-1] == len(f["left/fn_N"])
+
+
+def test_another_wheel_is_refused(table, shared_data):
+    """The table records the geometry it was built for (docs/physics-reference.md §17.1): a track with another wheel
+    profile and the same nominal radius is refused, not answered with the table's S1002 forces."""
+    lut = conforma.ContactLut(table)
+    worn = str(shared_data / "profiles/contact/testbank/profiles/Car7358_0001r.whl")
+    with pytest.raises(conforma.InputError, match="another geometry"):
+        lut.evaluate(conforma.Track(wheel=worn), "left", 0.7e-3, 1e-3, load_N=50e3)
+    assert lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, load_N=50e3)["status"] == "ok"

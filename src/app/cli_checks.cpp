@@ -1,6 +1,7 @@
 // Checks made before computing (cli_checks.hpp).
 #include "cli_checks.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -55,6 +56,16 @@ std::vector<std::string> ParseWearModelList(const std::string& list, const std::
   if (names.empty()) throw InputError("option " + option + ": no contact model given (usable: " + WearContactModelNames() + ")");
   for (const std::string& n : names) ParseWearModel(n, option);
   return names;
+}
+
+void CheckRunLimits(bool steps_given, int steps, bool km_given, double km) {
+  if (steps_given && steps < 0)
+    throw InputError("option --steps must be >= 0 (omit it for the scenario's), got " + std::to_string(steps));
+  if (km_given && !(std::isfinite(km) && km >= 0.0)) {
+    char text[160];
+    std::snprintf(text, sizeof text, "option --km must be finite and >= 0 (omit it for the scenario's), got %g", km);
+    throw InputError(text);
+  }
 }
 
 std::string WearModelHelp(const std::string& what) { return what + " (" + WearContactModelNames() + ")"; }

@@ -18,6 +18,10 @@ void RequirePlotPython(const std::string& python, const std::string& option);
 ContactModel ParseWearModel(const std::string& name, const std::string& option);
 // A comma-separated list of such models (at least one); the names as given.
 std::vector<std::string> ParseWearModelList(const std::string& list, const std::string& option);
+// A wear run's optional limits as given on the command line (`given`: the option was used): --steps a whole number
+// >= 0, --km finite and >= 0; InputError naming the option otherwise (a negative or NaN value meant "the
+// scenario's" silently before).
+void CheckRunLimits(bool steps_given, int steps, bool km_given, double km);
 // Help text of a wear run's --model(s) option: "<what> (hertz, kp, kpec, conformal, auto)".
 std::string WearModelHelp(const std::string& what);
 

@@ -1,4 +1,5 @@
 // conforma contact: the contact of one wheelset pose (both wheels or one), any model, table or JSON.
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
@@ -29,13 +30,21 @@ struct ContactCommand {
     options.keep_fields = fields.enabled();
     require_finite(y_mm, "--y-mm");
     require_finite(yaw_mrad, "--yaw-mrad");
+    require_finite(approach_mm, "--approach-mm");
     if (xi || eta || phi_per_m) {
       options.creepages_given = true;
       options.creepages = {xi.value_or(0.0), eta.value_or(0.0), phi_per_m.value_or(0.0)};
     }
     // vertical position and roll: rigid contact of both wheels unless the roll is given
     const EquilibriumResult eq = geometry->SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3);
-    if (eq.status == EquilibriumStatus::NoContact) throw InputError("no rigid contact at --y-mm " + std::to_string(y_mm));
+    if (eq.status == EquilibriumStatus::NoContact) {
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "no rigid contact of the wheelset at --y-mm %.6g, --yaw-mrad %.6g: the wheels do not reach the "
+                    "rails (check the lateral shift and yaw, the gauge and flange-back distance, and the profiles)",
+                    y_mm, yaw_mrad);
+      throw InputError(text);
+    }
     WheelsetPose pose = eq.pose;
     if (roll_mrad) {
       require_finite(*roll_mrad, "--roll-mrad");

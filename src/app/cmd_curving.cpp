@@ -11,6 +11,7 @@
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "exit_status.hpp"
 #include "progress.hpp"
 #include "conforma/dynamic_kinematics.hpp"
 #include "conforma/error.hpp"
@@ -22,7 +23,9 @@ namespace conforma::cli {
 
 namespace {
 
-void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const KinematicsSeries& s, ContactModel model) {
+// Returns how many loaded wheels' contacts are not ok (no contact or not converged).
+int PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const KinematicsSeries& s, ContactModel model) {
+  int failed = 0;
   WheelContactOptions o;
   o.model = model;
   ApplyScenarioContact(sc, &o);
@@ -34,6 +37,7 @@ void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const Kine
     for (Side side : {Side::Left, Side::Right}) {
       o.vertical_load_N = k.vertical_load_N[side_index(side)];
       const WheelContactReport r = SolveWheelContact(g, side, k.pose, k.velocity, o);
+      if (o.vertical_load_N > 0.0 && r.status != WheelContactStatus::Ok) ++failed;
       std::printf("      %s Q %7.0f N  %s  %zu patches  Y %+8.0f N\n", side == Side::Left ? "L" : "R", o.vertical_load_N,
                   to_string(r.status), r.patches.size(), r.lateral_force_N);
       for (const PatchReport& p : r.patches)
@@ -43,10 +47,12 @@ void PrintSamples(const Scenario& sc, const WheelsetTrackGeometry& g, const Kine
                     p.pmax_Pa * 1e-6, p.xi, p.eta, p.phi_per_m, p.frictional_power_W);
     }
   }
+  return failed;
 }
 
-// The quasi-static solve with the options the wear loop uses (MakeScenarioKinematics), before any fallback.
-void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackClass& tc, ContactModel model) {
+// The quasi-static solve with the options the wear loop uses (MakeScenarioKinematics), before any fallback; true
+// when it converged.
+bool PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const TrackClass& tc, ContactModel model) {
   const QuasiStaticResult r = SolveQuasiStaticCurving(sc.vehicle, g, tc, ScenarioQuasiStaticOptions(sc, model));
   const double c = TrackClassCurvature(tc);
   std::printf("  equilibrium %s, a_nc %.3f m/s^2, flange-contact shift %+.3f mm\n", to_string(r.status),
@@ -65,6 +71,7 @@ void PrintEquilibrium(const Scenario& sc, const WheelsetTrackGeometry& g, const 
     std::printf("    ws %d: y %+7.3f mm psi %+7.3f mrad  Y/Q L %+.2f R %+.2f  max angle L %.0f R %.0f deg\n", w.wheelset,
                 w.pose.lateral_m * 1e3, w.pose.yaw_rad * 1e3, w.wheel[0].y_over_q, w.wheel[1].y_over_q,
                 w.wheel[0].max_contact_angle_rad * 180.0 / M_PI, w.wheel[1].max_contact_angle_rad * 180.0 / M_PI);
+  return r.status == QuasiStaticStatus::Converged;
 }
 
 // The dynamic provider's samples per wheelset: count, mean, standard deviation and range of y and psi (relative to
@@ -133,6 +140,9 @@ void RegisterCurvingCommand(CLI::App& app) {
     // progress: before each class "k/n class, <class being solved>"; erased before its lines on stdout
     ProgressReporter progress("curving", a->track_class >= 0 ? 1.0 : nc, "class", ProgressModeOf(sub), std::cerr);
     int done = 0;
+    // what makes the result incomplete (exit 5, or 4 for an equilibrium alone): classes that fell back, loaded wheels
+    // whose contact at a sample is not ok, and (--equilibrium) quasi-static solves that did not converge
+    int fallback_classes = 0, failed_contacts = 0, unconverged_equilibria = 0;
     for (int c = 0; c < nc; ++c) {
       if (a->track_class >= 0 && c != a->track_class) continue;
       const TrackClass& tc = sc.classes[c];
@@ -146,14 +156,25 @@ void RegisterCurvingCommand(CLI::App& app) {
       std::printf("class %d %s: R %.0f m, cant %.0f mm, V %.1f km/h, share %.4f, provider %s%s\n", c, tc.name.c_str(),
                   tc.curve_radius_m, tc.cant_m * 1e3, tc.speed_m_s * 3.6, tc.share, to_string(sc.kinematics.provider),
                   fell_back.c_str());
-      if (a->equilibrium && TrackClassCurvature(tc) != 0.0) PrintEquilibrium(sc, g, tc, curving_model);
+      if (!fell_back.empty()) ++fallback_classes;
+      if (a->equilibrium && TrackClassCurvature(tc) != 0.0 && !PrintEquilibrium(sc, g, tc, curving_model))
+        ++unconverged_equilibria;
       if (sc.kinematics.provider == KinematicsProvider::Dynamic) PrintSampleSummary(s);
-      else PrintSamples(sc, g, s, model);
+      else failed_contacts += PrintSamples(sc, g, s, model);
       std::fflush(stdout);  // the class's lines before the next progress line on stderr
       ++done;
     }
     progress.Update(done, "");
     progress.Finish();
+    if (fallback_classes > 0 || failed_contacts > 0) {
+      const std::string what = std::to_string(fallback_classes) + " track class(es) fell back to another provider's "
+                               "kinematics and " + std::to_string(failed_contacts) +
+                               " loaded wheel contact(s) of the samples are not ok (see the lines above)";
+      throw IncompleteResult(ExitCode::PartialResult, "curving: " + what);
+    }
+    if (unconverged_equilibria > 0)
+      throw IncompleteResult(ExitCode::NotConverged, "curving: " + std::to_string(unconverged_equilibria) +
+                                                         " quasi-static equilibrium solve(s) did not converge");
   });
 }
 

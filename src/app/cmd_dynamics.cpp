@@ -114,7 +114,10 @@ void RegisterDynamicsCommand(CLI::App& app) {
       throw InputError(std::string("contact model '") + to_string(model) + "' has no creep forces; usable: " +
                        WearContactModelNames());
     VehicleParameters vehicle = sc.vehicle;
+    if (a->bogies < 0) throw InputError("--bogies must be >= 1 (or omitted: the scenario's), got " +
+                                        std::to_string(a->bogies));
     if (a->bogies > 0) vehicle.bogie_count = a->bogies;
+    vehicle.validate();
     const WheelsetTrackGeometry g(sc.MakeTrackSetup());
     const QuasiStaticOptions qo = ScenarioQuasiStaticOptions(sc, model);
     DynamicsOptions o;
@@ -126,6 +129,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     o.model.cant_base_m = qo.cant_base_m;
     o.model.axle_torque_Nm = qo.axle_torque_Nm;
     if (a->linear || a->eig) {
+      require_positive(a->amplitude_mm, "--amplitude-mm");
       o.model.contact_kind = DynamicsContactKind::Linear;
       o.model.linear = ProfileLinearContact(g, vehicle, sc.material, 1e-3 * a->amplitude_mm, qo.gravity_m_s2);
       std::printf("linear contact: conicity %.4f, contact-angle parameter %.3f, roll coefficient %.4f /m, f11 %.3e N, "
@@ -173,6 +177,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     RigidPoseFunction pose;  // empty: the geometry's rigid solve
     if (!a->lut.empty()) {  // the table checks profiles, model and material against the query at each evaluation
       const auto table = std::make_shared<const ContactLut>(LoadContactLut(a->lut));
+      CheckContactLutGeometry(*table, g);
       LutEvaluationOptions evaluation;
       evaluation.creep_force = ParseLutCreepForce(a->lut_creep);
       contact = MakeLutContactFunction(table, evaluation);

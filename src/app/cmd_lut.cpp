@@ -169,6 +169,7 @@ void RegisterLutCommand(CLI::App& app) {
     sub->callback([e]() {
       const ContactLut table = LoadContactLut(e->file);
       const auto geometry = e->args.track.make_geometry();
+      CheckContactLutGeometry(table, *geometry);
       const WheelContactOptions options = e->args.options();
       require_finite(e->y_mm, "--y-mm");
       require_finite(e->yaw_mrad, "--yaw-mrad");
@@ -242,6 +243,7 @@ void RegisterLutCommand(CLI::App& app) {
       }
       const ContactLut table = LoadContactLut(c->file);
       const auto geometry = c->args.track.make_geometry();
+      CheckContactLutGeometry(table, *geometry);
       ContactLutCheckOptions o = c->o;
       o.contact = c->args.options();
       o.evaluation.creep_force = ParseLutCreepForce(c->creep);

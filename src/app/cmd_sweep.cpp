@@ -27,6 +27,14 @@ struct SweepCommand {
     require_positive(step_mm, "--step-mm");
     if (SplitCommaList(models).empty()) throw InputError("option --models: no contact model given");
     if (to_mm < from_mm) throw InputError("option --to-mm must be >= --from-mm");
+    // at most 100,000 poses (a sweep of 1e-9 mm steps asked for 1.8e10 and ran until killed)
+    constexpr double kMaxSweepPoses = 1e5;
+    if ((to_mm - from_mm) / step_mm + 1.0 > kMaxSweepPoses) {
+      char text[200];
+      std::snprintf(text, sizeof text, "--from-mm .. --to-mm by --step-mm gives %.6g poses, more than %.0f",
+                    (to_mm - from_mm) / step_mm + 1.0, kMaxSweepPoses);
+      throw InputError(text);
+    }
     const auto geometry = track.make_geometry();
     std::vector<std::string> names;
     std::vector<WheelContactOptions> model_options;  // built and validated once per model

@@ -334,6 +334,7 @@ void RegisterValidateCommand(CLI::App& app) {
   sub->add_option("--python", a->python, kPythonHelp);
   sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
   sub->callback([a, sub]() {
+    CheckRunLimits(sub->count("--steps") > 0, a->steps, sub->count("--km") > 0, a->km);
     const Scenario sc = LoadScenario(a->scenario);
     const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
     if (a->measured.empty() && a->measured_profiles.empty())

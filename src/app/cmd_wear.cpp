@@ -36,6 +36,7 @@ void RegisterWearCommand(CLI::App& app) {
   sub->add_option("--python", a->python, std::string(kPythonHelp) + "; only for the rail plots of rail steps");
   sub->add_flag("!--no-plot", a->plot, "no rail plots with rail steps (no python needed)");
   sub->callback([a, sub]() {
+    CheckRunLimits(sub->count("--steps") > 0, a->steps, sub->count("--km") > 0, a->km);
     const Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
     const bool rail_steps = !sc.rail_steps.fixed;
     const std::string python = PythonOr(a->python);
@@ -50,8 +51,11 @@ void RegisterWearCommand(CLI::App& app) {
     double wall = 0.0;
     const WearSimulationResult r = RunWearWithOutput(sc, o, a->out, label, total, &wall, ProgressModeOf(sub));
     const double km = r.steps.empty() ? 0.0 : r.steps.back().km;
-    std::printf("%s: model %s, %zu steps, %.1f km, status %s, %.1f s -> %s/steps.csv\n", sc.name.c_str(), label.c_str(),
-                r.steps.size(), km, to_string(r.status), wall, a->out.c_str());
+    // a run that completed its steps but lost wheel contacts is incomplete: said on the status line too
+    const std::string incomplete = IncompleteReason(r);
+    std::printf("%s: model %s, %zu steps, %.1f km, status %s%s, %.1f s -> %s/steps.csv\n", sc.name.c_str(),
+                label.c_str(), r.steps.size(), km, to_string(r.status),
+                incomplete.empty() ? "" : (" (INCOMPLETE: " + incomplete + ")").c_str(), wall, a->out.c_str());
     if (!r.message.empty()) std::printf("  %s\n", r.message.c_str());
     PrintRunWarnings(label, r);
     bool plots_ok = true;

@@ -37,24 +37,6 @@ struct LutRefusals {
   bool only_outside() const { return !other && (outside_lateral_abs_m > 0.0 || outside_yaw_abs_rad > 0.0); }
 };
 
-// Every profile sample of both sides, the nominal radii and the mounting: equal keys, equal geometry.
-std::vector<double> GeometryKey(const WheelsetTrackGeometry& g) {
-  const TrackSetup& s = g.setup();
-  std::vector<double> k{s.gauge_m, s.gauge_height_m, s.flange_back_distance_m, s.flange_back_position_m,
-                        s.nominal_radius_m[0], s.nominal_radius_m[1], s.rail_inclination_rad, s.roller_radius_m[0],
-                        s.roller_radius_m[1]};
-  for (const std::array<Profile, 2>* pair : {&s.wheel, &s.rail})
-    for (const Profile& p : *pair) {
-      k.push_back(static_cast<double>(p.sample_count()));
-      for (size_t i = 0; i < p.sample_count(); ++i) {
-        const Eigen::Vector2d q = p.sample_at(i);
-        k.push_back(q.x());
-        k.push_back(q.y());
-      }
-    }
-  return k;
-}
-
 // Every force, position and angle of the wheel's patches and sums finite.
 bool FiniteReport(const WheelContactReport& r) {
   for (const PatchReport& p : r.patches)
@@ -220,7 +202,7 @@ DynamicClassKinematics SimulateClassKinematicsCoveringLut(const Scenario& sc, co
 
 std::shared_ptr<const ContactLut> DynamicKinematicsLutCache::get(const Scenario& sc, const WheelsetTrackGeometry& g,
                                                                  ContactModel model, bool* built) {
-  std::vector<double> key = GeometryKey(g);
+  std::vector<double> key = GeometryFingerprint(g);  // equal keys, equal geometry
   std::lock_guard<std::mutex> lock(mutex_);
   if (built) *built = false;
   if (!table_ || key != key_) {

@@ -35,6 +35,14 @@ void DynamicsOptions::validate() const {
   model.validate();
   require_positive(duration_s, "duration_s");
   require_positive(output_interval_s, "output_interval_s");
+  // the history is kept in memory: 1e7 rows (~1 GB with a two-bogie vehicle) at the most
+  if (duration_s / output_interval_s > kMaxHistoryRows) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "duration_s / output_interval_s = %.6g history rows, more than %.0f: give a longer output interval",
+                  duration_s / output_interval_s, kMaxHistoryRows);
+    throw InputError(text);
+  }
   require_positive(absolute_tolerance, "absolute_tolerance");
   require_positive(relative_tolerance, "relative_tolerance");
   require_positive(initial_step_s, "initial_step_s");

@@ -271,6 +271,7 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
     h.rail_origin_eta_m[side_index(s)] = geometry.rail_origin_eta_m(s);
     h.nominal_radius_m[side_index(s)] = geometry.setup().nominal_radius_m[side_index(s)];
   }
+  h.geometry_digest = ContactLutGeometryDigest(geometry);
   const ContactLutGrid& g = lut.grid;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   h.threads = threads;

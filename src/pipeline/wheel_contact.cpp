@@ -7,6 +7,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <string>
+#include <utility>
 
 #include "conforma/error.hpp"
 #include "wheel_contact_key.hpp"
@@ -70,7 +72,9 @@ void WheelContactOptions::validate() const {
   require_positive(candidate_strip_width_m, "candidate_strip_width_m");
   require_non_negative(patch_combine_distance_m, "patch_combine_distance_m");
   require_finite(conformity_threshold_deg, "conformity_threshold_deg");
-  if (fastsim_elements < 2) throw InputError("option 'fastsim_elements' must be >= 2");
+  if (fastsim_elements < 2 || fastsim_elements > kMaxFastsimElements)
+    throw InputError("option 'fastsim_elements' must lie in [2, " + std::to_string(kMaxFastsimElements) + "], got " +
+                     std::to_string(fastsim_elements));
   if (kp_strips < 3) throw InputError("option 'kp_strips' must be >= 3");
   require_positive(exact_element_size_m, "exact_element_size_m");
   if (exact_max_elements < 1) throw InputError("option 'exact_max_elements' must be >= 1");
@@ -79,6 +83,16 @@ void WheelContactOptions::validate() const {
     require_finite(creepages.longitudinal, "creepages.xi");
     require_finite(creepages.lateral, "creepages.eta");
     require_finite(creepages.spin_per_m, "creepages.phi_per_m");
+    const std::pair<double, const char*> given[] = {{creepages.longitudinal, "creepages.xi"},
+                                                    {creepages.lateral, "creepages.eta"},
+                                                    {creepages.spin_per_m, "creepages.phi_per_m"}};
+    for (const auto& [value, name] : given)
+      if (std::fabs(value) > kMaxGivenCreepage) {
+        char text[200];
+        std::snprintf(text, sizeof text, "%s = %.6g is beyond +-%g: not a creepage (full slip sets in far below)",
+                      name, value, kMaxGivenCreepage);
+        throw InputError(text);
+      }
   }
 }
 

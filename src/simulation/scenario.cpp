@@ -169,8 +169,11 @@ void ParseVehicle(const Reader& r, const YAML::Node& n, VehicleParameters* v) {
       {"secondary_lateral_stiffness_N_m", &v->secondary_lateral_stiffness_N_m},
       {"load_transfer_height_m", &v->load_transfer_height_m},
       {"contact_half_distance_m", &v->contact_half_distance_m}};
+  std::set<std::string> seen;
   for (const auto& kv : n) {
     const std::string key = kv.first.as<std::string>();
+    if (!seen.insert(key).second)
+      r.fail("vehicle", "key '" + key + "' is given twice (line " + std::to_string(kv.first.Mark().line + 1) + ")");
     if (key == "base") continue;
     if (key == "name") {
       v->name = r.text(kv.second, "vehicle.name");

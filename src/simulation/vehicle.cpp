@@ -9,7 +9,9 @@ void VehicleParameters::validate() const {
   require_positive(wheelset_mass_kg, "wheelset_mass_kg");
   require_non_negative(bogie_frame_mass_kg, "bogie_frame_mass_kg");
   require_non_negative(carbody_mass_per_bogie_kg, "carbody_mass_per_bogie_kg");
-  if (bogie_count < 1) throw InputError("vehicle field 'bogie_count' must be >= 1 (got " + std::to_string(bogie_count) + ")");
+  if (bogie_count < 1 || bogie_count > kMaxBogieCount)
+    throw InputError("vehicle field 'bogie_count' must lie in [1, " + std::to_string(kMaxBogieCount) + "] (got " +
+                     std::to_string(bogie_count) + ")");
   if (bogie_count > 1) require_positive(bogie_centre_distance_m, "bogie_centre_distance_m");
   else require_non_negative(bogie_centre_distance_m, "bogie_centre_distance_m");
   require_positive(wheelbase_m, "wheelbase_m");

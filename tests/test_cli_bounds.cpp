@@ -1,0 +1,128 @@
+// test-links: app
+// Input the executable refuses up front, and results it does not pass off as complete (session 24's fuzzing of the
+// command line): values beyond what the arithmetic or the memory can take are input errors (exit 2) naming the
+// option; a damaged or foreign contact table is an error, never a crash or another geometry's numbers; a curving run
+// that fell back is incomplete (exit 5).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using conforma::test::RunCli;
+
+const std::string kScenario = std::string(CONFORMA_SOURCE_DIR) + "/scenarios/default_metro.yaml";
+
+void ExpectInputError(const std::string& args, const std::string& named) {
+  const auto r = RunCli(args);
+  EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.out << r.err;
+  EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << args << ": " << r.err;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << args << ": " << r.out;
+}
+
+// A key given twice in a scenario: YAML reads the first value, so the second was silently ignored.
+TEST(CliBounds, ScenarioKeyGivenTwiceIsAnInputError) {
+  const fs::path dir = conforma::test::FreshTempDir("conforma_bounds", "dup");
+  const fs::path file = dir / "dup.yaml";
+  std::ofstream(file) << conforma::test::Slurp(kScenario) << "\nfriction: 0.5\n";
+  ExpectInputError("curving --class 0 --scenario '" + file.string() + "'", "given twice");
+  fs::remove_all(dir);
+}
+
+// A creepage of 1e300 gave F_x = NaN with exit 0, 1e155 gave F_x = 0 (its square overflows).
+TEST(CliBounds, HugeGivenCreepagesAreInputErrors) {
+  ExpectInputError("contact --xi 1e300", "creepages.xi");
+  ExpectInputError("contact --xi 1e155 --side left", "creepages.xi");
+  ExpectInputError("contact --eta -1e300", "creepages.eta");
+  ExpectInputError("contact --phi-per-m 1e300", "creepages.phi_per_m");
+  // the bound is far beyond full slip: 1e3 still solves, saturated at mu N
+  const auto r = RunCli("contact --xi 1000 --side left --json");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.find("null"), std::string::npos) << r.out;
+}
+
+// Sizes that ran out of memory or for hours: refused before computing.
+TEST(CliBounds, WorkBeyondTheLimitsIsRefusedUpFront) {
+  ExpectInputError("contact --grid 100000000", "fastsim_elements");
+  ExpectInputError("sweep --step-mm 1e-9", "poses");
+  ExpectInputError("dynamics --scenario '" + kScenario + "' --duration 0.05 --bogies 2000000000", "bogie_count");
+  ExpectInputError("dynamics --scenario '" + kScenario + "' --duration 0.3 --bogies 1000", "bogie_count");
+  ExpectInputError("dynamics --scenario '" + kScenario + "' --duration 0.3 --output-interval 1e-9", "output interval");
+  ExpectInputError("dynamics --scenario '" + kScenario + "' --bogies -1 --duration 0.01", "--bogies");
+}
+
+// NaN and out-of-range values that silently meant something else.
+TEST(CliBounds, MalformedValuesAreNotReinterpreted) {
+  ExpectInputError("contact --load-N -1 --approach-mm nan", "--approach-mm");
+  ExpectInputError("dynamics --scenario '" + kScenario + "' --eig --amplitude-mm 0", "--amplitude-mm");
+  const fs::path out = conforma::test::FreshTempDir("conforma_bounds", "wear");
+  ExpectInputError("wear --scenario '" + kScenario + "' --steps 1 --km nan --out '" + out.string() + "'", "--km");
+  ExpectInputError("wear --scenario '" + kScenario + "' --steps 1 --km -5 --out '" + out.string() + "'", "--km");
+  ExpectInputError("wear --scenario '" + kScenario + "' --steps -5 --out '" + out.string() + "'", "--steps");
+  fs::remove_all(out);
+  // the message names the pose, not a 300-digit number
+  const auto r = RunCli("contact --y-mm 1e300");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_LT(r.err.size(), 400u) << r.err;
+}
+
+// The tangent class's kinematic oscillation of 100 mm leaves the rails: the class falls back and its samples lose
+// contact; that is an incomplete result (exit 5), shown in the output, 0 with --allow-partial.
+TEST(CliBounds, CurvingThatFellBackIsIncomplete) {
+  const std::string args =
+      "curving --scenario '" + kScenario + "' --class 0 --set kinematics.tangent_amplitude_mm=100";
+  const auto r = RunCli(args);
+  EXPECT_EQ(r.exit_code, 5) << r.out << r.err;
+  EXPECT_NE(r.out.find("fell back"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("fell back"), std::string::npos) << r.err;
+  EXPECT_EQ(RunCli("--allow-partial " + args).exit_code, 0);
+  EXPECT_EQ(RunCli("curving --scenario '" + kScenario + "' --class 0").exit_code, 0);
+}
+
+// A table names the geometry it was built for: evaluated with another wheel it is refused, not read as that wheel's.
+// Damaged bytes anywhere in the file give an error or the undamaged answer, never a crash (the file format has
+// checksums on its object headers and data: a one-byte change in a dataset header segfaulted inside libhdf5 before).
+TEST(CliBounds, ContactTableOfAnotherGeometryOrDamagedIsAnError) {
+  const fs::path dir = conforma::test::FreshTempDir("conforma_bounds", "lut");
+  const std::string table = (dir / "t.h5").string();
+  ASSERT_EQ(RunCli("lut build --out '" + table + "' --y-mm -2:2:1 --yaw-mrad -1,1 --load-kN 40,60 --threads 1").exit_code,
+            0);
+  const std::string query = " --load-N 50000 --y-mm 0.5 --yaw-mrad 0.3";
+  const auto same = RunCli("lut eval '" + table + "'" + query);
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  const auto other = RunCli("lut eval '" + table + "'" + query + " --wheel '" +
+                            conforma::test::SharedData("profiles/contact/testbank/profiles/Car7358_0001r.whl") + "'");
+  EXPECT_EQ(other.exit_code, 2) << other.out << other.err;
+  EXPECT_NE(other.err.find("built for another geometry"), std::string::npos) << other.err;
+
+  std::ifstream in(table, std::ios::binary);
+  const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 1000u);
+  const std::string damaged = (dir / "damaged.h5").string();
+  int errors = 0, runs = 0;
+  for (size_t at = 0; at < bytes.size(); at += bytes.size() / 60 + 1, ++runs) {
+    std::vector<char> copy = bytes;
+    copy[at] = static_cast<char>(copy[at] ^ 0x5a);
+    std::ofstream(damaged, std::ios::binary).write(copy.data(), static_cast<std::streamsize>(copy.size()));
+    const auto r = RunCli("lut eval '" + damaged + "'" + query);
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 2) << "byte " << at << ": exit " << r.exit_code << "\n" << r.err;
+    if (r.exit_code == 0) {  // (the first line names the file)
+      EXPECT_EQ(r.out.substr(r.out.find('\n')), same.out.substr(same.out.find('\n')))
+          << "byte " << at << " changed the answer without an error";
+    }
+    errors += r.exit_code == 2;
+  }
+  // (14 of the 61 bytes changed are read and found; the others lie where nothing is read: padding, free space)
+  EXPECT_GT(errors, 0) << "of " << runs << " damaged bytes none was found";
+  fs::remove_all(dir);
+}
+
+}  // namespace
