@@ -28,6 +28,32 @@ void ExpectInputError(const std::string& args, const std::string& named) {
   EXPECT_EQ(r.out.find("nan"), std::string::npos) << args << ": " << r.out;
 }
 
+// A wheelset pushed past flange contact onto the flange tip: the warning says so, instead of advising a z shift of
+// the (correct) profile; a bad speed is an error before any table header is printed.
+TEST(CliBounds, DerailedWheelsetIsNamedAndBadSpeedIsRefusedFirst) {
+  const auto r = RunCli("contact --y-mm 30 --side left");
+  EXPECT_NE(r.err.find("beyond flange contact"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--wheel-z-shift-mm"), std::string::npos) << r.err;
+  for (const char* speed : {"0", "-2", "nan"}) {
+    const auto s = RunCli(std::string("contact --speed ") + speed);
+    EXPECT_EQ(s.exit_code, 2) << speed << ": " << s.err;
+    EXPECT_NE(s.err.find("--speed"), std::string::npos) << s.err;
+    EXPECT_EQ(s.out, "") << speed;
+  }
+}
+
+// A profile in mm read as metres: named as a unit mistake, not as a too coarse profile.
+TEST(CliBounds, ProfileInTheWrongUnitIsNamedAsSuch) {
+  const fs::path dir = conforma::test::FreshTempDir("conforma_bounds", "units");
+  const fs::path file = dir / "wheel_mm.txt";
+  {
+    std::ofstream f(file);
+    for (int i = 0; i <= 130; ++i) f << -70.0 + i << " " << 0.001 * (i - 70) * (i - 70) << "\n";
+  }
+  ExpectInputError("contact --wheel '" + file.string() + "' --wheel-units m", "wrong length unit");
+  fs::remove_all(dir);
+}
+
 // A key given twice in a scenario: YAML reads the first value, so the second was silently ignored.
 TEST(CliBounds, ScenarioKeyGivenTwiceIsAnInputError) {
   const fs::path dir = conforma::test::FreshTempDir("conforma_bounds", "dup");

@@ -7,7 +7,9 @@
 //   nominal_radius        a patch on the tread (|contact angle| <= kTreadContactAngleRad) whose rolling radius
 //                         r0 + z_wheel(y_c) is more than kMaxTreadRadiusOffsetM from the nominal radius r0: the
 //                         wheel profile's z origin is not at the taping line (profile.hpp), so the axle, rolling at
-//                         V / r0, slips by xi ~ -(r - r0) / r0 under nominally pure rolling
+//                         V / r0, slips by xi ~ -(r - r0) / r0 under nominally pure rolling; or, when the profile's
+//                         height at y = 0 is within kMaxTreadRadiusOffsetM of 0, the patch lies on the flange tip or
+//                         back (the wheelset is beyond flange contact), and the message says that instead
 //   friction_coefficient  mu (the constant one, or the static value mu(0) and the sliding limit of a friction law)
 //                         outside [kMinPlausibleFriction, kMaxPlausibleFriction]
 //   pressure_limit        a patch's maximum pressure above kMaxPlausiblePressurePa

@@ -193,6 +193,7 @@ FrictionLaw ContactArgs::friction_law_from_options() const {
 }
 
 WheelContactOptions ContactArgs::options() const {
+  require_positive(speed_m_s, "--speed");  // (before any output: the creepages divide by it)
   WheelContactOptions o;
   o.model = ParseContactModel(model);
   o.vertical_load_N = load_N;

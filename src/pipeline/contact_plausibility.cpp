@@ -64,16 +64,31 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
     // rolling radius on the tread: r = r0 + z_wheel(y_c) (profile.hpp: wheel z above the taping line)
     const double offset = p.rolling_radius_m - r0;
     if (std::fabs(p.contact_angle_rad) <= kTreadContactAngleRad && std::fabs(offset) > kMaxTreadRadiusOffsetM) {
-      const std::string creepage =
-          options.creepages_given ? "" : Format("; the axle rolling at V / r0 gives xi = %.4f here", p.xi);
-      out.push_back(Format(
-          "nominal_radius: patch %zu is on the tread (contact angle %.1f deg) at wheel-profile y = %.1f mm, where "
-          "the rolling radius r0 + z_wheel = %.1f mm is %+.1f mm from the nominal radius r0 = %.1f mm (limit "
-          "%.0f mm): the wheel profile's z origin is not at the taping line (z_wheel = %+.1f mm on the tread)%s. "
-          "Shift the wheel profile's z by %+.1f mm so that z = 0 at the taping line (--wheel-z-shift-mm) and give the wheel's taping-line radius as the "
-          "nominal radius (--r0-mm); --r0-mm alone does not help, the rolling radius is r0 + z_wheel",
-          j, p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, p.rolling_radius_m * 1e3, offset * 1e3,
-          r0 * 1e3, kMaxTreadRadiusOffsetM * 1e3, offset * 1e3, creepage.c_str(), -offset * 1e3));
+      // the profile's height at the taping line (y = 0): near 0 when its z origin is right; then a flat patch this
+      // far from r0 lies off the tread (flange tip or back: the wheelset has run past flange contact), and a z shift
+      // would be the wrong advice (fuzzing, session 24: y = 30 mm)
+      double z_taping = 0.0;
+      if (geometry.WheelProfileAt(report.side, 0.0, &z_taping, nullptr, nullptr) &&
+          std::fabs(z_taping) <= kMaxTreadRadiusOffsetM) {
+        out.push_back(Format(
+            "nominal_radius: patch %zu is flat (contact angle %.1f deg) but at wheel-profile y = %.1f mm, %.1f mm "
+            "above the taping line (rolling radius %.1f mm, r0 = %.1f mm): it lies off the tread, on the flange tip "
+            "or back, while the profile's z origin is at the taping line (z = %+.1f mm at y = 0): the wheelset is "
+            "beyond flange contact (lateral shift or yaw too large: derailed)",
+            j, p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, offset * 1e3, p.rolling_radius_m * 1e3,
+            r0 * 1e3, z_taping * 1e3));
+      } else {
+        const std::string creepage =
+            options.creepages_given ? "" : Format("; the axle rolling at V / r0 gives xi = %.4f here", p.xi);
+        out.push_back(Format(
+            "nominal_radius: patch %zu is on the tread (contact angle %.1f deg) at wheel-profile y = %.1f mm, where "
+            "the rolling radius r0 + z_wheel = %.1f mm is %+.1f mm from the nominal radius r0 = %.1f mm (limit "
+            "%.0f mm): the wheel profile's z origin is not at the taping line (z_wheel = %+.1f mm on the tread)%s. "
+            "Shift the wheel profile's z by %+.1f mm so that z = 0 at the taping line (--wheel-z-shift-mm) and give the wheel's taping-line radius as the "
+            "nominal radius (--r0-mm); --r0-mm alone does not help, the rolling radius is r0 + z_wheel",
+            j, p.contact_angle_rad * 180.0 / M_PI, p.y_contact_wheel_m * 1e3, p.rolling_radius_m * 1e3, offset * 1e3,
+            r0 * 1e3, kMaxTreadRadiusOffsetM * 1e3, offset * 1e3, creepage.c_str(), -offset * 1e3));
+      }
     }
     if (p.pmax_Pa > kMaxPlausiblePressurePa)
       out.push_back(Format("pressure_limit: patch %zu has a maximum pressure of %.0f MPa, above %.0f MPa (4 x the "
