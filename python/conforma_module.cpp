@@ -253,7 +253,7 @@ py::dict LutEvaluate(const ContactLut& lut, const Track& track, const std::strin
   // the table's geometry (contact_lut.hpp): another wheel or rail is refused, not answered from the table
   if (!lut.header.geometry_digest.empty()) {
     if (track.lut_digest.empty()) track.lut_digest = ContactLutGeometryDigest(*track.geometry);
-    if (track.lut_digest != lut.header.geometry_digest) CheckContactLutGeometry(lut, *track.geometry);
+    CheckContactLutGeometryDigest(lut, track.lut_digest);
   }
   WheelContactReport r;
   {

@@ -156,6 +156,9 @@ std::string ContactLutGeometryDigest(const WheelsetTrackGeometry& geometry);
 // a geometry is checked once with this (CLI lut eval / check, dynamics --lut, the C API's
 // conforma_model_create_with_lut, Python's ContactLut.evaluate).
 void CheckContactLutGeometry(const ContactLut& lut, const WheelsetTrackGeometry& geometry);
+// The same check against a geometry's ContactLutGeometryDigest computed beforehand (a caller that evaluates one
+// geometry against tables many times hashes it once).
+void CheckContactLutGeometryDigest(const ContactLut& lut, const std::string& geometry_digest);
 
 struct ContactLutBuildOptions {
   ContactLutGrid grid;  // the axes (ContactLutGrid::validate)

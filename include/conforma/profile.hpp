@@ -22,6 +22,10 @@
 
 namespace conforma {
 
+// A wheel or rail cross-section is a few hundred mm at most: a profile point farther than this from the origin is a
+// length-unit or data error (Profile::FromPoints, and the file readers' checks before any other).
+constexpr double kMaxProfileCoordinate_m = 10.0;
+
 // Wheel: z is the radial height above the taping line; Rail: z is up from the rail top (coordinates above).
 enum class ProfileKind { Wheel, Rail };
 const char* to_string(ProfileKind kind);  // "wheel", "rail"

@@ -22,13 +22,18 @@ std::string ContactLutGeometryDigest(const WheelsetTrackGeometry& geometry) {
   return text;
 }
 
-void CheckContactLutGeometry(const ContactLut& lut, const WheelsetTrackGeometry& geometry) {
+void CheckContactLutGeometryDigest(const ContactLut& lut, const std::string& geometry_digest) {
   const ContactLutHeader& h = lut.header;
   if (h.geometry_digest.empty()) return;  // a table written before the digest was recorded
-  if (ContactLutGeometryDigest(geometry) != h.geometry_digest)
+  if (geometry_digest != h.geometry_digest)
     throw InputError("contact LUT: the table was built for another geometry (wheel '" + h.wheel_profile + "' on rail '" +
                      h.rail_profile + "', " + h.track + "): the profiles or the mounting given differ (digest " +
-                     ContactLutGeometryDigest(geometry) + ", table " + h.geometry_digest + ")");
+                     geometry_digest + ", table " + h.geometry_digest + ")");
+}
+
+void CheckContactLutGeometry(const ContactLut& lut, const WheelsetTrackGeometry& geometry) {
+  if (lut.header.geometry_digest.empty()) return;  // (no hashing for a table without a digest)
+  CheckContactLutGeometryDigest(lut, ContactLutGeometryDigest(geometry));
 }
 
 }  // namespace conforma

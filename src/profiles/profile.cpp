@@ -98,12 +98,11 @@ Profile Profile::FromPoints(std::vector<Eigen::Vector2d> pts, ProfileKind kind, 
                             const std::string& source) {
   require_positive(options.sample_spacing_m, "sample_spacing_m");
   require_non_negative(options.smoothing_rms_m, "smoothing_rms_m");
-  // A wheel or rail cross-section is a few hundred mm at most; coordinates beyond 10 m are a unit or data error
-  // (e.g. a stray separator inside a number) and would make the resampling allocate without bound.
-  constexpr double kMaxCoordinate_m = 10.0;
+  // Coordinates beyond kMaxProfileCoordinate_m are a unit or data error (e.g. a stray separator inside a number) and
+  // would make the resampling allocate without bound.
   for (size_t i = 0; i < pts.size(); ++i) {
     if (!pts[i].allFinite()) throw InputError(source, 0, "point " + std::to_string(i + 1) + " is not finite");
-    if (pts[i].cwiseAbs().maxCoeff() > kMaxCoordinate_m) {
+    if (pts[i].cwiseAbs().maxCoeff() > kMaxProfileCoordinate_m) {
       std::ostringstream m;
       m << "point " << i + 1 << " (" << pts[i].x() << ", " << pts[i].y()
         << ") m lies more than 10 m from the origin: wrong length unit or a malformed number";

@@ -123,10 +123,10 @@ void check_last_line(const std::string& path, const std::vector<int>& data_lines
 void check_points(ProfilePoints& p, const ProfileReadOptions& options) {
   const auto& pts = p.points_m;
   const size_t n = pts.size();
-  // Coordinates beyond 10 m first (as Profile::FromPoints): a mm file read as metres otherwise met the spacing check
-  // below and was told to "give a finer profile" (fuzzing, session 24)
+  // Coordinates beyond kMaxProfileCoordinate_m first (as Profile::FromPoints): a mm file read as metres otherwise met
+  // the spacing check below and was told to "give a finer profile" (fuzzing, session 24)
   for (size_t i = 0; i < n; ++i)
-    if (pts[i].allFinite() && pts[i].cwiseAbs().maxCoeff() > 10.0)
+    if (pts[i].allFinite() && pts[i].cwiseAbs().maxCoeff() > kMaxProfileCoordinate_m)
       throw InputError(p.source, i < p.lines.size() ? p.lines[i] : 0,
                        "point (" + mm(pts[i].x(), 1) + ", " + mm(pts[i].y(), 1) +
                            ") mm lies more than 10 m from the origin: wrong length unit (the file's or the "
