@@ -5,6 +5,7 @@
 // that fell back is incomplete (exit 5).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "cli_run.hpp"
+#include "conforma/standard_profiles.hpp"
 
 namespace {
 
@@ -149,6 +151,106 @@ TEST(CliBounds, ContactTableOfAnotherGeometryOrDamagedIsAnError) {
   // (14 of the 61 bytes changed are read and found; the others lie where nothing is read: padding, free space)
   EXPECT_GT(errors, 0) << "of " << runs << " damaged bytes none was found";
   fs::remove_all(dir);
+}
+
+// --- session 25: the fuzzing's remaining findings ----------------------------------------------------------------
+
+// S1002 points y z [mm] (taping line at y = 0), y from -65 to 60 mm by 0.5 mm (the flange back's vertical end left out).
+std::vector<std::pair<double, double>> S1002Points() {
+  std::vector<std::pair<double, double>> p;
+  for (int i = 0; i <= 250; ++i) p.emplace_back(-65.0 + 0.5 * i, conforma::S1002Height_mm(-65.0 + 0.5 * i));
+  return p;
+}
+
+void WriteColumns(const fs::path& file, bool swap = false, bool decimal_comma = false) {
+  std::ofstream f(file);
+  for (const auto& [y, z] : S1002Points()) {
+    char line[80];
+    std::snprintf(line, sizeof line, "%.6f %.6f", swap ? z : y, swap ? y : z);
+    std::string text = line;
+    if (decimal_comma)
+      for (char& c : text) c = c == '.' ? ',' : c;
+    f << text << "\n";
+  }
+}
+
+// Profile files that were read as something else: each is named for what is wrong with it.
+TEST(CliBounds, ProfileFileMistakesAreNamed) {
+  const fs::path dir = conforma::test::FreshTempDir("conforma_bounds", "profiles");
+  const fs::path good = dir / "s1002.txt", comma = dir / "comma.txt", swapped = dir / "swapped.txt",
+                 metres = dir / "metres.txt", miniprof = dir / "taping_origin.whl", xy_nan = dir / "xy_nan.whl";
+  WriteColumns(good);
+  WriteColumns(comma, false, true);
+  WriteColumns(swapped, true);
+  {
+    std::ofstream m(metres), w(miniprof), x(xy_nan);
+    w << "Filename=t\nXYPoints=251\nColumnDef=X,Y\n\n";
+    x << "Filename=t\nXYPoints=nan\nColumnDef=X,Y\n\n";
+    for (const auto& [y, z] : S1002Points()) {
+      m << y * 1e-3 << " " << z * 1e-3 << "\n";  // metres, read as mm
+      w << y << " " << z << "\n";                // the taping line at X = 0 instead of the flange back
+      x << y + 70.0 << " " << z << "\n";
+    }
+  }
+  ASSERT_EQ(RunCli("contact --side left --wheel '" + good.string() + "'").exit_code, 0);  // the same points, as columns
+  ExpectInputError("contact --wheel '" + comma.string() + "'", "decimal commas");
+  ExpectInputError("contact --wheel '" + swapped.string() + "'", "columns swapped");
+  ExpectInputError("contact --wheel '" + metres.string() + "'", "wrong length unit");
+  ExpectInputError("contact --wheel '" + miniprof.string() + "'", "flange back at X = 0");
+  ExpectInputError("contact --wheel '" + xy_nan.string() + "'", "XYPoints=nan");
+  ExpectInputError("contact --rail '" + good.string() + "'", "wheel profile");  // a wheel given as the rail
+  ExpectInputError("contact --wheel '" + dir.string() + "'", "is a directory");
+  fs::remove_all(dir);
+}
+
+// Poses, radii and names beyond a wheelset on track, which solved with exit 0 before.
+TEST(CliBounds, PoseAndTrackBeyondARailwayAreRefused) {
+  ExpectInputError("contact --yaw-mrad 1e9", "--yaw-mrad");
+  ExpectInputError("contact --r0-mm 1e-9", "--r0-mm");
+  ExpectInputError("contact --load-N 0", "--load-N 0");
+  ExpectInputError("contact --load-N -1 --approach-mm 1e6", "--approach-mm");
+  ExpectInputError("sweep --models hertz,,kp", "empty name");
+  ExpectInputError("lut build --out x.h5 --y-mm -2:2:1 --yaw-mrad -300,1 --load-kN 40,60", "yaw_rad");
+  const std::string curving = "curving --class 0 --scenario '" + kScenario + "' --set ";
+  ExpectInputError(curving + "profiles.wheel_radius_mm=355500", "wheel_radius_mm");
+  // a copy of the scenario with one value of a track class changed
+  const fs::path dir = conforma::test::FreshTempDir("conforma_bounds", "classes");
+  const std::string text = conforma::test::Slurp(kScenario);
+  auto with = [&](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    const fs::path file = dir / "changed.yaml";
+    std::ofstream(file) << text.substr(0, at) << to << text.substr(at + from.size());
+    return "curving --class 0 --scenario '" + file.string() + "'";
+  };
+  ExpectInputError(with("speed_kmh: 70", "speed_kmh: 1e6"), "speed_kmh = 1e+06");
+  ExpectInputError(with("cant_mm: 90", "cant_mm: 5000"), "cant_mm = 5000");
+  ExpectInputError(with("acceleration_m_s2: 1.0", "acceleration_m_s2: 100"), "adhesion");
+  fs::remove_all(dir);
+  ExpectInputError(curving + "kinematics.tangent_amplitude_mm=1e6", "tangent_amplitude_mm");
+  ExpectInputError(curving + "wear_law=archard", "built-in law is 'usfd'");
+}
+
+// A sweep past the flange onto no rail: every pose is a row naming it, and the run is incomplete (exit 5); the CSV
+// had the header only.
+TEST(CliBounds, SweepPosesWithoutContactAreRowsAndIncomplete) {
+  const auto r = RunCli("sweep --from-mm 1e5 --to-mm 2e5 --step-mm 1e5 --models hertz --csv");
+  EXPECT_EQ(r.exit_code, 5) << r.err;
+  EXPECT_NE(r.out.find("hertz,100000,0,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no_rigid_contact"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("no rigid contact"), std::string::npos) << r.err;
+}
+
+// A wheelset started 50 mm off centre climbs its flange: the run completes, and the summary says that Y/Q passed the
+// flange-climbing limit (it said "completed" with Y/Q 3.1 and nothing else).
+TEST(CliBounds, DynamicsNamesAFlangeClimbingYOverQ) {
+  const auto r = RunCli("dynamics --scenario '" + kScenario + "' --model hertz --duration 0.02 --offset-mm 50 --quiet");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("flange-climbing limits"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("derailment risk"), std::string::npos) << r.err;
+  const auto centred = RunCli("dynamics --scenario '" + kScenario + "' --model hertz --duration 0.02 --quiet");
+  EXPECT_EQ(centred.exit_code, 0) << centred.err;
+  EXPECT_EQ(centred.err.find("derailment risk"), std::string::npos) << centred.err;
 }
 
 }  // namespace

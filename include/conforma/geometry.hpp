@@ -63,13 +63,20 @@ inline double side_sign(Side side) { return side == Side::Left ? 1.0 : -1.0; }
 inline int side_index(Side side) { return static_cast<int>(side); }
 const char* to_string(Side side);  // "left", "right"
 
+// Range of a wheel's taping-line radius accepted by TrackSetup::validate (a 1:10 scaled rig ~46 mm, locomotives ~0.63 m)
+constexpr double kMinWheelRadius_m = 0.02;
+constexpr double kMaxWheelRadius_m = 2.0;
+// Largest wheelset yaw relative to the track a contact entry point accepts (rad; angles of attack reach ~50 mrad on
+// a 20 m tram curve); beyond it the command line and table builds refuse the pose instead of solving it
+constexpr double kMaxWheelsetYaw_rad = 0.2;
+
 // The wheelset and track (see WHEEL / RAIL PLACEMENT above); validate() checks the ranges given.
 struct TrackSetup {
   double gauge_m = 1.435;                    // m, > 0, measured gauge_height_m below the top of the rails
   double gauge_height_m = 0.014;             // m, >= 0: depth below the rail top at which the gauge is measured
   double flange_back_distance_m = 1.360;     // m, > 0: distance between the two wheels' flange backs
   double flange_back_position_m = -0.070;    // wheel-profile y of the flange back, m (S1002: -70 mm)
-  std::array<double, 2> nominal_radius_m{0.46, 0.46};  // [Left, Right], m, > 0: taping-line radius r0
+  std::array<double, 2> nominal_radius_m{0.46, 0.46};  // [Left, Right], m, kMin/kMaxWheelRadius_m: taping-line r0
   // rad, |.| <= 0.2: applied to both (uninclined) rail profiles (0 for profiles already canted); 1:40 = 0.025
   double rail_inclination_rad = 0.0;
   std::array<Profile, 2> wheel;              // [Left, Right], each in the right-side convention; wheel profiles

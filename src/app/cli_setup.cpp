@@ -196,6 +196,9 @@ WheelContactOptions ContactArgs::options() const {
   require_positive(speed_m_s, "--speed");  // (before any output: the creepages divide by it)
   WheelContactOptions o;
   o.model = ParseContactModel(model);
+  if (load_N == 0.0)  // (the library's unloaded wheel: no contact to report; fuzzing, session 24)
+    throw InputError("option --load-N 0: an unloaded wheel has no contact; give a load > 0 N, or a negative value "
+                     "for the pose as given (approach mode, --approach-mm)");
   o.vertical_load_N = load_N;
   o.friction_coefficient = friction;
   o.friction_law = friction_law_from_options();  // constant: friction_coefficient applies
@@ -210,12 +213,15 @@ WheelContactOptions ContactArgs::options() const {
   return o;
 }
 
-std::vector<std::string> SplitCommaList(const std::string& text) {
+std::vector<std::string> SplitCommaList(const std::string& text, const std::string& option) {
   std::vector<std::string> out;
-  std::stringstream ss(text);
+  if (text.empty()) return out;
+  std::stringstream ss(text + ",");  // (a trailing "," is an empty last item)
   std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
+  while (std::getline(ss, item, ',')) {
+    if (item.empty()) throw InputError("option " + option + ": an empty name in the list '" + text + "'");
+    out.push_back(item);
+  }
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli_checks.hpp"
 #include "cli_setup.hpp"
 #include "commands.hpp"
 #include "contact_status.hpp"
@@ -29,8 +30,8 @@ struct ContactCommand {
     fields.check_writable();  // before solving
     options.keep_fields = fields.enabled();
     require_finite(y_mm, "--y-mm");
-    require_finite(yaw_mrad, "--yaw-mrad");
-    require_finite(approach_mm, "--approach-mm");
+    RequireWheelsetYaw(yaw_mrad, "--yaw-mrad");
+    RequireApproach(approach_mm, "--approach-mm");
     if (xi || eta || phi_per_m) {
       options.creepages_given = true;
       options.creepages = {xi.value_or(0.0), eta.value_or(0.0), phi_per_m.value_or(0.0)};

@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "conforma/contact_lut.hpp"
+#include "conforma/contact_plausibility.hpp"
 #include "conforma/contact_lut_io.hpp"
 #include "exit_status.hpp"
 #include "conforma/error.hpp"
@@ -28,6 +29,13 @@
 #include "conforma/wheel_contact.hpp"
 
 namespace conforma::cli {
+
+namespace {
+constexpr double kYqLimitEn14363 = 0.8;             // EN 14363 flange-climbing limit (R >= 250 m)
+constexpr double kNadalFlangeAngle_rad = 70.0 * M_PI / 180.0;  // S1002 flange angle
+// Nadal's limit of Y/Q for flange angle delta and friction mu: (tan delta - mu) / (1 + mu tan delta)
+double NadalLimit(double delta_rad, double mu) { return (std::tan(delta_rad) - mu) / (1.0 + mu * std::tan(delta_rad)); }
+}  // namespace
 
 namespace {
 
@@ -125,6 +133,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
     o.model.start_position_m = a->start;
     o.model.contact = qo.contact;
     o.model.friction_coefficient = a->friction;
+    if (a->friction < kMinPlausibleFriction || a->friction > kMaxPlausibleFriction)  // (as contact's warning, §13)
+      std::fprintf(stderr, "warning: --friction %g is outside the plausible range %g to %g of wheel-rail contact\n",
+                   a->friction, kMinPlausibleFriction, kMaxPlausibleFriction);
     o.model.gravity_m_s2 = qo.gravity_m_s2;
     o.model.cant_base_m = qo.cant_base_m;
     o.model.axle_torque_Nm = qo.axle_torque_Nm;
@@ -219,7 +230,14 @@ void RegisterDynamicsCommand(CLI::App& app) {
     std::printf("  steps %ld (rejected %ld, contact-failure retries %ld), derivatives %ld, Jacobians %ld, contact solves %ld\n",
                 r.steps, r.rejected_steps, r.contact_failure_retries, r.derivative_evaluations, r.jacobian_evaluations,
                 r.contact_evaluations);
-    std::printf("  max Y/Q %.3f\n", r.max_y_over_q);
+    // flange climbing (fuzzing, session 24: --offset-mm 50 reported "completed" with Y/Q 3.1 and nothing else)
+    const double nadal = NadalLimit(kNadalFlangeAngle_rad, o.model.friction_coefficient);
+    std::printf("  max Y/Q %.3f (flange-climbing limits: %.2f EN 14363, %.2f Nadal at 70 deg and mu %.2f)\n",
+                r.max_y_over_q, kYqLimitEn14363, nadal, o.model.friction_coefficient);
+    if (r.max_y_over_q > kYqLimitEn14363)
+      std::fprintf(stderr, "warning: max Y/Q %.3f exceeds the flange-climbing limit %.2f (EN 14363)%s: derailment "
+                   "risk (check the initial --offset-mm against the flangeway clearance)\n", r.max_y_over_q,
+                   kYqLimitEn14363, r.max_y_over_q > nadal ? " and Nadal's" : "");
     if (r.status != DynamicsStatus::Completed)
       throw IncompleteResult(ExitCode::NotConverged, std::string("dynamics ") + to_string(r.status) + ": " + r.message);
   });

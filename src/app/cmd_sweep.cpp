@@ -4,10 +4,12 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli_checks.hpp"
 #include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/error.hpp"
 #include "contact_status.hpp"
+#include "exit_status.hpp"
 #include "report_json.hpp"
 
 namespace conforma::cli {
@@ -25,8 +27,12 @@ struct SweepCommand {
     require_finite(from_mm, "--from-mm");
     require_finite(to_mm, "--to-mm");
     require_positive(step_mm, "--step-mm");
-    if (SplitCommaList(models).empty()) throw InputError("option --models: no contact model given");
+    const std::vector<std::string> names = SplitCommaList(models, "--models");
+    if (names.empty()) throw InputError("option --models: no contact model given");
     if (to_mm < from_mm) throw InputError("option --to-mm must be >= --from-mm");
+    require_finite(yaw_per_y_mrad_per_mm, "--yaw-per-y");
+    RequireWheelsetYaw(yaw_per_y_mrad_per_mm * from_mm, "--yaw-per-y x --from-mm");
+    RequireWheelsetYaw(yaw_per_y_mrad_per_mm * to_mm, "--yaw-per-y x --to-mm");
     // at most 100,000 poses (a sweep of 1e-9 mm steps asked for 1.8e10 and ran until killed)
     constexpr double kMaxSweepPoses = 1e5;
     if ((to_mm - from_mm) / step_mm + 1.0 > kMaxSweepPoses) {
@@ -36,15 +42,11 @@ struct SweepCommand {
       throw InputError(text);
     }
     const auto geometry = track.make_geometry();
-    std::vector<std::string> names;
     std::vector<WheelContactOptions> model_options;  // built and validated once per model
-    std::stringstream ss(models);
-    for (std::string m; std::getline(ss, m, ',');) {
-      if (m.empty()) continue;
+    for (const std::string& m : names) {
       ContactArgs c = contact;
       c.model = m;
       model_options.push_back(c.options());  // InputError for an unknown model
-      names.push_back(m);
     }
     const Side s = side == "right" ? Side::Right : Side::Left;
     const WheelsetVelocity velocity = contact.rolling_velocity(geometry->setup().nominal_radius_m[0]);
@@ -59,11 +61,15 @@ struct SweepCommand {
     }
     WheelsetPose guess;
     std::vector<WheelContactReport> reports;  // every wheel solved, for the status check after the table
+    std::vector<double> no_rigid_contact;      // y [mm] of the poses without rigid contact
     for (int k = 0; from_mm + k * step_mm <= to_mm + 1e-9; ++k) {
       const double y_mm = from_mm + k * step_mm, yaw_mrad = yaw_per_y_mrad_per_mm * y_mm;
       const EquilibriumResult eq = geometry->SolveRigidEquilibrium(y_mm * 1e-3, yaw_mrad * 1e-3, guess);
       if (eq.status == EquilibriumStatus::NoContact) {
+        no_rigid_contact.push_back(y_mm);
         if (!csv) std::cout << "y = " << y_mm << " mm: no rigid contact\n";
+        for (const std::string& name : names)  // the CSV names the pose too (it had the header only)
+          if (csv) std::cout << name << ',' << y_mm << ',' << yaw_mrad << ",,,,,,,,,,,,,,," << "no_rigid_contact\n";
         continue;
       }
       guess = eq.pose;
@@ -80,6 +86,9 @@ struct SweepCommand {
         reports.push_back(r);
         if (r.patches.empty() && !csv) std::cout << std::string(8 - std::min<size_t>(8, name.size()), ' ') << name
                                                  << ": " << to_string(r.status) << "\n";
+        if (r.patches.empty() && csv)
+          std::cout << name << ',' << y_mm << ',' << yaw_mrad << ',' << eq.rolling_radius_difference_m * 1e3
+                    << ",,,,,,,,,,,,,," << to_string(r.status) << '\n';
         int j = 0;
         for (const PatchReport& p : r.patches) {
           if (csv) {
@@ -98,6 +107,14 @@ struct SweepCommand {
     }
     std::cout.flush();
     ThrowIfIncomplete(reports, contact.load_N);  // the table is complete; a non-converged wheel is exit 4
+    if (!no_rigid_contact.empty()) {
+      char text[240];
+      std::snprintf(text, sizeof text,
+                    "no rigid contact of the wheelset at %zu of the poses (y = %g ... %g mm): the wheels do not reach "
+                    "the rails there (rows with wheel_status no_rigid_contact)",
+                    no_rigid_contact.size(), no_rigid_contact.front(), no_rigid_contact.back());
+      throw IncompleteResult(ExitCode::PartialResult, text);
+    }
   }
 };
 }  // namespace

@@ -2,6 +2,7 @@
 // frames of a pose and the wheel silhouette (frames and conventions: include/conforma/geometry.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "conforma/error.hpp"
@@ -25,8 +26,20 @@ void TrackSetup::validate() const {
   require_non_negative(gauge_height_m, "TrackSetup.gauge_height_m");
   require_positive(flange_back_distance_m, "TrackSetup.flange_back_distance_m");
   require_finite(flange_back_position_m, "TrackSetup.flange_back_position_m");
-  require_positive(nominal_radius_m[0], "TrackSetup.nominal_radius_m[left]");
-  require_positive(nominal_radius_m[1], "TrackSetup.nominal_radius_m[right]");
+  for (int k = 0; k < 2; ++k) {
+    const std::string name = std::string("TrackSetup.nominal_radius_m[") + (k == 0 ? "left" : "right") + "]";
+    require_positive(nominal_radius_m[k], name.c_str());
+    // a wheel radius of 1 pm or 355 m gave a contact with exit 0 (fuzzing, session 25); scaled roller rigs (1:10)
+    // run ~46 mm, locomotive wheels ~0.63 m
+    if (nominal_radius_m[k] < kMinWheelRadius_m || nominal_radius_m[k] > kMaxWheelRadius_m) {
+      char text[320];
+      std::snprintf(text, sizeof text,
+                    "the nominal (taping-line) wheel radius %s = %.6g m (command line: --r0-mm; scenario: "
+                    "profiles.wheel_radius_mm) is not a railway wheel's (%.3g ... %.3g m): unit?",
+                    name.c_str(), nominal_radius_m[k], kMinWheelRadius_m, kMaxWheelRadius_m);
+      throw InputError(text);
+    }
+  }
   require_finite(rail_inclination_rad, "TrackSetup.rail_inclination_rad");
   if (std::abs(rail_inclination_rad) > 0.2) throw InputError("TrackSetup.rail_inclination_rad must be within +-0.2 rad");
   require_non_negative(roller_radius_m[0], "TrackSetup.roller_radius_m[left]");

@@ -239,6 +239,9 @@ void ContactLutGrid::validate() const {
   ValidateAxis(load_N, "load_N");
   if (!(load_N.front() > 0.0)) throw InputError("contact LUT grid axis 'load_N' must be > 0");
   if (load_N.back() > kMaxWheelLoadN) throw InputError("contact LUT grid axis 'load_N' exceeds the largest wheel load");
+  if (std::max(-yaw_rad.front(), yaw_rad.back()) > kMaxWheelsetYaw_rad)
+    throw InputError("contact LUT grid axis 'yaw_rad' reaches beyond +-" + std::to_string(int(kMaxWheelsetYaw_rad * 1e3)) +
+                     " mrad: not a wheelset yaw on track");
 }
 
 void ContactLutBuildOptions::validate() const {

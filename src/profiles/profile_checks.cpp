@@ -23,6 +23,9 @@ constexpr double kFlangeHeight_m = 10e-3;     // a wheel flange rises at least t
 constexpr double kPeakMargin_m = 3e-3;        // an extreme is a flange (not a profile end) if both ends lie this far away
 constexpr double kRailFlatWidth_m = 25e-3;    // crown of a rail head: this wide with |slope| < kFlatSlope
 constexpr double kFlatSlope = 0.25;
+constexpr double kMinProfileWidth_m = 1e-3;  // narrowest lateral extent (CONTACT's test bank: a 10 mm circle, 19.8 mm)
+constexpr double kRailCrownDepth_m = 5e-3;    // a rail head is at least kRailCrownWidth_m wide this far below its top
+constexpr double kRailCrownWidth_m = 30e-3;   // (worn 50E4 ... 60E1 heads: 50-70 mm; a wheel flange: ~15 mm)
 // Noise: the median jump of the curvature between consecutive point triples on the running surface above 1/this
 // is noise. Measured on the shared reference profiles (smooth: 1/16 mm and less, most below 1/80 mm) and on S1002
 // with added normal noise at 0.1 mm spacing (0.5 um: 1/7.4 mm, 1 um: 1/3.8 mm); already 0.5 um of noise at 0.1 mm
@@ -77,6 +80,43 @@ std::string flag(ProfileKind kind, const char* what) { return std::string("--") 
 // "add --wheel-mirror" or "remove --wheel-mirror" (when the option is already set and caused the problem).
 std::string toggle(ProfileKind kind, const char* what, bool set) {
   return std::string(set ? "remove " : "add ") + flag(kind, what);
+}
+
+// The size of the curve (fuzzing, session 25): a profile in metres read as millimetres spans a fraction of a mm and
+// was refused later as "no function-like part to tabulate"; a wheel file with its two columns swapped is taller than
+// wide and found no contact at all.
+void check_extent(const ProfilePoints& p, const std::vector<double>& ys, const std::vector<double>& zs) {
+  const auto [y_lo, y_hi] = std::minmax_element(ys.begin(), ys.end());
+  const auto [z_lo, z_hi] = std::minmax_element(zs.begin(), zs.end());
+  const double width = *y_hi - *y_lo, height = *z_hi - *z_lo;
+  const std::string what = std::string(to_string(p.kind)) + " profile";
+  if (width < kMinProfileWidth_m)
+    throw InputError(p.source, 0,
+                     "the " + what + " spans only " + mm(width) + " mm across (y) and " + mm(height) +
+                         " mm in height (z); a wheel or rail profile spans 50-150 mm: wrong length unit (a file in "
+                         "metres read as millimetres: --" + to_string(p.kind) + "-units m, or the file's own unit) "
+                         "or the columns swapped");
+  if (p.kind == ProfileKind::Wheel && height > width)
+    throw InputError(p.source, 0,
+                     "the wheel profile is " + mm(height, 1) + " mm high (z) and only " + mm(width, 1) +
+                         " mm wide (y); a wheel profile is wider than high (tread and flange ~130-150 mm, flange "
+                         "~30 mm high): are the y and z columns swapped (MiniProf: ColumnDef)?");
+}
+
+// A rail's running surface is a head at least kRailCrownWidth_m wide kRailCrownDepth_m below its top; a wheel profile
+// given as a rail (fuzzing, session 25) puts its narrow flange tip there and found "contact" on it.
+void check_rail_crown(const ProfilePoints& p, const std::vector<double>& ys, const std::vector<double>& zs, size_t i_max) {
+  const double level = zs[i_max] - kRailCrownDepth_m;
+  size_t a = i_max, b = i_max;
+  while (a > 0 && zs[a - 1] > level) --a;
+  while (b + 1 < zs.size() && zs[b + 1] > level) ++b;
+  const double width = std::abs(ys[b] - ys[a]);
+  const bool open = (a == 0) || (b + 1 == zs.size());  // the head runs off the end of the measured curve
+  if (width < kRailCrownWidth_m && !open)
+    throw InputError(p.source, p.lines[i_max],
+                     "the rail profile's top " + at(p, i_max) + " is only " + mm(width, 1) + " mm wide " +
+                         mm(kRailCrownDepth_m, 0) + " mm below it; a rail head is " + mm(kRailCrownWidth_m, 0) +
+                         "-75 mm wide there: is it a wheel profile (--wheel) or a spike in the points?");
 }
 
 }  // namespace
@@ -136,6 +176,7 @@ void check_points(ProfilePoints& p, const ProfileReadOptions& options) {
   const bool wheel = kind == ProfileKind::Wheel;
   std::vector<double> ys(n), zs(n);
   for (size_t i = 0; i < n; ++i) { ys[i] = pts[i].x(); zs[i] = pts[i].y(); }
+  check_extent(p, ys, zs);
   const size_t i_max = std::max_element(zs.begin(), zs.end()) - zs.begin();
   const size_t i_min = std::min_element(zs.begin(), zs.end()) - zs.begin();
   const double z_max = zs[i_max], z_min = zs[i_min];
@@ -169,7 +210,10 @@ void check_points(ProfilePoints& p, const ProfileReadOptions& options) {
       }
       i_tip = i_max;
     }
-  } else if (peak_down && !peak_up && z_end_low - z_min > kFlangeHeight_m) {
+  } else if (peak_up) {
+    check_rail_crown(p, ys, zs, i_max);
+  }
+  if (!wheel && peak_down && !peak_up && z_end_low - z_min > kFlangeHeight_m) {
     // Rail head upside down: a wide flat valley at the bottom (the crown) with the flanks rising on both sides.
     // A groove (a concave running surface a few mm wide) is not mistaken for it.
     auto slope = [&](size_t i) {

@@ -1,11 +1,32 @@
 // Plain two-column profile files (.txt .dat .csv): "y z" per line, separated by commas, semicolons, tabs or
 // spaces; '#' starts a comment; non-numeric lines before the first data line are header lines.
+#include <algorithm>
+#include <sstream>
+
 #include "conforma/error.hpp"
 #include "profile_io_internal.hpp"
 
 namespace conforma {
 
 namespace profile_io {
+
+namespace {
+// "-7,00 9,51": two whitespace-separated tokens, each a number once its one comma is a point (fuzzing, session 25:
+// such a file was read as four columns, y and z taken from the integer parts)
+bool DecimalCommas(const std::string& line) {
+  std::istringstream in(line);
+  std::string token;
+  int count = 0;
+  while (in >> token) {
+    if (std::count(token.begin(), token.end(), ',') != 1) return false;
+    std::replace(token.begin(), token.end(), ',', '.');
+    double v;
+    if (!parse_number(token, v)) return false;
+    ++count;
+  }
+  return count == 2;
+}
+}  // namespace
 
 ProfilePoints read_columns(const std::string& path, const ProfileReadOptions& options) {
   if (!options.kind)
@@ -36,6 +57,10 @@ ProfilePoints read_columns(const std::string& path, const ProfileReadOptions& op
     if (!ok_y) throw InputError(path, ln, "non-numeric value '" + f[0] + "'");
     if (f.size() < 2) throw InputError(path, ln, "expected two columns 'y z', found '" + t + "'");
     if (!parse_number(f[1], z)) throw InputError(path, ln, "non-numeric value '" + f[1] + "'");
+    if (f.size() == 4 && DecimalCommas(t))
+      throw InputError(path, ln,
+                       "'" + t + "' reads as four numbers: decimal commas? (use a decimal point; commas, semicolons, "
+                       "tabs and spaces all separate columns)");
     out.points_m.emplace_back(sy * y, sz * z);
     out.lines.push_back(ln);
   }

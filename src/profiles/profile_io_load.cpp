@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <numeric>
@@ -201,6 +202,8 @@ bool HasFileReadOptions(const ProfileReadOptions& o) {
 ProfilePoints ReadProfilePoints(const std::string& path, const ProfileReadOptions& options) {
   require_positive(options.length_unit_m, "length_unit_m");
   require_finite(options.z_shift_m, "z_shift_m");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory, not a profile file");
   const std::string ext = profile_io::extension_of(path);
   ProfileFormat format = options.format;
   if (format == ProfileFormat::Auto) {

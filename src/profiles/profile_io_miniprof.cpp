@@ -23,6 +23,8 @@ double local_slope(const std::vector<Eigen::Vector2d>& p, size_t i) {
   return std::abs(d.y()) / std::max(std::abs(d.x()), 1e-12);
 }
 
+constexpr double kMiniProfFlangeBackTolerance_mm = 10.0;
+
 double median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
@@ -111,11 +113,13 @@ ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& o
   // New style: XYPoints gives the number of data rows; fewer rows means a truncated file (more: an edited file, noted).
   if (auto it = out.header.find("XYPoints"); it != out.header.end()) {
     double count;
-    if (parse_number(it->second, count) && count > 0 && static_cast<double>(mm.size()) < count)
+    if (!parse_number(it->second, count) || !(count >= 1) || count != std::floor(count))
+      throw InputError(path, 0, "XYPoints=" + it->second + " is not a number of data rows (a whole number >= 1)");
+    if (static_cast<double>(mm.size()) < count)
       throw InputError(path, out.lines.empty() ? 0 : out.lines.back(),
                        "XYPoints=" + it->second + " but the file has only " + std::to_string(mm.size()) +
                            " data rows: truncated file?");
-    if (parse_number(it->second, count) && static_cast<double>(mm.size()) > count)
+    if (static_cast<double>(mm.size()) > count)
       out.notes.push_back("XYPoints=" + it->second + " but the file has " + std::to_string(mm.size()) + " data rows");
   }
   if (mm.size() < 4) throw InputError(path, 0, "no profile points found (" + std::to_string(mm.size()) + " data rows)");
@@ -150,9 +154,25 @@ ProfilePoints read_miniprof(const std::string& path, const ProfileReadOptions& o
     auto it = out.header.find("WheelDiameterTaperline");
     if (it != out.header.end()) {
       double v;
-      if (parse_number(it->second, v) && v > 0) taping = v;
+      if (!parse_number(it->second, v) || !(v > 0 && v < 200))
+        throw InputError(path, 0, "WheelDiameterTaperline=" + it->second +
+                                      " is not a taping-line distance from the flange back (0-200 mm)");
+      taping = v;
     }
     y_shift = -taping;
+    // MiniProf wheels start at the flange back, X = 0 (the measured files: -0.24 ... 1.6 mm). A profile whose
+    // flange-back end lies elsewhere is in other coordinates (fuzzing, session 25: S1002 with the taping line at
+    // X = 0 put the wheel 70 mm off and solved a contact on the flange, exit 0).
+    double back = sy * mm.front().x();
+    for (const auto& q : mm) back = std::min(back, sy * q.x());
+    if (std::abs(back) > kMiniProfFlangeBackTolerance_mm) {
+      std::ostringstream m;
+      m << "MiniProf wheel: the profile's flange-back end lies at X = " << sy * back
+        << " mm, but MiniProf wheels have the flange back at X = 0 (the taping line " << taping
+        << " mm from it, WheelDiameterTaperline); the file is in other coordinates (a profile with the taping line "
+           "at y = 0: read it as plain columns, --wheel-format columns)";
+      throw InputError(path, 0, m.str());
+    }
     std::ostringstream m;
     m << "wheel: y shifted by " << -taping << " mm (flange back at y_file = 0, taping line at y = 0)";
     out.notes.push_back(m.str());

@@ -1,6 +1,7 @@
 // Scenario file reader (scenario.hpp): YAML -> Scenario, with unknown keys and bad values reported by name.
 #include "conforma/scenario.hpp"
 
+#include <filesystem>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
@@ -141,7 +142,12 @@ ContactModel ModelFromName(const Reader& r, const std::string& name, const std::
 
 WearLaw LawFromName(const Reader& r, const std::string& name) {
   if (name == "usfd") return WearLaw{};
-  return LoadWearLaw(r.path(name));
+  const std::string path = r.path(name);
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec) && name.find_first_of("./\\") == std::string::npos)
+    throw InputError(path, 0, "no wear-law file; the built-in law is 'usfd', any other is a wear-law file (e.g. "
+                              "profiles/wear_laws/archard_jendel.csv, format in include/conforma/wear_law.hpp)");
+  return LoadWearLaw(path);
 }
 
 void ParseVehicle(const Reader& r, const YAML::Node& n, VehicleParameters* v) {
@@ -347,6 +353,13 @@ void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynami
 
 }  // namespace
 
+namespace {
+constexpr double kMaxClassSpeed_m_s = 600.0 / 3.6;  // (the rail speed record: 575 km/h)
+constexpr double kMaxCantPerGauge = 0.2;             // 287 mm on 1435 mm: above any line's cant
+constexpr double kMaxClassAcceleration_m_s2 = 5.0;   // ~ mu g with mu = 0.5
+constexpr double kMaxTangentAmplitude_m = 0.1;     // (flangeway clearance ~5-10 mm, flange ~30 mm high)
+}  // namespace
+
 void Scenario::validate() const {
   const std::string where = source + ": ";
   vehicle.validate();
@@ -357,6 +370,28 @@ void Scenario::validate() const {
   double sum = 0.0;
   for (const TrackClass& c : classes) {
     if (!(c.speed_m_s > 0)) throw InputError(where + "track class " + c.name + ": speed must be > 0");
+    // ranges of a railway line (fuzzing, session 24: 1e6 km/h, 5 m of cant and 100 m/s^2 ran with exit 0 or 5)
+    char text[260];
+    if (c.speed_m_s > kMaxClassSpeed_m_s) {
+      std::snprintf(text, sizeof text, "track class %s: speed_kmh = %g is beyond a railway's %g km/h (unit?)",
+                    c.name.c_str(), c.speed_m_s * 3.6, kMaxClassSpeed_m_s * 3.6);
+      throw InputError(where + text);
+    }
+    if (!(std::abs(c.cant_m) <= kMaxCantPerGauge * gauge_m)) {
+      std::snprintf(text, sizeof text,
+                    "track class %s: cant_mm = %g is more than %g of the %g mm gauge (track cant is at most ~180 mm "
+                    "on standard gauge; unit?)",
+                    c.name.c_str(), c.cant_m * 1e3, kMaxCantPerGauge, gauge_m * 1e3);
+      throw InputError(where + text);
+    }
+    const double accel = c.axle_torque_Nm / (vehicle.carried_mass_per_wheelset_kg() * vehicle.nominal_wheel_radius_m);
+    if (std::abs(accel) > kMaxClassAcceleration_m_s2) {
+      std::snprintf(text, sizeof text,
+                    "track class %s: the drive torque %g N m accelerates the vehicle by %g m/s^2, more than the %g "
+                    "m/s^2 that adhesion (mu g) can give",
+                    c.name.c_str(), c.axle_torque_Nm, accel, kMaxClassAcceleration_m_s2);
+      throw InputError(where + text);
+    }
     if (!(c.share >= 0)) throw InputError(where + "track class " + c.name + ": share must be >= 0");
     if (!(c.friction_coefficient > 0)) throw InputError(where + "track class " + c.name + ": friction must be > 0");
     if (!std::isfinite(c.axle_torque_Nm)) throw InputError(where + "track class " + c.name + ": axle torque not finite");
@@ -380,6 +415,9 @@ void Scenario::validate() const {
   if (!(rail_steps.output_spacing_m >= 0 && rail_steps.output_spacing_m <= 1e-3))
     throw InputError(where + "rail.spacing_mm must be in [0, 1] (0: the spacing of the rail before the step)");
   if (kinematics.tangent_phases < 1) throw InputError(where + "kinematics.tangent_phases must be >= 1");
+  if (!(kinematics.tangent_amplitude_m <= kMaxTangentAmplitude_m))
+    throw InputError(where + "kinematics.tangent_amplitude_mm must be <= " + std::to_string(int(kMaxTangentAmplitude_m * 1e3)) +
+                     " mm (the flangeway clearance is ~5-10 mm, a flange ~30 mm high; unit?)");
   if (!(gauge_m > 1.0 && gauge_m < 2.0)) throw InputError(where + "track.gauge_mm out of range");
   if (wheel.empty() || rail.empty()) throw InputError(where + "profiles missing");
 }
