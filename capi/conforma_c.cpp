@@ -4,6 +4,8 @@
 #include "c_patch_fields.hpp"
 #include "c_status.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <memory>
@@ -75,11 +77,10 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   conforma::require_finite(s.lateral_m, "state.lateral_m");
   conforma::require_finite(s.vertical_m, "state.vertical_m");
   conforma::require_finite(s.roll_rad, "state.roll_rad");
-  conforma::require_finite(s.yaw_rad, "state.yaw_rad");
-  conforma::require_positive(s.forward_speed_m_s, "state.forward_speed_m_s");
-  conforma::require_finite(s.lateral_velocity_m_s, "state.lateral_velocity_m_s");
-  conforma::require_finite(s.yaw_rate_rad_s, "state.yaw_rate_rad_s");
-  conforma::require_finite(s.axle_angular_velocity_rad_s, "state.axle_angular_velocity_rad_s");
+  conforma::RequireWheelsetYaw(s.yaw_rad, "state.yaw_rad");
+  const conforma::WheelsetVelocity velocity{s.forward_speed_m_s, s.lateral_velocity_m_s, s.yaw_rate_rad_s,
+                                            s.axle_angular_velocity_rad_s};
+  conforma::RequireRollingVelocity(velocity, model.geometry->setup().nominal_radius_m[0], "state");
   if (e.normal_mode != CONFORMA_LOAD_CONTROL && e.normal_mode != CONFORMA_GIVEN_APPROACH)
     throw InputError("options.normal_mode must be CONFORMA_LOAD_CONTROL (0) or CONFORMA_GIVEN_APPROACH (1), not " +
                      std::to_string(e.normal_mode));
@@ -99,16 +100,18 @@ void Evaluate(const conforma_model& model, const conforma_wheelset_state& s, con
   }
   conforma::WheelsetPose pose{s.lateral_m, s.vertical_m, s.roll_rad, s.yaw_rad};
   if (e.rigid_equilibrium) {
-    conforma::require_finite(e.approach_m, "options.approach_m");
+    conforma::RequireApproach(e.approach_m, "options.approach_m");
     const conforma::EquilibriumResult eq = model.geometry->SolveRigidEquilibrium(s.lateral_m, s.yaw_rad, pose);
-    if (eq.status == conforma::EquilibriumStatus::NoContact)
-      throw InputError("no rigid contact at state.lateral_m = " + std::to_string(s.lateral_m) + " m");
+    if (eq.status == conforma::EquilibriumStatus::NoContact) {
+      char text[200];
+      std::snprintf(text, sizeof text, "no rigid contact at state.lateral_m = %g m, state.yaw_rad = %g rad: the wheels "
+                    "do not reach the rails", s.lateral_m, s.yaw_rad);
+      throw InputError(text);
+    }
     pose = eq.pose;
     if (!load_control) pose.vertical_m -= e.approach_m;
   }
   result->roll_rad = pose.roll_rad;
-  const conforma::WheelsetVelocity velocity{s.forward_speed_m_s, s.lateral_velocity_m_s, s.yaw_rate_rad_s,
-                                            s.axle_angular_velocity_rad_s};
   const conforma::WheelContactOptions& contact = model.contact;
   conforma::LutEvaluationOptions table;  // (with a table only)
   table.creep_force = e.table_creep_force == 1 ? conforma::LutCreepForce::Polach : conforma::LutCreepForce::Fastsim;
@@ -213,6 +216,8 @@ conforma_status conforma_model_create(const conforma_track_params* track, const 
     conforma::interop::TrackSpec spec;
     spec.wheel = track->wheel_profile;
     spec.rail = track->rail_profile;
+    if (std::isnan(track->rail_inclination_rad))  // (NaN was taken as "the default")
+      throw conforma::InputError("track.rail_inclination_rad is NaN (negative: the default)");
     if (track->rail_inclination_rad >= 0.0) spec.inclination_rad = track->rail_inclination_rad;
     spec.gauge_m = track->gauge_m;
     spec.gauge_height_m = track->gauge_height_m;
@@ -268,7 +273,16 @@ void conforma_model_destroy(conforma_model* model) { delete model; }
 
 conforma_status conforma_evaluate(const conforma_model* model, const conforma_wheelset_state* state,
                                   const conforma_evaluation_options* options, conforma_wheelset_result* result) {
-  if (!result) return CONFORMA_ERROR_NULL;
+  if (!result) {
+    if (model) {  // (the handle's last error said nothing, or the previous call's: fuzzing, session 25)
+      try {
+        std::lock_guard<std::mutex> lock(model->error_mutex);
+        model->last_error = "conforma_evaluate: result is NULL";
+      } catch (...) {
+      }
+    }
+    return CONFORMA_ERROR_NULL;
+  }
   std::memset(result, 0, sizeof *result);
   if (!model || !state) {
     CopyText("conforma_evaluate: model or state is NULL", result->error_message, sizeof result->error_message);

@@ -108,32 +108,36 @@ typedef enum conforma_normal_mode {
 typedef struct conforma_track_params {
   const char* wheel_profile;       /* default "S1002" */
   const char* rail_profile;        /* default "60E1" */
-  double rail_inclination_rad;     /* < 0: default (1:40 for built-in rails, 0 for files, which are canted) */
-  double gauge_m;                  /* 1.435, measured gauge_height_m below the rail top */
+  double rail_inclination_rad;     /* < 0: default (1:40 for built-in rails, 0 for files, which are canted); NaN is
+                                      CONFORMA_ERROR_INPUT */
+  double gauge_m;                  /* 1.435, measured gauge_height_m below the rail top; 0.1 ... 1.8 m */
   double gauge_height_m;           /* 0.014 */
-  double flange_back_distance_m;   /* 1.360 */
+  double flange_back_distance_m;   /* 1.360; 0.1 ... 1.8 m */
   double flange_back_position_m;   /* -0.070: wheel-profile y of the flange back */
-  double nominal_radius_m;         /* 0.46: taping-line radius of both wheels */
+  double nominal_radius_m;         /* 0.46: taping-line radius of both wheels; 0.02 ... 2 m */
 } conforma_track_params;
 
 /* Contact model and material. */
 typedef struct conforma_contact_params {
   const char* model;               /* "hertz", "kp", "kpec", "conformal" (default), "auto", "exact" (slow: BEM +
                                       Kalker's exact tangential theory; "reference" is accepted for it) */
-  double shear_modulus_Pa;         /* 82e9: G of both bodies, > 0 */
+  double shear_modulus_Pa;         /* 82e9: G of both bodies, 1e8 ... 1e12 Pa */
   double poisson_ratio;            /* 0.28: nu of both bodies */
   double friction_coefficient;     /* 0.3: mu, >= 0 */
-  int fastsim_elements;            /* 30: FASTSIM elements per strip, >= 2 */
-  int kp_strips;                   /* 31: strips across the contact (KP models), >= 3 */
+  int fastsim_elements;            /* 30: FASTSIM elements per strip, 2 ... 10000 */
+  int kp_strips;                   /* 31: strips across the contact (KP models), 3 ... 100000 */
 } conforma_contact_params;
 
 /* Wheelset pose and velocities in the track frame. */
 typedef struct conforma_wheelset_state {
-  double lateral_m, vertical_m, roll_rad, yaw_rad;  /* the wheelset pose (FRAMES above): m, m, rad, rad; finite */
+  double lateral_m, vertical_m, roll_rad, yaw_rad;  /* the wheelset pose (FRAMES above): m, m, rad, rad; finite,
+                                                       |yaw_rad| <= 0.2 */
   double forward_speed_m_s;            /* V > 0 along +x (CONFORMA_ERROR_INPUT otherwise) */
   double lateral_velocity_m_s;         /* dy/dt */
   double yaw_rate_rad_s;               /* d(yaw)/dt */
   double axle_angular_velocity_rad_s;  /* about the axle, + rolling forwards (V / r0 for pure rolling) */
+  /* the rigid creepages these imply, |dy/dt / V|, |omega r0 / V - 1| and |yaw rate / V| (1/m), must be within 1e3
+     (CONFORMA_ERROR_INPUT beyond: the creep forces would overflow to NaN) */
 } conforma_wheelset_state;
 
 typedef struct conforma_evaluation_options {
@@ -144,7 +148,7 @@ typedef struct conforma_evaluation_options {
                                       roll_rad are the starting guess); 0 (default): as given; any other
                                       value is CONFORMA_ERROR_INPUT */
   double approach_m;               /* rigid_equilibrium with CONFORMA_GIVEN_APPROACH: push-down below rigid contact,
-                                      default 5e-5 m */
+                                      default 5e-5 m, |.| <= 0.01 m */
   double load_tolerance;           /* relative tolerance of load control, > 0; default 1e-6 */
   int parallel_wheels;             /* 0 (default): both wheels on the calling thread; 1: the two wheels on two
                                       threads of an OpenMP region (the wheels are independent: results bit-identical
@@ -250,7 +254,7 @@ CONFORMA_C_EXPORT size_t conforma_model_last_error(const conforma_model* model, 
 typedef struct conforma_rig_params {
   const char* wheel_profile;       /* "conical" (default: 0.036 rad cone, paper 000 §4), "s1002" (scaled) or a file */
   const char* roller_profile;      /* "uic60_1in20" (default: 60E1 canted 1:20, scaled) or a file (rig scale) */
-  double roller_radius_m;          /* 0.185 (Table 1) */
+  double roller_radius_m;          /* 0.185 (Table 1); <= 10 m */
   double wheel_radius_m;           /* 0.0944 (Table 1) */
   double length_factor;            /* 0.2: 1:5 rig (profiles and track dimensions scaled) */
   double wheel_conicity_rad;       /* 0.036: the "conical" wheel */
@@ -270,9 +274,10 @@ typedef struct conforma_rig_params {
 
 typedef struct conforma_rig_sample {
   double time_s;                   /* time stamp, s (reported only) */
-  double duration_s;               /* step the sample stands for, s, > 0 (0.02 on the rig) */
+  double duration_s;               /* step the sample stands for, s, > 0 (0.02 on the rig); a sample that would
+                                      remove more than 1 mm is CONFORMA_ERROR_INPUT, the rig left as it was */
   double lateral_m, yaw_rad;       /* measured wheelset lateral shift (m, + towards roller 1 / left) and yaw (rad) */
-  double lateral_velocity_m_s;     /* dy/dt, m/s */
+  double lateral_velocity_m_s;     /* dy/dt, m/s, |.| <= 10 */
   double roller_speed_rad_s[2];    /* omega_1 (left wheel's roller), omega_2, rad/s, > 0 */
   double wheel_load_N[2];          /* vertical load per wheel [left, right], N, > 0 */
   double wheelset_speed_rad_s;     /* measured omega_3, rad/s; <= 0: solved (moment balance or eq. 2) */

@@ -3,6 +3,7 @@
 #include "interop.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -45,12 +46,16 @@ std::vector<WheelContactReport> SolveLikeCli(const WheelsetTrackGeometry& geomet
                                              const WheelContactOptions& options) {
   options.validate();
   require_finite(in.lateral_m, "lateral position");
-  require_finite(in.yaw_rad, "yaw angle");
+  RequireWheelsetYaw(in.yaw_rad, "yaw angle");
   if (in.roll_rad) require_finite(*in.roll_rad, "roll angle");
-  require_finite(in.approach_m, "approach");
+  RequireApproach(in.approach_m, "approach");
   const EquilibriumResult eq = geometry.SolveRigidEquilibrium(in.lateral_m, in.yaw_rad);
-  if (eq.status == EquilibriumStatus::NoContact)
-    throw InputError("no rigid contact at lateral position " + std::to_string(in.lateral_m) + " m");
+  if (eq.status == EquilibriumStatus::NoContact) {
+    char text[200];
+    std::snprintf(text, sizeof text, "no rigid contact at lateral position %g m, yaw %g rad: the wheels do not reach "
+                  "the rails (check the position, the yaw, the gauge and the profiles)", in.lateral_m, in.yaw_rad);
+    throw InputError(text);
+  }
   WheelsetPose pose = eq.pose;
   if (in.roll_rad) pose.roll_rad = *in.roll_rad;
   if (options.vertical_load_N < 0.0) pose.vertical_m -= in.approach_m;  // approach mode

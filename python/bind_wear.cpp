@@ -4,6 +4,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+
 #include <yaml-cpp/yaml.h>
 
 #include <regex>
@@ -61,6 +63,7 @@ Scenario ScenarioFrom(const py::object& scenario, const std::string& base_dir) {
 
 py::dict RunWear(const py::object& scenario, const std::string& model, int steps, double total_km,
                  const std::string& base_dir) {
+  if (std::isnan(total_km)) throw InputError("total_km is NaN (negative: the scenario's)");  // (was the scenario's)
   const Scenario sc = ScenarioFrom(scenario, base_dir);
   WearSimulationOptions o;
   o.contact.model = model.empty() ? sc.model : ParseContactModel(model);

@@ -210,7 +210,7 @@ py::dict ContactAtPose(const Track& track, const std::string& side, double later
   require_finite(lateral_m, "lateral_m");
   require_finite(vertical_m, "vertical_m");
   require_finite(roll_rad, "roll_rad");
-  require_finite(yaw_rad, "yaw_rad");
+  RequireWheelsetYaw(yaw_rad, "yaw_rad");
   require_finite(lateral_velocity_m_s, "lateral_velocity_m_s");
   require_finite(yaw_rate_rad_s, "yaw_rate_rad_s");
   if (axle_angular_velocity_rad_s) require_finite(*axle_angular_velocity_rad_s, "axle_angular_velocity_rad_s");
@@ -220,6 +220,7 @@ py::dict ContactAtPose(const Track& track, const std::string& side, double later
   const double r0 = track.geometry->setup().nominal_radius_m[0];
   const WheelsetVelocity v{speed_m_s, lateral_velocity_m_s, yaw_rate_rad_s,
                            axle_angular_velocity_rad_s.value_or(speed_m_s / r0)};
+  RequireRollingVelocity(v, r0, "velocity");
   WheelContactReport r;
   {
     py::gil_scoped_release release;
@@ -248,6 +249,8 @@ py::dict LutEvaluate(const ContactLut& lut, const Track& track, const std::strin
   const double r0 = track.geometry->setup().nominal_radius_m[0];
   const WheelsetVelocity v{speed_m_s, lateral_velocity_m_s, yaw_rate_rad_s,
                            axle_angular_velocity_rad_s.value_or(speed_m_s / r0)};
+  RequireWheelsetYaw(yaw_rad, "yaw_rad");
+  RequireRollingVelocity(v, r0, "velocity");
   LutEvaluationOptions evaluation;
   evaluation.creep_force = ParseLutCreepForce(creep_force);
   // the table's geometry (contact_lut.hpp): another wheel or rail is refused, not answered from the table
@@ -319,7 +322,13 @@ height above the taping line (flange at negative y, flange back at -0.070 m for 
           },
           py::arg("spacing_m") = py::none(),
           "(N, 2) array of (y, z) [m] along the curve, uniform in arc length (the stored samples by default)")
-      .def("height_at", &Profile::height_at, py::arg("y_m"), "z [m] at lateral position y, or None outside")
+      .def(
+          "height_at",
+          [](const Profile& p, double y_m) {
+            if (std::isnan(y_m)) throw InputError("height_at: y_m is NaN");
+            return p.height_at(y_m);
+          },
+          py::arg("y_m"), "z [m] at lateral position y, or None outside")
       .def(
           "dimensions",
           [](const Profile& p, double flange_back_y_m, double taping_line_y_m) {
@@ -372,7 +381,7 @@ height above the taping line (flange at negative y, flange back at -0.070 m for 
         for (py::ssize_t i = 0; i < points.shape(0); ++i) pts[static_cast<size_t>(i)] = {v(i, 0), v(i, 1)};
         ProfileFitOptions fit;
         fit.smoothing_rms_m = smoothing_rms_m;
-        return Profile::FromPoints(std::move(pts), conforma::python::KindFrom(kind), fit, "python points");
+        return ProfileFromCheckedPoints(std::move(pts), conforma::python::KindFrom(kind), fit, "python points");
       },
       py::arg("points"), py::arg("kind"), py::arg("smoothing_rms_m") = 0.0,
       "Profile from an (N, 2) array of (y, z) in metres (conventions of Profile).");
@@ -396,12 +405,14 @@ inclination_rad: rail cant applied by the track; default 1:40 for built-in rail 
       .def_property_readonly("nominal_radius_m", [](const Track& t) { return t.geometry->setup().nominal_radius_m[0]; })
       .def(
           "mounted_rail", [](const Track& t, const std::string& side) {
+            if (side != "left" && side != "right") throw InputError("side must be 'left' or 'right', not '" + side + "'");
             return t.geometry->mounted_rail(side == "right" ? Side::Right : Side::Left);
           },
           py::arg("side") = "left", "the rail profile as mounted (inclined, origin at its highest point)")
       .def(
           "rigid_equilibrium",
           [](const Track& t, double lateral_m, double yaw_rad) {
+            RequireWheelsetYaw(yaw_rad, "yaw_rad");
             const EquilibriumResult e = t.geometry->SolveRigidEquilibrium(lateral_m, yaw_rad);
             py::dict d;
             d["status"] = to_string(e.status);
@@ -459,7 +470,8 @@ pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear
            "One wheel from the table at (lateral_m, yaw_rad) carrying load_N (vertical position and roll of the "
            "rigid equilibrium, as the table); track must be the one the table was made for. creep_force: 'fastsim' "
            "(as the direct solver) or 'polach' (closed form on each patch's ellipse, for speed). Returns a wheel "
-           "dict as contact() (without fields); outside the table InputError naming the axis.");
+           "dict as contact() (without fields, and without 'complete' / 'problems': conforma.wheel_problems(wheel, "
+           "load_N) lists what is incomplete); outside the table InputError naming the axis.");
   m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,
         py::arg("data_dir") = SharedDataDir(), py::arg("fastsim_elements") = 30,
         "Manchester benchmark A-2.2 (left wheel, 21 cases) against CONTACT's results: one dict per case with the "

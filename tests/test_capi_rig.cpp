@@ -98,6 +98,21 @@ TEST(CApiRig, ErrorsAndStatuses) {
   EXPECT_EQ(r.kinematics_status, 3);
   EXPECT_GT(std::string(r.error_message).size(), 0u);
   EXPECT_EQ(conforma_rig_process_sample(nullptr, &s, &r), CONFORMA_ERROR_NULL);
+  // a sample of 1e300 s removed 2e289 m and destroyed the rig's profiles (fuzzing, session 25): refused, and the
+  // next sample is answered as on a fresh rig
+  s = CSample(0);
+  conforma_rig_result before;
+  ASSERT_EQ(conforma_rig_process_sample(rig, &s, &before), CONFORMA_OK) << before.error_message;
+  s.duration_s = 1e300;
+  EXPECT_EQ(conforma_rig_process_sample(rig, &s, &r), CONFORMA_ERROR_INPUT);
+  EXPECT_NE(std::string(r.error_message).find("duration_s"), std::string::npos) << r.error_message;
+  s = CSample(0);
+  ASSERT_EQ(conforma_rig_process_sample(rig, &s, &r), CONFORMA_OK) << r.error_message;
+  EXPECT_EQ(r.status, 0) << r.error_message;
+  EXPECT_GT(r.contact[0].wheel_wear_max_depth_m, 0.0);
+  s.lateral_velocity_m_s = 1e300;
+  EXPECT_EQ(conforma_rig_process_sample(rig, &s, &r), CONFORMA_ERROR_INPUT);
+  EXPECT_NE(std::string(r.error_message).find("lateral velocity"), std::string::npos) << r.error_message;
   conforma_rig_destroy(rig);
   conforma_rig_destroy(nullptr);
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "conforma/wheel_contact.hpp"
@@ -119,6 +120,71 @@ TEST(CApiStatus, ExactModelAsThePipelineSolvesIt) {
   }
   EXPECT_EQ(fx[0], fx[1]);
   EXPECT_NE(fx[0], 0.0);
+}
+
+// Session 25's fuzzing of the C API: input that came back as NaN forces with CONFORMA_OK, as "no contact", or that
+// was silently replaced by a default, is CONFORMA_ERROR_INPUT naming the field; the handle's last error names a NULL
+// result.
+TEST(CApiStatus, AbsurdStatesAndParametersAreInputErrors) {
+  CApiMBenchModel mbench;
+  ASSERT_NO_FATAL_FAILURE(mbench.Create());
+  const conforma_evaluation_options o = CApiMBenchModel::RigidEquilibriumOptions();
+  conforma_wheelset_result r;
+  struct Case {
+    const char* named;
+    void (*change)(conforma_wheelset_state*);
+  };
+  const Case states[] = {
+      {"yaw_rate_rad_s", [](conforma_wheelset_state* s) { s->yaw_rate_rad_s = 1e300; }},
+      {"lateral_velocity_m_s", [](conforma_wheelset_state* s) { s->lateral_velocity_m_s = 1e9; }},
+      {"axle_angular_velocity_rad_s", [](conforma_wheelset_state* s) { s->axle_angular_velocity_rad_s = 1e300; }},
+      {"axle_angular_velocity_rad_s", [](conforma_wheelset_state* s) { s->forward_speed_m_s = 1e-300; }},
+      {"state.yaw_rad", [](conforma_wheelset_state* s) { s->yaw_rad = 1e9; }},
+  };
+  for (const Case& c : states) {
+    conforma_wheelset_state s = CApiMBenchModel::State(3.0);
+    c.change(&s);
+    EXPECT_EQ(conforma_evaluate(mbench.model, &s, &o, &r), CONFORMA_ERROR_INPUT) << c.named;
+    EXPECT_NE(std::string(r.error_message).find(c.named), std::string::npos) << r.error_message;
+  }
+  // a push-down of 30 mm below rigid contact (came back as "no contact", zero forces)
+  conforma_evaluation_options deep = o;
+  deep.normal_mode = CONFORMA_GIVEN_APPROACH;
+  deep.approach_m = 0.03;
+  const conforma_wheelset_state s = CApiMBenchModel::State(3.0);
+  EXPECT_EQ(conforma_evaluate(mbench.model, &s, &deep, &r), CONFORMA_ERROR_INPUT);
+  EXPECT_NE(std::string(r.error_message).find("approach_m"), std::string::npos) << r.error_message;
+  EXPECT_EQ(conforma_evaluate(mbench.model, &s, &o, nullptr), CONFORMA_ERROR_NULL);
+  char last[CONFORMA_ERROR_TEXT];
+  conforma_model_last_error(mbench.model, last, sizeof last);
+  EXPECT_NE(std::string(last).find("result is NULL"), std::string::npos) << last;
+
+  struct Params {
+    const char* named;
+    void (*change)(conforma_track_params*, conforma_contact_params*);
+  };
+  const Params params[] = {
+      {"rail_inclination_rad", [](conforma_track_params* t, conforma_contact_params*) { t->rail_inclination_rad = NAN; }},
+      {"gauge_m", [](conforma_track_params* t, conforma_contact_params*) { t->gauge_m = 1435.0; }},
+      {"kp_strips", [](conforma_track_params*, conforma_contact_params* c) { c->kp_strips = 1 << 30; }},
+      {"shear_modulus_Pa", [](conforma_track_params*, conforma_contact_params* c) { c->shear_modulus_Pa = 100.0; }},
+      {"neither", [](conforma_track_params* t, conforma_contact_params*) {
+         static const std::string long_name(4999, 'a');
+         t->wheel_profile = long_name.c_str();
+       }},
+  };
+  for (const Params& c : params) {
+    conforma_track_params track;
+    conforma_contact_params contact;
+    conforma_default_track_params(&track);
+    conforma_default_contact_params(&contact);
+    c.change(&track, &contact);
+    conforma_model* model = nullptr;
+    char error[CONFORMA_ERROR_TEXT];
+    EXPECT_EQ(conforma_model_create(&track, &contact, &model, error, sizeof error), CONFORMA_ERROR_INPUT) << c.named;
+    EXPECT_NE(std::string(error).find(c.named), std::string::npos) << error;
+    conforma_model_destroy(model);
+  }
 }
 
 }  // namespace

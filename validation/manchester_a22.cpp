@@ -76,10 +76,13 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
   contact.kp_spin_about_patch_centre = options.kp_spin_about_patch_centre;
   contact.kp_local_flexibilities = options.kp_local_flexibilities;
   contact.load_balance = options.load_balance;
+  contact.validate();  // before the parallel loop: an exception may not leave an OpenMP region (it aborted Python)
   std::vector<ManchesterComparison> out(cases.size());
   ProgressCounter progress(options.on_progress, static_cast<double>(cases.size()));
+  std::string first_error;  // of the lowest case index (the same message for any thread count)
+  int first_error_case = -1;
 #pragma omp parallel for schedule(dynamic)
-  for (int i = 0; i < static_cast<int>(cases.size()); ++i) {
+  for (int i = 0; i < static_cast<int>(cases.size()); ++i) try {
     const ManchesterReferenceCase& c = cases[i];
     const ProgressCounter::Unit counted(progress, "case " + std::to_string(c.id));
     ManchesterComparison& r = out[i];
@@ -118,7 +121,12 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
     r.err_area = r.area_mm2 / c.area_mm2 - 1.0;
     r.err_fx_N = fx - c.fx_N;
     r.err_fs_N = fs - c.fs_N;
+  } catch (const std::exception& e) {  // (an exception may not leave the parallel region: rethrown below)
+#pragma omp critical(manchester_error)
+    if (first_error_case < 0 || i < first_error_case) first_error = e.what(), first_error_case = i;
   }
+  if (first_error_case >= 0)
+    throw InputError("Manchester case " + std::to_string(cases[first_error_case].id) + ": " + first_error);
   return out;
 }
 

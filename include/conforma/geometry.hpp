@@ -69,6 +69,10 @@ constexpr double kMaxWheelRadius_m = 2.0;
 // Largest wheelset yaw relative to the track a contact entry point accepts (rad; angles of attack reach ~50 mrad on
 // a 20 m tram curve); beyond it the command line and table builds refuse the pose instead of solving it
 constexpr double kMaxWheelsetYaw_rad = 0.2;
+// InputError naming `name` unless yaw_rad is finite and within kMaxWheelsetYaw_rad (the message in mrad). For the
+// entry points (command line, Python, C API); the solvers themselves do not limit the yaw (a derailing wheelset in
+// the time domain is a result, not an input error).
+void RequireWheelsetYaw(double yaw_rad, const std::string& name);
 
 // The wheelset and track (see WHEEL / RAIL PLACEMENT above); validate() checks the ranges given.
 struct TrackSetup {

@@ -85,6 +85,11 @@ struct ProfilePoints {
 
 ProfilePoints ReadProfilePoints(const std::string& path, const ProfileReadOptions& options = {});
 Profile LoadProfile(const std::string& path, const ProfileReadOptions& options = {});
+// Points given in memory (Python's profile_from_points), in metres and our convention: ordered and checked as a
+// file's points are (docs/profiles-and-formats.md §3; `source`:N in a message is the N-th point, 1-based), then fitted.
+// A self-intersecting curve was silently re-sorted by y before (fuzzing, session 25).
+Profile ProfileFromCheckedPoints(std::vector<Eigen::Vector2d> points_m, ProfileKind kind, const ProfileFitOptions& fit,
+                                 const std::string& source);
 
 // Simpack .prw (wheel) / .prr (rail) file, mm, points spaced spacing_m in arc length. Rails are written with
 // z down (Simpack convention); reading the file back with LoadProfile gives the same curve.

@@ -136,6 +136,14 @@ double BalancedVerticalForce(const WheelContactReport& report, const WheelContac
 // The wheel's main patch: the largest normal force, the first of equal ones (nullptr without a patch).
 const PatchReport* MainPatch(const WheelContactReport& report);
 
+// For the entry points (Python, C API, command line): InputError naming `where` unless the velocity is finite, the
+// forward speed positive and the rigid creepages it implies at the nominal radius r0 (|v_y / V|, |Omega r0 / V - 1|,
+// |yaw rate / V| in 1/m) within kMaxGivenCreepage: a yaw rate of 1e300 rad/s gave NaN forces with an OK status
+// (fuzzing, session 25). The solvers themselves do not limit it (a time-domain run that diverges is a result).
+void RequireRollingVelocity(const WheelsetVelocity& velocity, double nominal_radius_m, const std::string& where);
+// For the entry points: InputError naming `name` unless |approach_m| <= kMaxApproach_m.
+void RequireApproach(double approach_m, const std::string& name);
+
 // pose.vertical_m is the starting point of the push-down in load control and the actual position in approach
 // mode. Throws InputError for bad options or velocities; no contact is a status.
 WheelContactReport SolveWheelContact(const WheelsetTrackGeometry& geometry, Side side, const WheelsetPose& pose,

@@ -29,6 +29,11 @@ constexpr double kMaxGivenCreepage = 1e3;
 // The most FASTSIM elements per strip accepted (fastsim_elements): 10,000, ~300 times the default; 1e8 ran out of
 // memory after 9 s.
 constexpr int kMaxFastsimElements = 10000;
+// The most KP strips across a patch accepted (kp_strips; KpOptions::strips_across_contact has the same bound).
+constexpr int kMaxKpStrips = 100000;
+// The largest push-down below rigid contact an entry point accepts in approach mode, m: an elastic approach is tens of
+// micrometres; 15-100 mm went past the rail's tabulated head and came back as "no contact" (fuzzing, session 25).
+constexpr double kMaxApproach_m = 10e-3;
 
 // What load control balances against the load (docs/physics-reference.md §3.6.1).
 //   Total:    the wheel's total vertical force, pressure AND creep forces of all patches (WheelContactReport::

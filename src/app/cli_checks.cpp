@@ -9,14 +9,9 @@
 
 #include "cli_setup.hpp"
 #include "conforma/error.hpp"
-#include "conforma/geometry.hpp"
 #include "conforma/wear_simulation.hpp"
 
 namespace conforma::cli {
-
-namespace {
-constexpr double kMaxApproach_mm = 10.0;
-}  // namespace
 
 void EnsureOutputFolder(const std::string& dir, const std::string& option) {
   if (dir.empty()) throw InputError("option " + option + ": empty output folder");
@@ -71,23 +66,6 @@ void CheckRunLimits(bool steps_given, int steps, bool km_given, double km) {
     std::snprintf(text, sizeof text, "option --km must be finite and >= 0 (omit it for the scenario's), got %g", km);
     throw InputError(text);
   }
-}
-
-void RequireWheelsetYaw(double yaw_mrad, const std::string& option) {
-  if (std::isfinite(yaw_mrad) && std::abs(yaw_mrad) <= kMaxWheelsetYaw_rad * 1e3) return;
-  char text[200];
-  std::snprintf(text, sizeof text, "option %s = %g mrad: a wheelset yaw on track is within +-%g mrad", option.c_str(),
-                yaw_mrad, kMaxWheelsetYaw_rad * 1e3);
-  throw InputError(text);
-}
-
-void RequireApproach(double approach_mm, const std::string& option) {
-  if (std::isfinite(approach_mm) && std::abs(approach_mm) <= kMaxApproach_mm) return;
-  char text[220];
-  std::snprintf(text, sizeof text,
-                "option %s = %g mm: the push-down below rigid contact is an elastic approach, within +-%g mm (tens of "
-                "micrometres for a wheel load)", option.c_str(), approach_mm, kMaxApproach_mm);
-  throw InputError(text);
 }
 
 std::string WearModelHelp(const std::string& what) { return what + " (" + WearContactModelNames() + ")"; }

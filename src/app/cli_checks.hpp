@@ -22,12 +22,6 @@ std::vector<std::string> ParseWearModelList(const std::string& list, const std::
 // >= 0, --km finite and >= 0; InputError naming the option otherwise (a negative or NaN value meant "the
 // scenario's" silently before).
 void CheckRunLimits(bool steps_given, int steps, bool km_given, double km);
-// A wheelset yaw given on the command line [mrad]: finite and within kMaxWheelsetYaw_rad; InputError naming `option`
-// (--yaw-mrad 1e9 was solved as an angle modulo 2 pi, exit 0, session 24's fuzzing).
-void RequireWheelsetYaw(double yaw_mrad, const std::string& option);
-// A push-down below rigid contact given on the command line [mm]: finite and |.| <= 10 mm (an elastic approach is
-// tens of micrometres; --approach-mm 1e6 moved the wheelset 1 km and reported no contact with exit 0).
-void RequireApproach(double approach_mm, const std::string& option);
 // Help text of a wear run's --model(s) option: "<what> (hertz, kp, kpec, conformal, auto)".
 std::string WearModelHelp(const std::string& what);
 

@@ -30,8 +30,8 @@ struct ContactCommand {
     fields.check_writable();  // before solving
     options.keep_fields = fields.enabled();
     require_finite(y_mm, "--y-mm");
-    RequireWheelsetYaw(yaw_mrad, "--yaw-mrad");
-    RequireApproach(approach_mm, "--approach-mm");
+    RequireWheelsetYaw(yaw_mrad * 1e-3, "option --yaw-mrad");
+    RequireApproach(approach_mm * 1e-3, "option --approach-mm (in m)");
     if (xi || eta || phi_per_m) {
       options.creepages_given = true;
       options.creepages = {xi.value_or(0.0), eta.value_or(0.0), phi_per_m.value_or(0.0)};

@@ -31,8 +31,8 @@ struct SweepCommand {
     if (names.empty()) throw InputError("option --models: no contact model given");
     if (to_mm < from_mm) throw InputError("option --to-mm must be >= --from-mm");
     require_finite(yaw_per_y_mrad_per_mm, "--yaw-per-y");
-    RequireWheelsetYaw(yaw_per_y_mrad_per_mm * from_mm, "--yaw-per-y x --from-mm");
-    RequireWheelsetYaw(yaw_per_y_mrad_per_mm * to_mm, "--yaw-per-y x --to-mm");
+    RequireWheelsetYaw(yaw_per_y_mrad_per_mm * from_mm * 1e-3, "option --yaw-per-y x --from-mm");
+    RequireWheelsetYaw(yaw_per_y_mrad_per_mm * to_mm * 1e-3, "option --yaw-per-y x --to-mm");
     // at most 100,000 poses (a sweep of 1e-9 mm steps asked for 1.8e10 and ran until killed)
     constexpr double kMaxSweepPoses = 1e5;
     if ((to_mm - from_mm) / step_mm + 1.0 > kMaxSweepPoses) {

@@ -21,10 +21,26 @@ const char* to_string(EquilibriumStatus status) {
   }
 }
 
+namespace {
+constexpr double kMinTrackGauge_m = 0.1;  // (a 1:5 scaled roller rig: 287 mm)
+constexpr double kMaxTrackGauge_m = 1.8;
+}  // namespace
+
 void TrackSetup::validate() const {
   require_positive(gauge_m, "TrackSetup.gauge_m");
   require_non_negative(gauge_height_m, "TrackSetup.gauge_height_m");
   require_positive(flange_back_distance_m, "TrackSetup.flange_back_distance_m");
+  // a gauge in mm was accepted and failed later as "no rigid contact" (fuzzing, session 25): 381 mm (the narrowest
+  // public gauge) ... 1.8 m (broad gauges reach 1.676 m)
+  const std::pair<double, const char*> lengths[] = {{gauge_m, "TrackSetup.gauge_m"},
+                                                    {flange_back_distance_m, "TrackSetup.flange_back_distance_m"}};
+  for (const auto& [value, name] : lengths)
+    if (value < kMinTrackGauge_m || value > kMaxTrackGauge_m) {
+      char text[240];
+      std::snprintf(text, sizeof text, "%s = %g m is outside %g ... %g m: not a railway track (unit?)", name, value,
+                    kMinTrackGauge_m, kMaxTrackGauge_m);
+      throw InputError(text);
+    }
   require_finite(flange_back_position_m, "TrackSetup.flange_back_position_m");
   for (int k = 0; k < 2; ++k) {
     const std::string name = std::string("TrackSetup.nominal_radius_m[") + (k == 0 ? "left" : "right") + "]";
@@ -53,6 +69,14 @@ void TrackSetup::validate() const {
     if (rail[k].kind() != ProfileKind::Rail)
       throw InputError(std::string("TrackSetup.rail[") + side + "] is a wheel profile (" + rail[k].source() + ")");
   }
+}
+
+void RequireWheelsetYaw(double yaw_rad, const std::string& name) {
+  if (std::isfinite(yaw_rad) && std::abs(yaw_rad) <= kMaxWheelsetYaw_rad) return;
+  char text[240];
+  std::snprintf(text, sizeof text, "%s = %g mrad: a wheelset yaw on track is within +-%g mrad (unit?)", name.c_str(),
+                yaw_rad * 1e3, kMaxWheelsetYaw_rad * 1e3);
+  throw InputError(text);
 }
 
 TrackSetup MakeSymmetricTrack(const Profile& wheel, const Profile& rail, double rail_inclination_rad) {

@@ -75,7 +75,9 @@ void WheelContactOptions::validate() const {
   if (fastsim_elements < 2 || fastsim_elements > kMaxFastsimElements)
     throw InputError("option 'fastsim_elements' must lie in [2, " + std::to_string(kMaxFastsimElements) + "], got " +
                      std::to_string(fastsim_elements));
-  if (kp_strips < 3) throw InputError("option 'kp_strips' must be >= 3");
+  if (kp_strips < 3 || kp_strips > kMaxKpStrips)
+    throw InputError("option 'kp_strips' must lie in [3, " + std::to_string(kMaxKpStrips) + "], got " +
+                     std::to_string(kp_strips));
   require_positive(exact_element_size_m, "exact_element_size_m");
   if (exact_max_elements < 1) throw InputError("option 'exact_max_elements' must be >= 1");
   auto_selection.validate();
@@ -94,6 +96,34 @@ void WheelContactOptions::validate() const {
         throw InputError(text);
       }
   }
+}
+
+void RequireRollingVelocity(const WheelsetVelocity& v, double nominal_radius_m, const std::string& where) {
+  require_positive(v.forward_speed_m_s, (where + ".forward_speed_m_s").c_str());
+  require_finite(v.lateral_velocity_m_s, (where + ".lateral_velocity_m_s").c_str());
+  require_finite(v.yaw_rate_rad_s, (where + ".yaw_rate_rad_s").c_str());
+  require_finite(v.axle_angular_velocity_rad_s, (where + ".axle_angular_velocity_rad_s").c_str());
+  const double V = v.forward_speed_m_s;
+  const std::pair<double, const char*> rigid[] = {
+      {v.lateral_velocity_m_s / V, "lateral_velocity_m_s / forward_speed_m_s"},
+      {v.axle_angular_velocity_rad_s * nominal_radius_m / V - 1.0, "axle_angular_velocity_rad_s * r0 / forward_speed_m_s - 1"},
+      {v.yaw_rate_rad_s / V, "yaw_rate_rad_s / forward_speed_m_s [1/m]"}};
+  for (const auto& [value, name] : rigid)
+    if (!(std::fabs(value) <= kMaxGivenCreepage)) {
+      char text[320];
+      std::snprintf(text, sizeof text, "%s: %s = %.6g is beyond +-%g: the creepages would be beyond any slip (unit?)",
+                    where.c_str(), name, value, kMaxGivenCreepage);
+      throw InputError(text);
+    }
+}
+
+void RequireApproach(double approach_m, const std::string& name) {
+  if (std::isfinite(approach_m) && std::fabs(approach_m) <= kMaxApproach_m) return;
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "%s = %g m: the push-down below rigid contact is an elastic approach, within +-%g m (tens of "
+                "micrometres for a wheel load)", name.c_str(), approach_m, kMaxApproach_m);
+  throw InputError(text);
 }
 
 FrictionLaw WheelContactOptions::effective_friction_law() const {

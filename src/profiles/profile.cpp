@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <sstream>
 
@@ -381,8 +382,19 @@ std::vector<Eigen::Vector2d> Profile::samples() const {
   return out;
 }
 
+namespace {
+constexpr double kMinSampleSpacing_m = 1e-6;
+}  // namespace
+
 std::vector<Eigen::Vector2d> Profile::sample(double spacing_m) const {
   require_positive(spacing_m, "spacing_m");
+  // (a spacing of 1e-10 m asked for 1.5e9 points, 1e-12 overflowed the count: fuzzing, session 25)
+  if (spacing_m < kMinSampleSpacing_m) {
+    char text[160];
+    std::snprintf(text, sizeof text, "spacing_m = %g m is below %g m (1 um): a profile sampled finer is noise", spacing_m,
+                  kMinSampleSpacing_m);
+    throw InputError(text);
+  }
   const int n = std::max(2, static_cast<int>(std::ceil(length_ / spacing_m)) + 1);
   std::vector<Eigen::Vector2d> out(n);
   for (int i = 0; i < n; ++i) out[i] = position(length_ * i / (n - 1));

@@ -33,9 +33,11 @@ void RefuseFileOptions(const std::string& name, const std::string& what, const P
 Profile ProfileFile(const std::string& name, ProfileKind kind, const std::string& what, const std::string& built_in,
                     const FileResolver& resolve_file, const ProfileReadOptions& read) {
   const std::string path = resolve_file ? resolve_file(name) : name;
-  if (!std::filesystem::exists(path))
-    throw InputError(what + ": '" + name + "' is neither " + built_in + " nor a file" +
-                     (path != name ? " (looked for " + path + ")" : std::string()));
+  std::error_code ec;  // (a 5000-character name threw "File name too long" as an internal error: fuzzing, session 25)
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(what + ": '" + (name.size() > 200 ? name.substr(0, 200) + "...'" : name + "'") + " is neither " +
+                     built_in + " nor a file" + (ec ? " (" + ec.message() + ")" : std::string()) +
+                     (path != name && path.size() <= 200 ? " (looked for " + path + ")" : std::string()));
   ProfileReadOptions o = read;
   o.kind = kind;
   return LoadProfile(path, o);

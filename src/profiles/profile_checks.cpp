@@ -24,6 +24,7 @@ constexpr double kPeakMargin_m = 3e-3;        // an extreme is a flange (not a p
 constexpr double kRailFlatWidth_m = 25e-3;    // crown of a rail head: this wide with |slope| < kFlatSlope
 constexpr double kFlatSlope = 0.25;
 constexpr double kMinProfileWidth_m = 1e-3;  // narrowest lateral extent (CONTACT's test bank: a 10 mm circle, 19.8 mm)
+constexpr double kMinRailWidth_m = 20e-3;    // a rail narrower than this and higher than wide: columns swapped
 constexpr double kRailCrownDepth_m = 5e-3;    // a rail head is at least kRailCrownWidth_m wide this far below its top
 constexpr double kRailCrownWidth_m = 30e-3;   // (worn 50E4 ... 60E1 heads: 50-70 mm; a wheel flange: ~15 mm)
 // Noise: the median jump of the curvature between consecutive point triples on the running surface above 1/this
@@ -96,11 +97,12 @@ void check_extent(const ProfilePoints& p, const std::vector<double>& ys, const s
                          " mm in height (z); a wheel or rail profile spans 50-150 mm: wrong length unit (a file in "
                          "metres read as millimetres: --" + to_string(p.kind) + "-units m, or the file's own unit) "
                          "or the columns swapped");
-  if (p.kind == ProfileKind::Wheel && height > width)
+  if ((p.kind == ProfileKind::Wheel || width < kMinRailWidth_m) && height > width)
     throw InputError(p.source, 0,
-                     "the wheel profile is " + mm(height, 1) + " mm high (z) and only " + mm(width, 1) +
+                     "the " + what + " is " + mm(height, 1) + " mm high (z) and only " + mm(width, 1) +
                          " mm wide (y); a wheel profile is wider than high (tread and flange ~130-150 mm, flange "
-                         "~30 mm high): are the y and z columns swapped (MiniProf: ColumnDef)?");
+                         "~30 mm high), a rail head is 50-75 mm wide: are the y and z columns swapped (MiniProf: "
+                         "ColumnDef)?");
 }
 
 // A rail's running surface is a head at least kRailCrownWidth_m wide kRailCrownDepth_m below its top; a wheel profile

@@ -1,6 +1,7 @@
 // Plain two-column profile files (.txt .dat .csv): "y z" per line, separated by commas, semicolons, tabs or
 // spaces; '#' starts a comment; non-numeric lines before the first data line are header lines.
 #include <algorithm>
+#include <regex>
 #include <sstream>
 
 #include "conforma/error.hpp"
@@ -11,9 +12,10 @@ namespace conforma {
 namespace profile_io {
 
 namespace {
-// "-7,00 9,51": two whitespace-separated tokens, each a number once its one comma is a point (fuzzing, session 25:
-// such a file was read as four columns, y and z taken from the integer parts)
-bool DecimalCommas(const std::string& line) {
+// "-7,00 9,51" or "-7,00;9,51": two tokens separated by whitespace or a semicolon, each a number once its one comma
+// is a point (fuzzing, sessions 24-25: such a file was read as four columns, y and z taken from the integer parts)
+bool DecimalCommas(std::string line) {
+  std::replace(line.begin(), line.end(), ';', ' ');
   std::istringstream in(line);
   std::string token;
   int count = 0;
@@ -25,6 +27,11 @@ bool DecimalCommas(const std::string& line) {
     ++count;
   }
   return count == 2;
+}
+// A token written as a decimal number ("-1.5", "1e400", 400 digits) whether or not it fits a double.
+bool NumberShaped(const std::string& token) {
+  static const std::regex number(R"([+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)");
+  return std::regex_match(token, number);
 }
 }  // namespace
 
@@ -43,12 +50,15 @@ ProfilePoints read_columns(const std::string& path, const ProfileReadOptions& op
   for (size_t li = 0; li < lines.size(); ++li) {
     const int ln = static_cast<int>(li) + 1;
     std::string t = lines[li];
+    if (li == 0 && t.rfind("\xEF\xBB\xBF", 0) == 0) t = t.substr(3);  // a UTF-8 byte order mark (dropped the point)
     if (const auto h = t.find('#'); h != std::string::npos) t = t.substr(0, h);
     t = trim(t);
     if (t.empty()) continue;
     const auto f = split_fields(t);
     double y, z;
     const bool ok_y = parse_number(f[0], y);
+    if (!in_data && !ok_y && NumberShaped(f[0]))  // (1e400 on the first line was dropped as a header line)
+      throw InputError(path, ln, "'" + f[0] + "' is not a finite number");
     if (!in_data && !ok_y) {  // header line (e.g. "y_mm,z_mm")
       out.header["header." + std::to_string(ln)] = t;
       continue;

@@ -248,6 +248,24 @@ Profile LoadProfile(const std::string& path, const ProfileReadOptions& options) 
   return Profile::FromPoints(std::move(p.points_m), p.kind, fit, path);
 }
 
+Profile ProfileFromCheckedPoints(std::vector<Eigen::Vector2d> points_m, ProfileKind kind, const ProfileFitOptions& fit,
+                                 const std::string& source) {
+  ProfilePoints p;
+  p.source = source;
+  p.kind = kind;
+  p.points_m = std::move(points_m);
+  p.lines.resize(p.points_m.size());
+  std::iota(p.lines.begin(), p.lines.end(), 1);
+  ProfileReadOptions options;
+  options.kind = kind;
+  options.fit = fit;
+  profile_io::finish_points(p, options.fit);
+  profile_io::check_points(p, options);
+  ProfileFitOptions ordered = fit;
+  ordered.function_of_y = false;  // the points are in validated curve order now (as LoadProfile)
+  return Profile::FromPoints(std::move(p.points_m), kind, ordered, source);
+}
+
 void SaveProfileCsv(const Profile& profile, const std::string& path, double spacing_m) {
   require_positive(spacing_m, "spacing_m");
   if (profile.empty()) throw InputError(path, 0, "cannot save an empty profile");

@@ -1,7 +1,9 @@
 // Wheel reference dimensions Sd, Sh, qR (paper 001 §7.2 "Reference dimensions", paper 003 §7).
 #include "conforma/wheel_dimensions.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "conforma/error.hpp"
@@ -19,6 +21,10 @@ double crossing(const Profile& p, double s0, double s1, double level) {
   return 0.5 * (s0 + s1);
 }
 
+}  // namespace
+
+namespace {
+constexpr double kFlangeBackBeyondProfile_m = 5e-3;
 }  // namespace
 
 WheelDimensions MeasureWheelDimensions(const Profile& wheel, double flange_back_y_m, double taping_line_y_m) {
@@ -68,6 +74,15 @@ WheelDimensions MeasureWheelDimensions(const Profile& wheel, double flange_back_
   d.sd_point = wheel.position(s_sd);
   d.qr_point = wheel.position(s_qr);
   d.sh_m = d.tip.y() - z0;
+  // the flange back is where Sd is measured from: more than 5 mm beyond the profile's flange-side end it is not on this
+  // wheel (-100 mm gave Sd = 62.5 mm for S1002 without a word: fuzzing, session 25)
+  const double y_end = std::min(wheel.position(0.0).x(), wheel.position(wheel.length()).x());
+  if (flange_back_y_m < y_end - kFlangeBackBeyondProfile_m) {
+    char text[220];
+    std::snprintf(text, sizeof text, "MeasureWheelDimensions: the flange back y = %.3f mm lies beyond the profile, which "
+                  "ends at y = %.3f mm", flange_back_y_m * 1e3, y_end * 1e3);
+    throw InputError(src, 0, text);
+  }
   d.sd_m = d.sd_point.x() - flange_back_y_m;
   d.qr_m = d.sd_point.x() - d.qr_point.x();
   return d;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <utility>
 
@@ -44,6 +45,10 @@ double RollerRigEq2WheelsetSpeed(const std::array<double, 2>& w, const std::arra
   // paper 000 eq. 2 with xi_1 = -xi_2: 2 = omega_3 (r_1/(omega_1 R_1) + r_2/(omega_2 R_2))
   return 2.0 / (r[0] / (w[0] * R[0]) + r[1] / (w[1] * R[1]));
 }
+
+namespace {
+constexpr double kMaxRigLateralVelocity_m_s = 10.0;
+}  // namespace
 
 void RollerRigKinematicsOptions::validate() const {
   contact.validate();
@@ -286,11 +291,22 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
   require_finite(in.lateral_m, "rig lateral shift y");
   require_finite(in.yaw_rad, "rig yaw");
   require_finite(in.lateral_velocity_m_s, "rig lateral velocity");
+  if (std::fabs(in.lateral_velocity_m_s) > kMaxRigLateralVelocity_m_s) {  // (1e300 ended as "traction is not finite")
+    char text[200];
+    std::snprintf(text, sizeof text, "rig lateral velocity = %g m/s is beyond +-%g m/s (unit?)", in.lateral_velocity_m_s,
+                  kMaxRigLateralVelocity_m_s);
+    throw InputError(text);
+  }
   require_finite(in.axle_torque_Nm, "rig axle torque");
   for (int i = 0; i < 2; ++i) {
     require_positive(in.roller_speed_rad_s[i], i == 0 ? "roller 1 speed omega_1" : "roller 2 speed omega_2");
     require_non_negative(in.wheel_load_N[i], i == 0 ? "left wheel load" : "right wheel load");
-    if (in.wheel_load_N[i] > kMaxWheelLoadN) throw InputError("rig wheel load exceeds kMaxWheelLoadN");
+    if (in.wheel_load_N[i] > kMaxWheelLoadN) {
+      char text[200];
+      std::snprintf(text, sizeof text, "%s wheel load = %g N is above %g N (10 MN): not a wheel load (unit?)",
+                    i == 0 ? "left" : "right", in.wheel_load_N[i], kMaxWheelLoadN);
+      throw InputError(text);
+    }
   }
   const bool measured = !std::isnan(in.wheelset_speed_rad_s);
   if (measured) require_positive(in.wheelset_speed_rad_s, "measured wheelset speed omega_3");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <unordered_map>
@@ -197,6 +198,10 @@ RollerRigState MakeRollerRigState(const RollerRigSampleOptions& options) {
   return MakeRollerRigState(options, {w, w}, {r, r});
 }
 
+namespace {
+constexpr double kMaxDepthPerSample_m = 1e-3;
+}  // namespace
+
 RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, RollerRigState* state,
                                        const RollerRigSample& sample) {
   options.validate();
@@ -282,6 +287,17 @@ RollerRigSampleResult ProcessRigSample(const RollerRigSampleOptions& options, Ro
     res.depth_per_approach = std::max(res.depth_per_approach, ratio);
   }
   res.stability_rule_violated = res.depth_per_approach > options.max_depth_per_approach;
+  // a sample that removes more than a millimetre at once is no rig time step (duration_s = 1e300 removed 2e289 m and
+  // destroyed the rig's profiles, fuzzing, session 25): refused before the state changes
+  for (int k = 0; k < 2; ++k)
+    if (!(res.wheel_wear_max_depth_m[k] + res.roller_wear_max_depth_m[k] <= kMaxDepthPerSample_m)) {
+      char text[260];
+      std::snprintf(text, sizeof text, "rig sample duration_s = %g s removes %g m at once (wheel and roller, %s side), "
+                    "more than %g m: not a rig time step (the rig's profiles are left as they were)",
+                    sample.duration_s, res.wheel_wear_max_depth_m[k] + res.roller_wear_max_depth_m[k],
+                    k == 0 ? "left" : "right", kMaxDepthPerSample_m);
+      throw InputError(text);
+    }
 
   // ---- profile update (paper 000 §3.5). The new values are built aside and committed together, so that a failed
   // update leaves the state as it was; profiles are copied only where they change (not the whole state every step).

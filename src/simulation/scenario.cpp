@@ -420,6 +420,11 @@ void Scenario::validate() const {
                      " mm (the flangeway clearance is ~5-10 mm, a flange ~30 mm high; unit?)");
   if (!(gauge_m > 1.0 && gauge_m < 2.0)) throw InputError(where + "track.gauge_mm out of range");
   if (wheel.empty() || rail.empty()) throw InputError(where + "profiles missing");
+  try {  // the track the run builds (wheel radius, gauge, profiles' kinds): check_scenario refuses what the run would
+    MakeTrackSetup().validate();
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
+  }
 }
 
 TrackSetup Scenario::MakeTrackSetup() const {
