@@ -351,13 +351,12 @@ void ParseDynamicKinematics(const Reader& r, const YAML::Node& n, ScenarioDynami
   }
 }
 
-}  // namespace
-
-namespace {
+// ranges of a railway line, checked by Scenario::validate
 constexpr double kMaxClassSpeed_m_s = 600.0 / 3.6;  // (the rail speed record: 575 km/h)
 constexpr double kMaxCantPerGauge = 0.2;             // 287 mm on 1435 mm: above any line's cant
 constexpr double kMaxClassAcceleration_m_s2 = 5.0;   // ~ mu g with mu = 0.5
-constexpr double kMaxTangentAmplitude_m = 0.1;     // (flangeway clearance ~5-10 mm, flange ~30 mm high)
+constexpr double kMaxTangentAmplitude_m = 0.1;       // (flangeway clearance ~5-10 mm, flange ~30 mm high)
+
 }  // namespace
 
 void Scenario::validate() const {
