@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -143,6 +144,11 @@ Track MakeTrack(const py::object& wheel, const py::object& rail, std::optional<d
   spec.flange_back_distance_m = flange_back_distance_m, spec.flange_back_position_m = flange_back_position_m;
   spec.nominal_radius_m = nominal_radius_m;
   const bool wheel_is_name = py::isinstance<py::str>(wheel), rail_is_name = py::isinstance<py::str>(rail);
+  // (Track(5) raised pybind's bare "Unable to cast Python instance to C++ type": fuzzing, session 25)
+  for (const auto& [value, is_name, name] : {std::tuple{&wheel, wheel_is_name, "wheel"}, {&rail, rail_is_name, "rail"}})
+    if (!is_name && !py::isinstance<Profile>(*value))
+      throw py::type_error(std::string("Track: ") + name + " must be a profile name, a file path or a Profile, not " +
+                           py::str(py::type::of(*value).attr("__name__")).cast<std::string>());
   if (wheel_is_name && rail_is_name) {
     spec.wheel = wheel.cast<std::string>(), spec.rail = rail.cast<std::string>();
     py::gil_scoped_release release;

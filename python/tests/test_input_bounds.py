@@ -40,6 +40,8 @@ def test_poses_beyond_a_wheelset_on_track_are_input_errors(track):
         track.mounted_rail("middle")
     with pytest.raises(conforma.InputError, match="gauge_m"):
         conforma.Track(gauge_m=1435)
+    with pytest.raises(TypeError, match="wheel must be a profile name"):  # pybind's bare RuntimeError before
+        conforma.Track(5)
     with pytest.raises(conforma.InputError, match="shear_modulus_Pa"):
         conforma.contact(track, shear_modulus_Pa=100.0)
     # a pose within the bounds still solves
