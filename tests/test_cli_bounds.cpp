@@ -253,4 +253,26 @@ TEST(CliBounds, DynamicsNamesAFlangeClimbingYOverQ) {
   EXPECT_EQ(centred.err.find("derailment risk"), std::string::npos) << centred.err;
 }
 
+// The other commands (session 25's second fuzzing): sizes that crashed, hung or ran away, and option mistakes that
+// were silently the defaults, are input errors up front; a malformed command line is exit 2 like any input error
+// (CLI11's own codes 104-114 before).
+TEST(CliBounds, OtherCommandsRefuseRunawayInput) {
+  ExpectInputError("contact --bogus", "--bogus");
+  ExpectInputError("contact --y-mm abc", "--y-mm");
+  EXPECT_EQ(RunCli("contact --help").exit_code, 0);
+  ExpectInputError("stress --cases 2 --threads 100000 --determinism-cases 0", "--threads");  // segfaulted
+  ExpectInputError("stress --cases 2000000000 --determinism-cases 0", "--cases");           // std::bad_alloc
+  const std::string rig = "rig run --scenario '" + std::string(CONFORMA_SOURCE_DIR) + "/scenarios/roller_rig_1to5.yaml'";
+  const fs::path out = conforma::test::FreshTempDir("conforma_bounds", "rig");
+  ExpectInputError(rig + " --out '" + out.string() + "' --step-s 1e-9", "samples");  // hung
+  ExpectInputError(rig + " --out '" + out.string() + "' --step-s nan", "--step-s");  // the scenario's step before
+  ExpectInputError(rig + " --out /proc/conforma_forbidden", "--out");                // internal error before
+  fs::remove_all(out);
+  ExpectInputError("track irregularity --length-m 2.5e5", "length_m");  // quadratic in the length: hung
+  ExpectInputError("curving --class 0 --scenario '" + kScenario + "' --set kinematics.tangent_phases=100000000",
+                   "tangent_phases");
+  ExpectInputError("bench --creepage-scale 1e300 --models hertz --families mbench --no-plot", "--creepage-scale");
+  ExpectInputError("threshold --load-N 1e12", "--load-N");
+}
+
 }  // namespace

@@ -70,6 +70,15 @@ def main(argv=None):
     except CampaignError as e:
         print(f"conforma: error: {e}", file=sys.stderr)
         return 2  # exit_status.hpp InputError
+    except OSError as e:  # an output folder that cannot be made or written (a traceback before: session 25)
+        print(f"conforma: error: {e}", file=sys.stderr)
+        return 2
+    except (TypeError, ValueError, KeyError, IndexError, AttributeError) as e:
+        if a.what != "report":
+            raise
+        # a campaign folder whose files are not the campaign's (e.g. campaign.json holding a list)
+        print(f"conforma: error: {a.dir}: malformed campaign files ({type(e).__name__}: {e})", file=sys.stderr)
+        return 2
 
 
 if __name__ == "__main__":

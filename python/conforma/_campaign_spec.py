@@ -42,6 +42,7 @@ class CampaignError(ValueError):
 
 COMMANDS = ("wear", "compare", "validate")
 DEFAULT_COLUMNS = ["km", "sd_mm", "sh_mm", "qr_mm", "tread_wear_mm", "flange_wear_mm"]
+MAX_CASES = 100000  # cases of one campaign (each a wear, compare or validate run)
 _TOP_KEYS = {"name", "base", "command", "models", "steps", "args", "combine", "parameters", "outputs"}
 _OUTPUT_KEYS = {"steps_columns", "final_profiles", "files"}
 # scenario keys whose text may be a file relative to the scenario's folder (include/conforma/scenario.hpp)
@@ -106,6 +107,11 @@ def _expand_values(spec, where):
     return values
 
 
+def _check_count(n, where):
+    if n > MAX_CASES:  # (count: 1e9 or step: 1e-15 hung before the first case, fuzzing, session 25)
+        _fail(where, f"{n} values, more than {MAX_CASES} cases per campaign")
+
+
 def _range_values(spec, where):
     extra = set(spec) - {"from", "to", "step", "count"}
     if extra or "from" not in spec or "to" not in spec or (("step" in spec) == ("count" in spec)):
@@ -117,13 +123,17 @@ def _range_values(spec, where):
             _fail(where, f"'count' must be an integer >= 0, got {n!r}")
         if n == 1 and a != b:
             _fail(where, "count 1 with from != to: which end?")
+        _check_count(n, where)
         return [] if n == 0 else [_clean(a + (b - a) * i / (n - 1)) if n > 1 else a for i in range(n)]
     step = _number(spec["step"], where, "step")
     if step == 0:
         _fail(where, "step 0")
     if (b - a) / step < -1e-9:
         _fail(where, f"empty range: from {a} to {b} with step {step}")
+    if not math.isfinite((b - a) / step):
+        _fail(where, f"a range from {a} to {b} with step {step} is not finite")
     n = int(math.floor((b - a) / step + 1e-9)) + 1
+    _check_count(n, where)
     all_int = all(isinstance(v, int) for v in (a, b, step))
     return [a + i * step if all_int else _clean(a + i * step) for i in range(n)]
 
@@ -141,6 +151,7 @@ def _random_values(spec, where):
         _fail(where, f"'count' must be an integer >= 0, got {n!r}")
     if isinstance(seed, bool) or not isinstance(seed, int):
         _fail(where, f"'seed' must be an integer, got {seed!r}")
+    _check_count(n, where)
     rng = random.Random(seed)  # Mersenne Twister: the same draws on every machine and Python 3
     if kind == "integers":
         lo, hi = spec["low"], spec["high"]
@@ -298,6 +309,9 @@ def load_campaign(path):
             _fail(f"{where}: combine zip", f"the parameters have different lengths {lengths}")
         combos = list(zip(*values.values())) if keys else [()]
     else:
+        total = math.prod(len(v) for v in values.values())
+        if total > MAX_CASES:  # (10^12 combinations: MemoryError before the first case, fuzzing, session 25)
+            _fail(f"{where}: parameters", f"{total} combinations, more than {MAX_CASES} cases per campaign")
         combos = list(itertools.product(*values.values())) if keys else [()]
 
     base_sha = hashlib.sha256(base_text.encode()).hexdigest()

@@ -154,6 +154,12 @@ def free_port():
     ("parameters:\n  friction: []\n", r"no values"),
     ("parameters:\n  friction: {random: uniform, low: 0.2, high: 0.4, count: 0, seed: 1}\n", r"no values"),
     ("parameters:\n  friction: [-0.1]\n", r"friction must be > 0"),
+    # sizes that hung or ran out of memory before the first case (fuzzing, session 25)
+    ("parameters:\n  friction: {random: uniform, low: 0.2, high: 0.4, count: 1000000000, seed: 1}\n",
+     r"more than 100000 cases"),
+    ("parameters:\n  friction: {from: 0.2, to: 0.4, step: 1.0e-15}\n", r"more than 100000 cases"),
+    ("parameters:\n  friction: {from: 0.2, to: 0.4, count: 1000}\n  update.cap_mm: {from: 0.1, to: 0.4, count: 1000}\n",
+     r"1000000 combinations"),
 ])
 def test_bad_input_fails_before_any_case_runs(tmp_path, cli, body, message):
     file = write_campaign(tmp_path, body)

@@ -68,6 +68,18 @@ void CheckRunLimits(bool steps_given, int steps, bool km_given, double km) {
   }
 }
 
+void RequireThreads(long threads, const std::string& option) {
+  constexpr long kMaxThreads = 256;
+  if (threads >= 0 && threads <= kMaxThreads) return;
+  throw InputError("option " + option + " must lie in [0, " + std::to_string(kMaxThreads) + "] (0: the default), got " +
+                   std::to_string(threads));
+}
+
+void EnsureWritableFile(const std::string& path, const std::string& option) {
+  std::ofstream f(path);
+  if (!f) throw InputError("option " + option + ": cannot write '" + path + "'");
+}
+
 std::string WearModelHelp(const std::string& what) { return what + " (" + WearContactModelNames() + ")"; }
 
 }  // namespace conforma::cli

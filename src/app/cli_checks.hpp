@@ -22,6 +22,12 @@ std::vector<std::string> ParseWearModelList(const std::string& list, const std::
 // >= 0, --km finite and >= 0; InputError naming the option otherwise (a negative or NaN value meant "the
 // scenario's" silently before).
 void CheckRunLimits(bool steps_given, int steps, bool km_given, double km);
+// An OpenMP thread count given on the command line: 0 (the default) ... kMaxThreads; InputError naming `option`
+// (stress --threads 100000 segfaulted in libgomp: fuzzing, session 25).
+void RequireThreads(long threads, const std::string& option);
+// A file the command writes at its end: created (truncated) now, so that an unwritable path is an InputError naming
+// `option` before the work (stress --json to an unwritable path wrote nothing and exited 0).
+void EnsureWritableFile(const std::string& path, const std::string& option);
 // Help text of a wear run's --model(s) option: "<what> (hertz, kp, kpec, conformal, auto)".
 std::string WearModelHelp(const std::string& what);
 

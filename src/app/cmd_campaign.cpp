@@ -10,6 +10,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -44,6 +45,12 @@ std::string SelfExecutable() {
 
 // Replaces this process by `python _campaign_main.py args... --cli <this executable>` (returns only on failure).
 [[noreturn]] void ExecCampaignModule(const std::string& python, std::vector<std::string> args) {
+  // the interpreter is checked first: after the exec its failure is the command's (--python /bin/false exited 1
+  // without a word: fuzzing, session 25)
+  const std::string probe = "'" + python + "' -c 'import yaml' >/dev/null 2>&1";
+  if (std::system(probe.c_str()) != 0)
+    throw InputError("conforma campaign: '" + python + "' cannot import yaml (is it a Python interpreter with PyYAML? "
+                     "--python or $CONFORMA_PYTHON names one)");
   args.insert(args.begin(), {python, CampaignScript()});
   args.insert(args.end(), {"--cli", SelfExecutable()});
   std::vector<char*> argv;
@@ -79,6 +86,7 @@ void RegisterCampaignCommand(CLI::App& app) {
   run->add_flag("--retry-failed", r->retry_failed, "run the cases that failed before again");
   run->add_option("--python", r->python, "python interpreter with PyYAML (default: $CONFORMA_PYTHON, else python3 on PATH)");
   run->callback([r]() {
+    if (r->workers < 0) throw InputError("option --workers must be >= 0 (0: the number of CPUs)");
     std::vector<std::string> args{"run", r->file, "--out", r->out};
     if (!r->scheduler.empty()) args.insert(args.end(), {"--scheduler", r->scheduler});
     if (r->workers > 0) args.insert(args.end(), {"--workers", std::to_string(r->workers)});

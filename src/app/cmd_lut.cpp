@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "cli_setup.hpp"
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/contact_lut.hpp"
 #include "conforma/contact_lut_check.hpp"
@@ -123,6 +124,7 @@ void RegisterLutCommand(CLI::App& app) {
       o.contact = b->args.options();
       o.grid = ParseContactLutGrid(b->grid);
       o.match_distance_m = b->match_mm * 1e-3;
+      RequireThreads(b->threads, "--threads");
       o.threads = b->threads;
       o.wheel_profile = b->args.track.wheel;
       o.rail_profile = b->args.track.rail;
@@ -244,6 +246,7 @@ void RegisterLutCommand(CLI::App& app) {
       const ContactLut table = LoadContactLut(c->file);
       const auto geometry = c->args.track.make_geometry();
       CheckContactLutGeometry(table, *geometry);
+      RequireThreads(c->o.threads, "--threads");
       ContactLutCheckOptions o = c->o;
       o.contact = c->args.options();
       o.evaluation.creep_force = ParseLutCreepForce(c->creep);

@@ -6,6 +6,7 @@
 //   replay: a measured time series (t, y, yaw, omega1, omega2, loads [, omega3]) sample by sample; DIR/rig_replay.csv
 //           (forces, creepages, wear increments per sample) and the final profiles in DIR/profiles/.
 // Exit 5 (partial result) when samples failed; the outputs say which.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/contact_model.hpp"
 #include "conforma/error.hpp"
@@ -41,6 +43,14 @@ std::string Fmt(const char* format, double v) {
 }
 
 RollerRigScenario Scenario(const RigArgs& a) {
+  // 0 = the scenario's; a negative or NaN value was silently the scenario's too (fuzzing, session 25)
+  const std::pair<double, const char*> given[] = {{a.step_s, "--step-s"},
+                                                  {a.max_depth_per_approach, "--max-depth-per-approach"},
+                                                  {a.strip_mean_elements, "--strip-mean-elements"}};
+  for (const auto& [value, option] : given)
+    if (!(std::isfinite(value) && value >= 0.0))
+      throw InputError(std::string("option ") + option + " must be finite and > 0 (omit it for the scenario's)");
+  if (a.max_tests < 0) throw InputError("option --max-tests must be >= 1 (omit it for all tests)");
   RollerRigScenario sc = LoadRollerRigScenario(a.scenario);
   if (!a.wear_law.empty()) sc.options.wear_law = RollerRigWearLawFromName(a.wear_law);
   if (!a.model.empty()) sc.options.kinematics.contact.model = ParseContactModel(a.model);
@@ -78,7 +88,7 @@ void RunPlan(const RigArgs& a, ProgressMode mode) {
     }
     progress->Update(static_cast<double>(k + 1));
   };
-  std::filesystem::create_directories(a.out);
+  EnsureOutputFolder(a.out, "--out");
   const double step = a.step_s > 0.0 ? a.step_s : sc.step_s;
   const auto results = RunRollerRigPlan(sc, po);
   progress.reset();
@@ -152,7 +162,7 @@ void RunReplay(const RigArgs& a) {
   const RollerRigScenario sc = Scenario(a);
   const std::vector<RollerRigSample> samples = ReadRollerRigSamples(a.input);
   RollerRigState state = MakeRollerRigState(sc.options);
-  std::filesystem::create_directories(a.out);
+  EnsureOutputFolder(a.out, "--out");
   std::ofstream csv(a.out + "/rig_replay.csv");
   csv << "t_s,dt_s,status,kinematics_status,omega3_rad_s,omega3_eq2_rad_s";
   for (const char* s : {"left", "right"})

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
@@ -329,7 +330,7 @@ void Run(const RigAdhesionArgs& a) {
   const RollerRigLawVariant chosen = ParseRollerRigLawVariant(a.law);
   const RollerRigCurvatures c = RollerRigCentredCurvatures(rig);
   const RollerRigCurvatures alt = RollerRigCentredCurvatures(alt_rig);
-  std::filesystem::create_directories(a.out);
+  EnsureOutputFolder(a.out, "--out");
   std::ofstream md(a.out + "/report.md"), slopes(a.out + "/rig_adhesion_slopes.csv"),
       fits(a.out + "/rig_adhesion_fit.csv");
   if (!md || !slopes || !fits) throw InputError(a.out + ": cannot write the report files");

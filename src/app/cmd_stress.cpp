@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 #include "conforma/error.hpp"
@@ -62,6 +63,12 @@ void RegisterStressCommand(CLI::App& app) {
   sub->add_option("--json", *json_path, "write the summary as JSON to this file");
   sub->callback([=]() {
     if (options->cases < 1) throw InputError("option --cases: must be >= 1 (got " + std::to_string(options->cases) + ")");
+    constexpr long kMaxStressCases = 1000000;  // (2e9 cases: std::bad_alloc)
+    if (options->cases > kMaxStressCases || *determinism_cases > kMaxStressCases)
+      throw InputError("option --cases / --determinism-cases: at most " + std::to_string(kMaxStressCases) +
+                       " cases per run (run batches with --first)");
+    RequireThreads(options->threads, "--threads");
+    if (!json_path->empty()) EnsureWritableFile(*json_path, "--json");
     if (*determinism_cases < 0) throw InputError("option --determinism-cases: must be >= 0");
     const StressSetup setup = StressSetup::Make(DataDirOr(*data));
     const ProgressMode mode = ProgressModeOf(sub);
@@ -93,7 +100,10 @@ void RegisterStressCommand(CLI::App& app) {
                           {"digest_1_thread", SummaryJson(one)["digest"]}, {"digest_n_threads", SummaryJson(many)["digest"]}};
       ok = ok && same;
     }
-    if (!json_path->empty()) std::ofstream(*json_path) << j.dump(2) << "\n";
+    if (!json_path->empty()) {
+      std::ofstream out(*json_path);
+      if (!(out << j.dump(2) << "\n")) throw InputError("option --json: cannot write '" + *json_path + "'");
+    }
     if (!ok) throw std::runtime_error("stress suite failed");
   });
 }

@@ -374,6 +374,7 @@ void RegisterValidateCommand(CLI::App& app) {
     BeginWearOutput(a->out);
     std::vector<ModelValidation> runs;
     std::vector<std::string> too_short;  // dimensions with only the km-0 point inside the simulated distance
+    std::vector<std::string> unmatched;  // measured profiles beyond the simulation or without compared points
     for (const std::string& m : models) {
       ModelValidation run;
       run.name = m;
@@ -422,6 +423,11 @@ void RegisterValidateCommand(CLI::App& app) {
                     to_string(d), s.rms_error_m * 1e3, s.max_abs_error_m * 1e3, s.points, s.beyond_simulation);
       }
       PrintRunWarnings(m, run.result);
+      for (size_t i = 0; i < profiles.size(); ++i)  // (RMS 0 over 0 points exited 0: fuzzing, session 25)
+        if (run.simulated_profiles[i].bracket.status == InterpolationStatus::BeyondSimulation ||
+            run.distances[i].points == 0)
+          unmatched.push_back(m + " " + profiles[i].path + " @ " + std::to_string(static_cast<long>(profiles[i].km)) +
+                              " km");
       for (size_t i = 0; i < profiles.size(); ++i)
         std::printf("  profile %s @ %.0f km: RMS %.4f mm, max %.4f mm (%s, %d points)\n", profiles[i].path.c_str(),
                     profiles[i].km, run.distances[i].rms_m * 1e3, run.distances[i].max_m * 1e3,
@@ -469,6 +475,13 @@ void RegisterValidateCommand(CLI::App& app) {
       throw IncompleteResult(ExitCode::PartialResult,
                              "no measured point beyond km 0 within the simulated distance for: " + what +
                                  " (simulate further: --km, --steps)");
+    }
+    if (!unmatched.empty()) {
+      std::string what;
+      for (const std::string& t : unmatched) what += (what.empty() ? "" : ", ") + t;
+      throw IncompleteResult(ExitCode::PartialResult,
+                             "measured profiles not compared (beyond the simulated distance or no point in the worn "
+                             "zone): " + what);
     }
     if (a->plot && !rs.plot_note.empty())
       throw IncompleteResult(ExitCode::PartialResult, "the plots were not produced: " + rs.plot_note);

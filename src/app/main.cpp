@@ -42,7 +42,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help / --version: CLI11 prints them (exit 0); a malformed command line is an input error like any other
+    // (CLI11's own codes 104-114 and messages without the prefix before: fuzzing, session 25)
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    std::cerr << "conforma: error: " << e.what() << " (see --help)\n";
+    return static_cast<int>(conforma::cli::ExitCode::InputError);
   } catch (const conforma::cli::IncompleteResult& e) {
     std::cerr << "conforma: " << (allow_partial ? "warning" : "error") << ": incomplete result: " << e.what()
               << (allow_partial ? " (--allow-partial: exit 0)" : "") << "\n";

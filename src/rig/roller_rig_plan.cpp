@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <initializer_list>
 #include <set>
@@ -196,12 +197,30 @@ ProfileWearSummary CompareProfiles(const Profile& before, const Profile& after) 
   return s;
 }
 
+namespace {
+constexpr double kMaxPlanSamples = 1e7;
+}  // namespace
+
 std::vector<RollerRigTestResult> RunRollerRigPlan(const RollerRigScenario& sc, const RollerRigPlanOptions& po) {
   if (!(po.distance_fraction > 0.0 && po.distance_fraction <= 1.0))
     throw InputError("RollerRigPlanOptions.distance_fraction must be in (0, 1]");
   require_positive(po.min_substep_s, "RollerRigPlanOptions.min_substep_s");
   const double step = po.step_s > 0.0 ? po.step_s : sc.step_s;
   require_positive(step, "rig plan step_s");
+  // the samples the plan asks for, before any is run (a step of 1e-9 s or a test of 1e12 km ran silently until
+  // killed: fuzzing, session 25)
+  double plan_samples = 0.0;
+  for (size_t i = 0; i < (po.max_tests > 0 ? std::min<size_t>(po.max_tests, sc.plan.size()) : sc.plan.size()); ++i) {
+    const RollerRigWearTestCase& t = sc.plan[i];
+    plan_samples += po.distance_fraction * t.distance_km * 1e3 /
+                    (t.reference_speed_rpm * 2.0 * kPi / 60.0 * sc.options.setup.roller_radius_m) / step;
+  }
+  if (!(plan_samples <= kMaxPlanSamples)) {
+    char text[240];
+    std::snprintf(text, sizeof text, "the rig plan asks for %.3g samples of %g s, more than %.0g: a larger step_s or a "
+                  "shorter distance (distance_km, --distance-fraction)", plan_samples, step, kMaxPlanSamples);
+    throw InputError(text);
+  }
   RollerRigSampleOptions o = sc.options;
   o.filter_every_steps = std::max(1, static_cast<int>(std::lround(sc.filter_interval_s / step)));
   RollerRigState state = MakeRollerRigState(o);

@@ -356,6 +356,7 @@ constexpr double kMaxClassSpeed_m_s = 600.0 / 3.6;  // (the rail speed record: 5
 constexpr double kMaxCantPerGauge = 0.2;             // 287 mm on 1435 mm: above any line's cant
 constexpr double kMaxClassAcceleration_m_s2 = 5.0;   // ~ mu g with mu = 0.5
 constexpr double kMaxTangentAmplitude_m = 0.1;       // (flangeway clearance ~5-10 mm, flange ~30 mm high)
+constexpr int kMaxTangentPhases = 1000;
 
 }  // namespace
 
@@ -413,7 +414,8 @@ void Scenario::validate() const {
   if (!(rail_steps.cap_m > 0)) throw InputError(where + "rail.cap_mm must be > 0");
   if (!(rail_steps.output_spacing_m >= 0 && rail_steps.output_spacing_m <= 1e-3))
     throw InputError(where + "rail.spacing_mm must be in [0, 1] (0: the spacing of the rail before the step)");
-  if (kinematics.tangent_phases < 1) throw InputError(where + "kinematics.tangent_phases must be >= 1");
+  if (kinematics.tangent_phases < 1 || kinematics.tangent_phases > kMaxTangentPhases)  // (1e8 ran for days)
+    throw InputError(where + "kinematics.tangent_phases must lie in [1, " + std::to_string(kMaxTangentPhases) + "]");
   if (!(kinematics.tangent_amplitude_m <= kMaxTangentAmplitude_m))
     throw InputError(where + "kinematics.tangent_amplitude_mm must be <= " + std::to_string(int(kMaxTangentAmplitude_m * 1e3)) +
                      " mm (the flangeway clearance is ~5-10 mm, a flange ~30 mm high; unit?)");

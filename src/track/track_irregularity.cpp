@@ -15,6 +15,8 @@ namespace conforma {
 
 namespace {
 
+constexpr double kMaxSynthesisEvaluations = 5e9;  // TrackIrregularityOptions::validate
+
 constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 // Uniform phase in [0, 2 pi) from the top 53 bits of the generator (the conversion is fully specified, unlike
@@ -94,6 +96,16 @@ void TrackIrregularityOptions::validate() const {
     throw InputError("track irregularity: spacing_m " + std::to_string(spacing_m) +
                      " is coarser than wavelength_min_m / 4 = " + std::to_string(wavelength_min_m / 4.0));
   if (length_m / spacing_m > 1e8) throw InputError("track irregularity: more than 1e8 samples (length_m / spacing_m)");
+  // the synthesis sums every harmonic at every sample: (length / wavelength_min) (length / spacing) evaluations,
+  // quadratic in the length (4e4 m took 14 s, 2.5e5 m did not finish in a minute: fuzzing, session 25)
+  const double evaluations = (length_m / wavelength_min_m) * (length_m / spacing_m);
+  if (evaluations > kMaxSynthesisEvaluations) {
+    char text[300];
+    std::snprintf(text, sizeof text, "track irregularity: length_m = %g m needs %.3g harmonic evaluations, more than "
+                  "%.0g (~30 s): a shorter length (the signal repeats after it) or a coarser spacing_m / longer "
+                  "wavelength_min_m", length_m, evaluations, kMaxSynthesisEvaluations);
+    throw InputError(text);
+  }
 }
 
 TrackIrregularity::TrackIrregularity(std::string source, std::vector<double> s_m, std::vector<double> alignment_m,
