@@ -273,6 +273,12 @@ TEST(CliBounds, OtherCommandsRefuseRunawayInput) {
                    "tangent_phases");
   ExpectInputError("bench --creepage-scale 1e300 --models hertz --families mbench --no-plot", "--creepage-scale");
   ExpectInputError("threshold --load-N 1e12", "--load-N");
+  // lists that computed nothing with exit 0, or ran an entry twice; sizes that failed row by row
+  ExpectInputError("threshold --sets ''", "--sets");
+  ExpectInputError("threshold --sets new,new", "given twice");
+  ExpectInputError("threshold --kp-strips 100000000", "--kp-strips");
+  ExpectInputError("mbench --models ''", "--models");
+  ExpectInputError("curving --scenario '" + kScenario + "' --class -5", "--class");
 }
 
 }  // namespace

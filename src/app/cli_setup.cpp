@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <sstream>
 #include "cli_setup.hpp"
 
@@ -220,6 +221,8 @@ std::vector<std::string> SplitCommaList(const std::string& text, const std::stri
   std::string item;
   while (std::getline(ss, item, ',')) {
     if (item.empty()) throw InputError("option " + option + ": an empty name in the list '" + text + "'");
+    if (std::find(out.begin(), out.end(), item) != out.end())  // (run twice before: fuzzing, session 25)
+      throw InputError("option " + option + ": '" + item + "' is given twice in '" + text + "'");
     out.push_back(item);
   }
   return out;

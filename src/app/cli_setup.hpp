@@ -66,8 +66,8 @@ struct ContactArgs {
 
 // Parses "1:40", "1/40", "0", "none" or a decimal angle in radians.
 double ParseInclination(const std::string& text);
-// "a,b,c" -> {"a", "b", "c"}; "" -> {}; an empty item ("a,,c", "a,") is an InputError naming `option`: the
-// --models lists.
+// "a,b,c" -> {"a", "b", "c"}; "" -> {}; an empty item ("a,,c", "a,") or one given twice is an InputError naming
+// `option`: the --models and --sets lists.
 std::vector<std::string> SplitCommaList(const std::string& text, const std::string& option);
 
 }  // namespace conforma::cli

@@ -133,6 +133,8 @@ void RegisterCurvingCommand(CLI::App& app) {
     else if (!a->provider.empty()) throw InputError("--provider: unknown provider '" + a->provider + "'");
     const int nc = static_cast<int>(sc.classes.size());
     if (a->track_class >= nc) throw InputError("--class: index " + std::to_string(a->track_class) + " >= " + std::to_string(nc));
+    if (a->track_class < -1)  // (-5 meant "all": fuzzing, session 25)
+      throw InputError("--class: index " + std::to_string(a->track_class) + " < 0 (omit it for all classes)");
     const WheelsetTrackGeometry g(sc.MakeTrackSetup());
     auto fallbacks = std::make_shared<KinematicsFallbackLog>();
     const ContactModel curving_model = CurvingContactModel(sc, model);

@@ -4,7 +4,9 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli_setup.hpp"
 #include "commands.hpp"
+#include "conforma/error.hpp"
 #include "progress.hpp"
 #include "conforma/validation/validation_manchester.hpp"
 
@@ -31,8 +33,10 @@ void RegisterMbenchCommand(CLI::App& app) {
                   "load control: total (default), pressure or total-consistent (docs/physics-reference.md §3.6.1)")
       ->check(CLI::IsMember({"total", "pressure", "total-consistent"}));
   sub->callback([models, data, kinematics, origin, spin_centre, local_flex, load_balance, sub]() {
-    std::stringstream ss(*models);
-    for (std::string name; std::getline(ss, name, ',');) {
+    const std::vector<std::string> names = SplitCommaList(*models, "--models");  // (an empty list: exit 0, nothing)
+    if (names.empty()) throw InputError("option --models: no contact model given");
+    for (const std::string& name : names) ParseContactModel(name);  // every name before the first run
+    for (const std::string& name : names) {
       ManchesterOptions o;
       o.model = ParseContactModel(name);
       o.creepages_from_file = !*kinematics;

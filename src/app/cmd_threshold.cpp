@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "cli_checks.hpp"
+#include "cli_setup.hpp"
 #include "commands.hpp"
 #include "conforma/wheel_contact_options.hpp"
 #include "conforma/error.hpp"
@@ -85,6 +86,16 @@ void RegisterThresholdCommand(CLI::App& app) {
   sub->add_flag("--variable-penetration", *variable_eps,
                 "compare with KPEC's variable eps on both sides (default: eps = 0.55, paper 003's formulation)");
   sub->callback([=]() {
+    // the lists and sizes up front (an empty --sets computed nothing with exit 0; --kp-strips 1e8 failed row by row)
+    const std::vector<std::string> set_names = SplitCommaList(*sets, "--sets");
+    if (set_names.empty()) throw InputError("option --sets: no situation set given (new, worn, groove)");
+    for (const std::string& set : set_names)
+      if (set != "new" && set != "worn" && set != "groove")
+        throw InputError("option --sets: unknown situation set '" + set + "' (new, worn, groove)");
+    if (*strips < 3 || *strips > kMaxKpStrips)
+      throw InputError("option --kp-strips must lie in [3, " + std::to_string(kMaxKpStrips) + "]");
+    if (*elements < 2 || *elements > kMaxFastsimElements)
+      throw InputError("option --fastsim-elements must lie in [2, " + std::to_string(kMaxFastsimElements) + "]");
     ThresholdOptions options;
     options.tolerance = *tolerance;
     options.kp_strips = *strips;
@@ -104,8 +115,7 @@ void RegisterThresholdCommand(CLI::App& app) {
                            {"worn_load_N", *worn_load},
                            {"kp_strips", *strips}, {"fastsim_elements", *elements}};
     int failed_situations = 0;
-    std::stringstream ss(*sets);
-    for (std::string set; std::getline(ss, set, ',');) {
+    for (const std::string& set : set_names) {
       std::fflush(stdout);  // the previous set's lines before this set's progress on stderr
       ProgressReporter progress("threshold " + set, 0.0, "situation", ProgressModeOf(sub), std::cerr);
       ThresholdOptions set_options = options;

@@ -5,8 +5,13 @@
 
 #include "conforma/csv_columns.hpp"
 #include "conforma/error.hpp"
+#include "conforma/geometry.hpp"
 
 namespace conforma {
+
+namespace {
+constexpr double kMaxRigLateralShift_m = 0.1;
+}  // namespace
 
 std::vector<RollerRigSample> ReadRollerRigSamples(const std::string& path) {
   const std::vector<std::string> names = {"t_s",         "y_m",         "yaw_rad",      "omega1_rad_s", "omega2_rad_s",
@@ -23,6 +28,9 @@ std::vector<RollerRigSample> ReadRollerRigSamples(const std::string& path) {
     s.roller_speed_rad_s = {c.values[3][i], c.values[4][i]};
     s.wheel_load_N = {c.values[5][i], c.values[6][i]};
     if (c.present[7]) s.wheelset_speed_rad_s = c.values[7][i];
+    RequireWheelsetYaw(s.yaw_rad, where + ": yaw_rad");  // (3 rad ran to exit 5: fuzzing, session 25)
+    if (!(std::fabs(s.lateral_m) <= kMaxRigLateralShift_m))
+      throw InputError(where + ": y_m beyond +-0.1 m: not a wheelset on rollers (unit?)");
     if (!(s.roller_speed_rad_s[0] > 0.0 && s.roller_speed_rad_s[1] > 0.0))
       throw InputError(where + ": omega1_rad_s and omega2_rad_s must be > 0");
     if (!(s.wheel_load_N[0] >= 0.0 && s.wheel_load_N[1] >= 0.0))
