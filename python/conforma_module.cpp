@@ -217,9 +217,6 @@ py::dict ContactAtPose(const Track& track, const std::string& side, double later
   require_finite(vertical_m, "vertical_m");
   require_finite(roll_rad, "roll_rad");
   RequireWheelsetYaw(yaw_rad, "yaw_rad");
-  require_finite(lateral_velocity_m_s, "lateral_velocity_m_s");
-  require_finite(yaw_rate_rad_s, "yaw_rate_rad_s");
-  if (axle_angular_velocity_rad_s) require_finite(*axle_angular_velocity_rad_s, "axle_angular_velocity_rad_s");
   Side s = Side::Left;
   if (side == "right") s = Side::Right;
   else if (side != "left") throw InputError("side must be 'left' or 'right', not '" + side + "'");

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "conforma/error.hpp"
+#include "conforma/parallel_error.hpp"
 #include "conforma/profile_io.hpp"
 #include "conforma/validation/validation_manchester.hpp"
 
@@ -79,8 +80,7 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
   contact.validate();  // before the parallel loop: an exception may not leave an OpenMP region (it aborted Python)
   std::vector<ManchesterComparison> out(cases.size());
   ProgressCounter progress(options.on_progress, static_cast<double>(cases.size()));
-  std::string first_error;  // of the lowest case index (the same message for any thread count)
-  int first_error_case = -1;
+  LowestIndexError error;
 #pragma omp parallel for schedule(dynamic)
   for (int i = 0; i < static_cast<int>(cases.size()); ++i) try {
     const ManchesterReferenceCase& c = cases[i];
@@ -121,12 +121,10 @@ std::vector<ManchesterComparison> RunManchesterA22(const std::string& shared_dat
     r.err_area = r.area_mm2 / c.area_mm2 - 1.0;
     r.err_fx_N = fx - c.fx_N;
     r.err_fs_N = fs - c.fs_N;
-  } catch (const std::exception& e) {  // (an exception may not leave the parallel region: rethrown below)
-#pragma omp critical(manchester_error)
-    if (first_error_case < 0 || i < first_error_case) first_error = e.what(), first_error_case = i;
+  } catch (const std::exception& e) {
+    error.Record(i, e);
   }
-  if (first_error_case >= 0)
-    throw InputError("Manchester case " + std::to_string(cases[first_error_case].id) + ": " + first_error);
+  if (error.any()) throw InputError("Manchester case " + std::to_string(cases[error.index()].id) + ": " + error.what());
   return out;
 }
 

@@ -141,6 +141,8 @@ const PatchReport* MainPatch(const WheelContactReport& report);
 // |yaw rate / V| in 1/m) within kMaxGivenCreepage: a yaw rate of 1e300 rad/s gave NaN forces with an OK status
 // (fuzzing, session 25). The solvers themselves do not limit it (a time-domain run that diverges is a result).
 void RequireRollingVelocity(const WheelsetVelocity& velocity, double nominal_radius_m, const std::string& where);
+// InputError naming `name` unless load_N <= kMaxWheelLoadN (a larger number is a unit mistake); NaN is refused too.
+void RequireWheelLoad(double load_N, const std::string& name);
 // For the entry points: InputError naming `name` unless |approach_m| <= kMaxApproach_m.
 void RequireApproach(double approach_m, const std::string& name);
 

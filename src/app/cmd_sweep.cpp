@@ -2,7 +2,6 @@
 // contact patch of the chosen wheel, for one or more models; --csv for a machine-readable table.
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 #include "cli_checks.hpp"
 #include "cli_setup.hpp"

@@ -10,6 +10,7 @@
 
 #include "conforma/contact_lut.hpp"
 #include "conforma/error.hpp"
+#include "conforma/parallel_error.hpp"
 
 #ifndef CONFORMA_VERSION_STRING
 #define CONFORMA_VERSION_STRING "unknown"
@@ -291,8 +292,7 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
   // nodes: both sides in one loop (each written into its slot)
   const long per_side = static_cast<long>(g.nodes());
   for (auto& v : lut.nodes) v.resize(per_side);
-  std::string first_error;  // of the lowest node index (the same message for any thread count)
-  long first_error_node = -1;
+  LowestIndexError error;
   ProgressCounter progress(options.on_progress, 2.0 * static_cast<double>(per_side));
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (long k = 0; k < 2 * per_side; ++k) {
@@ -303,11 +303,10 @@ ContactLut BuildContactLut(const WheelsetTrackGeometry& geometry, const ContactL
     try {
       lut.nodes[side_index(side)][n] = SolveNode(geometry, side, eq[iy * npsi + ipsi], g.load_N[iq], options.contact);
     } catch (const std::exception& e) {
-#pragma omp critical(contact_lut_error)
-      if (first_error_node < 0 || k < first_error_node) first_error = e.what(), first_error_node = k;
+      error.Record(k, e);
     }
   }
-  if (!first_error.empty()) throw InputError("contact LUT generation: " + first_error);
+  if (error.any()) throw InputError("contact LUT generation: " + error.what());
   h.generation_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return lut;
 }

@@ -10,6 +10,7 @@
 #include <omp.h>
 
 #include "conforma/error.hpp"
+#include "conforma/parallel_error.hpp"
 
 namespace conforma {
 
@@ -107,8 +108,7 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
   eo.max_touching_contact_angle_rad = options.contact.max_touching_contact_angle_rad;
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
   ProgressCounter progress(options.on_progress, static_cast<double>(samples.size()));
-  std::string first_error;  // of the lowest sample index (the same message for any thread count)
-  long first_error_sample = -1;
+  LowestIndexError error;  // of a direct solve (an exception may not leave the parallel loop)
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (long k = 0; k < static_cast<long>(samples.size()); ++k) {
     const ProgressCounter::Unit counted(progress, "sample " + std::to_string(k));
@@ -120,11 +120,10 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
     if (eq.status != EquilibriumStatus::Converged) continue;
     auto t0 = std::chrono::steady_clock::now();
     WheelContactReport d;
-    try {  // (an exception may not leave the parallel region: rethrown below)
+    try {
       d = SolveWheelContact(geometry, s.side, eq.pose, s.velocity, c);
     } catch (const std::exception& e) {
-#pragma omp critical(contact_lut_check_error)
-      if (first_error_sample < 0 || k < first_error_sample) first_error = e.what(), first_error_sample = k;
+      error.Record(k, e);
       continue;
     }
     auto t1 = std::chrono::steady_clock::now();
@@ -161,8 +160,7 @@ ContactLutCheckResult CheckContactLut(const ContactLut& lut, const WheelsetTrack
     }
     o.lateral = std::fabs(d.lateral_force_N - l.lateral_force_N) / s.Q;
   }
-  if (first_error_sample >= 0)
-    throw InputError("contact LUT check, sample " + std::to_string(first_error_sample) + ": " + first_error);
+  if (error.any()) throw InputError("contact LUT check, sample " + std::to_string(error.index()) + ": " + error.what());
   ContactLutCheckResult r;
   r.samples = options.samples;
   std::vector<std::pair<double, long>> fn, fx, fy, ry, lat;

@@ -61,13 +61,7 @@ void WheelContactOptions::validate() const {
   require_non_negative(friction_coefficient, "friction_coefficient");
   if (!friction_law.is_constant()) friction_law.validate();
   require_finite(vertical_load_N, "vertical_load_N");
-  if (vertical_load_N > kMaxWheelLoadN)
-  {
-    char text[160];
-    std::snprintf(text, sizeof text, "vertical_load_N = %.6g N is above %.6g N (10 MN, ~1,000 t on one wheel): "
-                  "not a wheel load (unit?)", vertical_load_N, kMaxWheelLoadN);
-    throw InputError(text);
-  }
+  RequireWheelLoad(vertical_load_N, "vertical_load_N");
   require_positive(load_tolerance, "load_tolerance");
   require_positive(candidate_strip_width_m, "candidate_strip_width_m");
   require_non_negative(patch_combine_distance_m, "patch_combine_distance_m");
@@ -115,6 +109,15 @@ void RequireRollingVelocity(const WheelsetVelocity& v, double nominal_radius_m, 
                     where.c_str(), name, value, kMaxGivenCreepage);
       throw InputError(text);
     }
+}
+
+void RequireWheelLoad(double load_N, const std::string& name) {
+  if (!(load_N <= kMaxWheelLoadN)) {
+    char text[240];
+    std::snprintf(text, sizeof text, "%s = %.6g N is above %.6g N (10 MN, ~1,000 t on one wheel): not a wheel load "
+                  "(unit?)", name.c_str(), load_N, kMaxWheelLoadN);
+    throw InputError(text);
+  }
 }
 
 void RequireApproach(double approach_m, const std::string& name) {

@@ -301,12 +301,7 @@ RollerRigKinematicsResult SolveRollerRigKinematics(const WheelsetTrackGeometry& 
   for (int i = 0; i < 2; ++i) {
     require_positive(in.roller_speed_rad_s[i], i == 0 ? "roller 1 speed omega_1" : "roller 2 speed omega_2");
     require_non_negative(in.wheel_load_N[i], i == 0 ? "left wheel load" : "right wheel load");
-    if (in.wheel_load_N[i] > kMaxWheelLoadN) {
-      char text[200];
-      std::snprintf(text, sizeof text, "%s wheel load = %g N is above %g N (10 MN): not a wheel load (unit?)",
-                    i == 0 ? "left" : "right", in.wheel_load_N[i], kMaxWheelLoadN);
-      throw InputError(text);
-    }
+    RequireWheelLoad(in.wheel_load_N[i], i == 0 ? "left wheel load" : "right wheel load");
   }
   const bool measured = !std::isnan(in.wheelset_speed_rad_s);
   if (measured) require_positive(in.wheelset_speed_rad_s, "measured wheelset speed omega_3");
