@@ -473,8 +473,8 @@ pressure_Pa, traction_x_Pa, traction_s_Pa, slip_x, slip_s, adhesion (bool), wear
            "One wheel from the table at (lateral_m, yaw_rad) carrying load_N (vertical position and roll of the "
            "rigid equilibrium, as the table); track must be the one the table was made for. creep_force: 'fastsim' "
            "(as the direct solver) or 'polach' (closed form on each patch's ellipse, for speed). Returns a wheel "
-           "dict as contact() (without fields, and without 'complete' / 'problems': conforma.wheel_problems(wheel, "
-           "load_N) lists what is incomplete); outside the table InputError naming the axis.");
+           "dict as contact() without fields (conforma.ContactLut, the package's subclass, adds 'complete' / 'problems'); "
+           "outside the table InputError naming the axis.");
   m.def("manchester", &Manchester, py::arg("model") = "conformal", py::arg("creepages_from_file") = true,
         py::arg("data_dir") = SharedDataDir(), py::arg("fastsim_elements") = 30,
         "Manchester benchmark A-2.2 (left wheel, 21 cases) against CONTACT's results: one dict per case with the "

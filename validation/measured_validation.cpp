@@ -60,6 +60,9 @@ std::vector<std::string> SplitFields(const std::string& line) {
 }
 
 // Column role: -1 km, 0..2 ReferenceDimension, -2 ignored.
+// plausible measured values of Sd, Sh, qR, mm (wide around EN 15313's limits; a worn or re-profiled wheel included)
+constexpr double kDimensionRange_mm[3][2] = {{10.0, 50.0}, {10.0, 60.0}, {2.0, 30.0}};
+
 int ColumnRole(const std::string& name) {
   const std::string n = Lower(name);
   if (n == "km") return -1;
@@ -140,6 +143,14 @@ MeasuredDimensions ParseMeasuredDimensions(const std::string& text, const std::s
       if (dim_column[d] < 0) continue;
       const double v = ParseNumber(fields[dim_column[d]], header[dim_column[d]], source, line);
       if (!(v > 0.0)) throw InputError(source, line, "column '" + header[dim_column[d]] + "' must be > 0 mm");
+      // a wheel's dimension in mm (EN 15313: Sd 22-33, Sh 27.5-36, qR >= 6.5): far outside, another unit
+      if (v < kDimensionRange_mm[d][0] || v > kDimensionRange_mm[d][1]) {
+        std::ostringstream what;
+        what << "column '" << header[dim_column[d]] << "' = " << fields[dim_column[d]] << ": implausible for "
+             << to_string(static_cast<ReferenceDimension>(d)) << " in mm (expected " << kDimensionRange_mm[d][0]
+             << " ... " << kDimensionRange_mm[d][1] << " mm; metres or inches?)";
+        throw InputError(source, line, what.str());
+      }
       p.value_m[d] = v * 1e-3;  // file in mm
     }
     out.points.push_back(p);

@@ -16,6 +16,9 @@ namespace conforma {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kMaxAdhesion = 1.0;           // F_x / N of steel on steel (dry tests: ~0.4-0.6)
+constexpr double kMaxRollerSpeedRpm = 10000.0;  // roller rigs: < 3000 rpm (paper 000: 1000 rpm)
+constexpr double kMaxWheelLoadKg = 1e5;         // 1 MN: the project's wheel-load bound (RequireWheelLoad)
 const char* const kColumns[] = {"test", "reference_speed_rpm", "wheel_load_kg", "max_adhesion",
                                 "steady_adhesion", "initial_slope_N", "condition"};
 }  // namespace
@@ -42,7 +45,10 @@ std::vector<RollerRigAdhesionTest> ReadRollerRigAdhesionTable(const std::string&
     }
     if (cells.size() != 7) throw InputError(path, line_no, "expected 7 cells");
     RollerRigAdhesionTest t;
-    t.test = static_cast<int>(ParseCsvNumber(cells[0], kColumns[0], path, line_no));
+    const double test_number = ParseCsvNumber(cells[0], kColumns[0], path, line_no);
+    if (!(test_number >= 0.0 && test_number <= 1e6 && test_number == std::floor(test_number)))
+      throw InputError(path, line_no, "test number '" + cells[0] + "' is not a whole number 0 ... 1000000");
+    t.test = static_cast<int>(test_number);
     t.reference_speed_rpm = ParseCsvNumber(cells[1], kColumns[1], path, line_no);
     t.wheel_load_kg = ParseCsvNumber(cells[2], kColumns[2], path, line_no);
     t.max_adhesion = ParseCsvNumber(cells[3], kColumns[3], path, line_no);
@@ -53,6 +59,21 @@ std::vector<RollerRigAdhesionTest> ReadRollerRigAdhesionTable(const std::string&
       throw InputError(path, line_no, "speed, load and slope must be > 0");
     if (t.max_adhesion <= 0.0 || t.steady_adhesion <= 0.0 || t.steady_adhesion > t.max_adhesion)
       throw InputError(path, line_no, "adhesion coefficients must satisfy 0 < steady <= max");
+    // bounds of a wheel-rail (or scaled rig) adhesion test: beyond them a unit or column mistake
+    if (t.max_adhesion > kMaxAdhesion)
+      throw InputError(path, line_no, "max_adhesion " + cells[3] +
+                                          " is not a wheel-rail adhesion coefficient (F_x / N <= 1): a percentage?");
+    if (t.reference_speed_rpm > kMaxRollerSpeedRpm)
+      throw InputError(path, line_no, "reference_speed_rpm " + cells[1] +
+                                          " is beyond a roller rig's " + std::to_string(int(kMaxRollerSpeedRpm)) +
+                                          " rpm");
+    if (t.wheel_load_kg > kMaxWheelLoadKg)
+      throw InputError(path, line_no, "wheel_load_kg " + cells[2] +
+                                          " is beyond a wheel's load (at most " + std::to_string(int(kMaxWheelLoadKg)) +
+                                          " kg: 1 MN)");
+    for (const RollerRigAdhesionTest& other : tests)
+      if (other.test == t.test)
+        throw InputError(path, line_no, "test " + std::to_string(t.test) + " is given twice");
     if (t.condition != "dry" && t.condition != "wet")
       throw InputError(path, line_no, "condition '" + t.condition + "': expected dry or wet");
     tests.push_back(t);

@@ -32,7 +32,6 @@ import pathlib as _pathlib
 
 from . import _core, types  # noqa: F401
 from ._core import (  # noqa: F401
-    ContactLut,
     InputError,
     Profile,
     Track,
@@ -98,6 +97,19 @@ def contact_at_pose(track, *args, strict=False, **kwargs):
 contact_at_pose.__doc__ = _core.contact_at_pose.__doc__ + """
 As contact(): 'complete', 'problems', the patches' 'grid' with fields=True, IncompleteResultWarning (strict=True:
 IncompleteResultError) when the wheel's result is incomplete."""
+
+
+class ContactLut(_core.ContactLut):
+    __doc__ = _core.ContactLut.__doc__
+
+    def evaluate(self, track, side, lateral_m, *args, strict=False, **kwargs):
+        wheel = super().evaluate(track, side, lateral_m, *args, **kwargs)
+        load_N = kwargs.get("load_N", args[1] if len(args) > 1 else 50e3)  # _core.pyi: 2nd after lateral_m
+        return _flag(wheel, _finish_wheel(wheel, load_N), "ContactLut.evaluate", strict)
+
+    evaluate.__doc__ = _core.ContactLut.evaluate.__doc__.split("\n", 1)[-1] + """
+As contact(): 'complete', 'problems' (the table's status of the wheel and its patches), IncompleteResultWarning
+(strict=True: IncompleteResultError) when the wheel's result is incomplete."""
 
 
 def manchester(*args, strict=False, **kwargs):

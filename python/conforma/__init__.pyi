@@ -3,7 +3,7 @@ import pathlib
 from typing import Any, Dict, List, Optional, Union
 
 from . import types as types
-from ._core import ContactLut as ContactLut
+from . import _core
 from ._core import InputError as InputError
 from ._core import Profile as Profile
 from ._core import Track as Track
@@ -25,6 +25,12 @@ from ._status import IncompleteResultWarning as IncompleteResultWarning
 from ._status import wear_problems as wear_problems
 from ._status import wheel_problems as wheel_problems
 from .types import ManchesterRow, WearRun, Wheel
+
+class ContactLut(_core.ContactLut):
+    def evaluate(self, track: Track, side: str, lateral_m: float, yaw_rad: float = 0.0, load_N: float = 50000.0,
+                 speed_m_s: float = 2.0, lateral_velocity_m_s: float = 0.0, yaw_rate_rad_s: float = 0.0,
+                 axle_angular_velocity_rad_s: Optional[float] = None, mu: float = 0.3, grid: int = 30,
+                 load_balance: str = "total", creep_force: str = "fastsim", *, strict: bool = False) -> Wheel: ...
 
 __version__: str
 __all__: List[str]

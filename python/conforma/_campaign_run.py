@@ -57,21 +57,25 @@ def check_scenarios(cli, campaign):
             with open(path, "w") as f:
                 f.write(scenario_text(case, campaign))
             files[path] = case
-        p = subprocess.run([cli, "campaign", "check", *files], capture_output=True, text=True)
+        models = ["--models", ",".join(campaign["models"])] if campaign.get("models") else []
+        p = subprocess.run([cli, "campaign", "check", *models, *files], capture_output=True, text=True)
     if p.returncode == 0:
         return
     problems = []
     for line in p.stdout.splitlines():
         path, _, message = line.partition("\t")
         case = files.get(path)
-        if case is not None:
+        if path == "--models":
+            problems.append(f"  models: {message}")
+        elif case is not None:
             params = ", ".join(f"{k}={v!r}" for k, v in case["params"].items()) or "the base scenario"
             problems.append(f"  case {case['id']} ({params}): {message.replace(path, 'scenario')}")
     if not problems:
         problems = [f"  {p.stderr.strip() or 'conforma campaign check failed'}"]
     more = f"\n  ... and {len(problems) - 5} more" if len(problems) > 5 else ""
     raise CampaignError(f"{campaign['file']}: the scenario reader rejects {len(problems)} generated scenario(s) "
-                        f"(a parameter that is not a key of the scenario, or a bad value):\n"
+                        f"or the model list (a parameter that is not a key of the scenario, a bad value, an unknown "
+                        f"model):\n"
                         + "\n".join(problems[:5]) + more)
 
 

@@ -168,6 +168,19 @@ def test_bad_input_fails_before_any_case_runs(tmp_path, cli, body, message):
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.parametrize("models, message", [
+    ("[hertz, conformall]", r"models: .*unknown contact model 'conformall'"),
+    ("[exact]", r"models: .*'exact' solves the normal problem only"),
+])
+def test_an_unknown_model_fails_before_any_case_runs(tmp_path, cli, models, message):
+    """The model names are checked once, as the wear command checks them, not case by case (session 26)."""
+    file = write_campaign(tmp_path, GRID)
+    file.write_text(file.read_text().replace("models: [hertz]", f"models: {models}"))
+    with pytest.raises(conforma.CampaignError, match=message):
+        conforma.campaign(file, tmp_path / "out", cli=cli)
+    assert not (tmp_path / "out").exists()
+
+
 def test_unreachable_scheduler_fails_before_any_case_runs(tmp_path, cli):
     file = write_campaign(tmp_path, GRID)
     with pytest.raises(conforma.CampaignError, match="cannot reach the Dask scheduler"):

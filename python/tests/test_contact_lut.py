@@ -74,3 +74,26 @@ def test_another_wheel_is_refused(table, shared_data):
     with pytest.raises(conforma.InputError, match="another geometry"):
         lut.evaluate(conforma.Track(wheel=worn), "left", 0.7e-3, 1e-3, load_N=50e3)
     assert lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, load_N=50e3)["status"] == "ok"
+
+
+def test_evaluation_says_whether_it_is_complete(table, monkeypatch):
+    """No silent failures (conforma._status): the table's wheel dict carries 'complete' and 'problems' as contact()'s,
+    and an incomplete one warns, or raises with strict=True."""
+    lut = conforma.ContactLut(table)
+    wheel = lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, load_N=50e3)
+    assert wheel["complete"] is True and wheel["problems"] == []
+    assert set(wheel) == set(conforma.types.Wheel.__required_keys__) | set(conforma.types.Wheel.__optional_keys__)
+    # a table answer the core marks not converged (as the total balance does at a force jump, §17.4)
+    original = conforma._core.ContactLut.evaluate
+
+    def not_converged(self, *args, **kwargs):
+        w = original(self, *args, **kwargs)
+        w["status"] = "not_converged"
+        return w
+
+    monkeypatch.setattr(conforma._core.ContactLut, "evaluate", not_converged)
+    with pytest.warns(conforma.IncompleteResultWarning, match="ContactLut.evaluate: incomplete result"):
+        wheel = lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, load_N=50e3)
+    assert wheel["complete"] is False and "not_converged" in wheel["problems"][0]
+    with pytest.raises(conforma.IncompleteResultError):
+        lut.evaluate(conforma.Track(), "left", 0.7e-3, 1e-3, load_N=50e3, strict=True)

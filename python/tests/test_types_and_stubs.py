@@ -123,7 +123,7 @@ def test_public_stub_declares_every_public_name_and_the_wrappers():
     for node in tree.body:
         if isinstance(node, ast.ImportFrom):
             declared |= {a.asname for a in node.names if a.asname}
-        elif isinstance(node, ast.FunctionDef):
+        elif isinstance(node, (ast.FunctionDef, ast.ClassDef)):
             declared.add(node.name)
         elif isinstance(node, ast.AnnAssign):
             declared.add(node.target.id)
@@ -135,6 +135,11 @@ def test_public_stub_declares_every_public_name_and_the_wrappers():
         core = [(n, d, False) for n, d, _ in stub_parameters(stub_functions(PACKAGE / "_core.pyi")[name])]
         assert wrapper == core + [("strict", "False", True)], name
         assert inspect.signature(getattr(conforma, name)).parameters["strict"].default is False
+    # the table's wrapper method (conforma.ContactLut, a subclass of _core.ContactLut)
+    wrapper = stub_parameters(stubs["ContactLut.evaluate"])
+    core = [(n, d, False) for n, d, _ in stub_parameters(stub_functions(PACKAGE / "_core.pyi")["ContactLut.evaluate"])]
+    assert wrapper == core + [("strict", "False", True)]
+    assert inspect.signature(conforma.ContactLut.evaluate).parameters["strict"].default is False
     for name in ["share_dir", "scenario_path", "patch_grid"]:
         runtime = list(inspect.signature(getattr(conforma, name)).parameters)
         assert [n for n, _, _ in stub_parameters(stubs.get(name) or

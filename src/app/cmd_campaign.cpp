@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "commands.hpp"
 #include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
@@ -104,11 +105,21 @@ void RegisterCampaignCommand(CLI::App& app) {
   report->callback([p]() { ExecCampaignModule(PythonOr(p->python), {"report", p->dir}); });
 
   auto files = std::make_shared<std::vector<std::string>>();
+  auto models = std::make_shared<std::string>();
   CLI::App* check = campaign->add_subcommand("check", "validate scenario files with the scenario reader (what the "
                                                       "campaign runner does before any case runs)");
   check->add_option("scenarios", *files, "scenario YAML files")->required();
-  check->callback([files]() {
+  check->add_option("--models", *models, "the campaign's models, comma-separated: checked as the wear command's");
+  check->callback([files, models]() {
     int bad = 0;
+    if (!models->empty()) {
+      try {
+        ParseWearModelList(*models, "--models");
+      } catch (const InputError& e) {
+        std::cout << "--models\t" << e.what() << "\n";
+        ++bad;
+      }
+    }
     for (const std::string& f : *files) {
       try {
         LoadScenario(f);
@@ -117,7 +128,9 @@ void RegisterCampaignCommand(CLI::App& app) {
         ++bad;
       }
     }
-    if (bad > 0) throw InputError(std::to_string(bad) + " of " + std::to_string(files->size()) + " scenarios rejected");
+    if (bad > 0)
+      throw InputError(std::to_string(bad) + " of " + std::to_string(files->size()) + " scenarios" +
+                       (models->empty() ? "" : " and the model list") + " rejected");
   });
 }
 

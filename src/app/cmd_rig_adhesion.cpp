@@ -22,6 +22,7 @@
 
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "exit_status.hpp"
 #include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
 #include "conforma/similitude.hpp"
@@ -197,6 +198,34 @@ struct ConditionFits {
 };
 
 const double kSensitivityCreepages[] = {0.05, 0.2};
+
+// The fits that did not converge, or have more parameters than measured numbers (an underdetermined fit
+// "converges" on any of its optima: nothing is identified), named; a non-empty list makes the command exit 4.
+std::vector<std::string> FitProblems(const std::vector<ConditionFits>& conds) {
+  std::vector<std::string> out;
+  auto check = [&](const std::string& what, const RollerRigFit& f) {
+    if (!f.converged) out.push_back(what + ": not converged (" + std::to_string(f.iterations) + " iterations)");
+    if (f.parameters > f.data_points)
+      out.push_back(what + ": " + std::to_string(f.parameters) + " parameters for " + std::to_string(f.data_points) +
+                    " measured numbers (underdetermined: more tests of the condition needed)");
+  };
+  for (const ConditionFits& cf : conds) {
+    check("section 2.1, " + cf.condition + " law", cf.shared);
+    for (const RollerRigFit& f : cf.per_test) check("section 2.2, " + f.label, f);
+    for (size_t i = 0; i < cf.sensitivity.size(); ++i)
+      check("section 2.3, " + cf.condition + " law at steady creepage " + Fmt("%.2f", kSensitivityCreepages[i]),
+            cf.sensitivity[i]);
+    for (const RollerRigFit& f : cf.variants)
+      check("section 2.4, " + cf.condition + " law " + to_string(f.law.variant) +
+                (f.parameters > RollerRigLawParameterCount(f.law.variant) ? " (steady creepage fitted)" : ""),
+            f);
+    for (size_t i = 0; i < cf.chosen_sensitivity.size(); ++i)
+      check("section 2.5, " + cf.condition + " law " + to_string(cf.chosen_sensitivity[i].law.variant) +
+                " at steady creepage " + Fmt("%.2f", kSensitivityCreepages[i]),
+            cf.chosen_sensitivity[i]);
+  }
+  return out;
+}
 
 // §2.1-2.3 of one condition into *out.
 void FitConditionLaws(const std::vector<RollerRigAdhesionTest>& sub, const RollerRigAdhesionOptions& rig,
@@ -490,8 +519,18 @@ void Run(const RigAdhesionArgs& a) {
   }
   md << "\n## 3. Similitude of the 1:5 rig (docs/physics-reference.md §7.6)\n\n";
   WriteSimilitude(md, rig, c);
+  const std::vector<std::string> problems = FitProblems(conds);
+  if (!problems.empty()) {
+    md << "\n## Fits without a result\n\n";
+    for (const std::string& p : problems) md << "- " << p << "\n";
+  }
   std::printf("rig-adhesion: %zu tests -> %s/report.md, rig_adhesion_slopes.csv, rig_adhesion_fit.csv\n", tests.size(),
               a.out.c_str());
+  if (!problems.empty()) {
+    std::string what = std::to_string(problems.size()) + " fit(s) without a result (report.md, 'Fits without a "
+                       "result'); the first: " + problems.front();
+    throw IncompleteResult(ExitCode::NotConverged, what);
+  }
 }
 
 }  // namespace
