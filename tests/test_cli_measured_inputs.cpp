@@ -96,4 +96,25 @@ TEST(CliMeasuredInputs, MeasuredDimensionsInAnotherUnitAreNamed) {
   fs::remove_all(dir);
 }
 
+// rig replay writes each row's measured time as read (a replay of 1 MHz data at t ~ 1000 s kept 6 decimals before).
+TEST(CliMeasuredInputs, RigReplayKeepsTheMeasuredTime) {
+  const fs::path dir = conforma::test::FreshTempDir("conforma_measured", "replay");
+  const fs::path input = dir / "run.csv";
+  std::ofstream(input) << "t_s,y_m,yaw_rad,omega1_rad_s,omega2_rad_s,load_left_N,load_right_N\n"
+                          "1000.0000005,0,0,52.3599,49.8665,490.5,490.5\n1000.0000015,0,0,52.3599,49.8665,490.5,490.5\n";
+  const auto r = RunCli("rig replay --scenario '" + kSource + "/scenarios/roller_rig_1to5.yaml' --input '" +
+                        input.string() + "' --out '" + (dir / "out").string() + "'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream csv(dir / "out" / "rig_replay.csv");
+  std::string header, first, second;
+  std::getline(csv, header);
+  std::getline(csv, first);
+  std::getline(csv, second);
+  EXPECT_EQ(first.substr(0, first.find(',')), "1000.0000005") << first;
+  // the step: the time to the next row, as the difference of the two doubles
+  EXPECT_NEAR(std::stod(first.substr(first.find(',') + 1)), 1e-6, 1e-12) << first;
+  EXPECT_EQ(second.substr(0, second.find(',')), "1000.0000015") << second;
+  fs::remove_all(dir);
+}
+
 }  // namespace

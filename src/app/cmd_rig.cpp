@@ -173,7 +173,7 @@ void RunReplay(const RigArgs& a) {
   const long failed = ReplayRollerRigSamples(sc.options, &state, samples, [&](const RollerRigReplayRow& row) {
     const RollerRigSampleResult& r = row.result;
     const RollerRigKinematicsResult& k = r.kinematics;
-    csv << Fmt("%.6f", row.sample.time_s) << "," << Fmt("%.6g", row.sample.duration_s) << "," << to_string(r.status)
+    csv << Fmt("%.12g", row.sample.time_s) << "," << Fmt("%.12g", row.sample.duration_s) << "," << to_string(r.status)
         << "," << to_string(k.status) << "," << Fmt("%.10g", k.wheelset_speed_rad_s) << ","
         << Fmt("%.10g", k.eq2_wheelset_speed_rad_s);
     for (int j = 0; j < 2; ++j) {
