@@ -38,22 +38,35 @@ class IncompleteResultError(RuntimeError):
         self.problems = problems
 
 
+def _field(result, key, what):
+    """result[key], or a ValueError naming what the dict was expected to be (a user's own dict, a wrong object)."""
+    if not isinstance(result, dict):
+        raise TypeError(f"{what}: expected a dict, got {type(result).__name__}")
+    if key not in result:
+        raise ValueError(f"{what}: the dict has no '{key}' (keys: {sorted(result)[:8]})")
+    return result[key]
+
+
 def wheel_problems(wheel, load_N=None):
     """What is incomplete in one wheel dict of contact() / contact_at_pose(): a list of strings ([] = complete).
     load_N: the prescribed wheel load (None or < 0: pose given); a wheel without contact under a positive load did
     not carry it (the rule of `conforma contact`, src/app/contact_status.hpp)."""
+    what = "wheel_problems: a wheel dict of contact() / contact_at_pose() / ContactLut.evaluate()"
+    status = _field(wheel, "status", what)
     side = wheel.get("side", "?")
     problems = []
-    if wheel["status"] == "no_contact" and load_N is not None and load_N > 0:
+    if status == "no_contact" and load_N is not None and load_N > 0:
         problems.append(f"{side} wheel: status no_contact: the prescribed load {load_N:.6g} N is not carried")
-    elif wheel["status"] not in WHEEL_COMPLETE:
-        problems.append(f"{side} wheel: status {wheel['status']} (vertical pressure force "
+    elif status not in WHEEL_COMPLETE:
+        problems.append(f"{side} wheel: status {status} (vertical pressure force "
                         f"{wheel.get('pressure_vertical_force_N', float('nan')):.6g} N)")
     for j, p in enumerate(wheel.get("patches", [])):
-        if p["normal_status"] not in NORMAL_COMPLETE:
-            problems.append(f"{side} wheel, patch {j}: normal_status {p['normal_status']}")
-        if p["tangential_status"] not in TANGENTIAL_COMPLETE:
-            problems.append(f"{side} wheel, patch {j}: tangential_status {p['tangential_status']}")
+        normal = _field(p, "normal_status", f"{what}, patch {j}")
+        tangential = _field(p, "tangential_status", f"{what}, patch {j}")
+        if normal not in NORMAL_COMPLETE:
+            problems.append(f"{side} wheel, patch {j}: normal_status {normal}")
+        if tangential not in TANGENTIAL_COMPLETE:
+            problems.append(f"{side} wheel, patch {j}: tangential_status {tangential}")
     return problems
 
 
@@ -62,10 +75,13 @@ def wear_problems(run):
     (IncompleteReason, include/conforma/wear_simulation.hpp): a status other than "completed", or wheel contacts that
     failed (no wear taken from them). Kinematics fallbacks (the steps table's kinematics_fallbacks) are counted in
     the table but are not a missing result."""
+    what = "wear_problems: the dict of wear()"
     problems = []
-    steps = run["steps"]
-    if run["status"] != "completed":
-        problems.append(f"status {run['status']} after {len(steps['step']) - 1} step(s): {run['message']}")
+    steps = _field(run, "steps", what)
+    for key in ("step", "failed_contacts"):
+        _field(steps, key, what + ", 'steps'")
+    if _field(run, "status", what) != "completed":
+        problems.append(f"status {run['status']} after {len(steps['step']) - 1} step(s): {run.get('message', '')}")
     failed = [(int(steps["step"][i]), int(v)) for i, v in enumerate(steps["failed_contacts"]) if v > 0]
     if failed:
         listed = ", ".join(f"{k} ({v})" for k, v in failed)

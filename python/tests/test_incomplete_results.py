@@ -128,3 +128,17 @@ def test_no_contact_under_a_positive_load_is_incomplete():
     assert wheel_problems(wheel) == []
     assert wheel_problems(wheel, -1.0) == []
     assert wheel_problems(wheel, 0.0) == []
+
+
+def test_status_helpers_name_a_dict_that_is_not_a_result():
+    """wheel_problems / wear_problems given a user's own dict (or another object) say what is missing instead of
+    raising a bare KeyError deep inside."""
+    with pytest.raises(ValueError, match="wheel_problems: .* has no 'status'"):
+        conforma.wheel_problems({})
+    with pytest.raises(ValueError, match="patch 0: the dict has no 'normal_status'"):
+        conforma.wheel_problems({"status": "ok", "patches": [{}]})
+    with pytest.raises(TypeError, match="expected a dict, got list"):
+        conforma.wheel_problems([])
+    with pytest.raises(ValueError, match="wear_problems: .* has no 'steps'"):
+        conforma.wear_problems({"status": "completed"})
+    assert conforma.wheel_problems({"status": "not_converged", "side": "left"})[0].startswith("left wheel: status")
