@@ -229,6 +229,10 @@ TEST(CliBounds, PoseAndTrackBeyondARailwayAreRefused) {
   fs::remove_all(dir);
   ExpectInputError(curving + "kinematics.tangent_amplitude_mm=1e6", "tangent_amplitude_mm");
   ExpectInputError(curving + "wear_law=archard", "built-in law is 'usfd'");
+  // each rail step runs the whole wheel sequence again: a typo of 1e9 rail steps ran for ever
+  ExpectInputError("curving --class 0 --scenario '" + std::string(CONFORMA_SOURCE_DIR) +
+                       "/scenarios/metro_rail_steps.yaml' --set rail.steps=1000000000",
+                   "rail.steps = 1000000000: at most 1000");
 }
 
 // A sweep past the flange onto no rail: every pose is a row naming it, and the run is incomplete (exit 5); the CSV

@@ -357,6 +357,7 @@ constexpr double kMaxCantPerGauge = 0.2;             // 287 mm on 1435 mm: above
 constexpr double kMaxClassAcceleration_m_s2 = 5.0;   // ~ mu g with mu = 0.5
 constexpr double kMaxTangentAmplitude_m = 0.1;       // (flangeway clearance ~5-10 mm, flange ~30 mm high)
 constexpr int kMaxTangentPhases = 1000;
+constexpr int kMaxRailSteps = 1000;  // rail.steps (a typo of 1e9 ran a wheel sequence per rail step for ever)
 
 }  // namespace
 
@@ -411,6 +412,10 @@ void Scenario::validate() const {
     throw InputError(where + "update.substeps must lie in [1, 100], got " + std::to_string(update.substeps));
   if (!(update.total_km >= 0)) throw InputError(where + "update.total_km must be >= 0");
   if (!rail_steps.fixed && rail_steps.steps < 1) throw InputError(where + "rail.steps must be >= 1 when rail.fixed is false");
+  // each rail step runs the whole wheel sequence from the new wheel (paper 003 Fig. 11: 10 rail steps)
+  if (!rail_steps.fixed && rail_steps.steps > kMaxRailSteps)
+    throw InputError(where + "rail.steps = " + std::to_string(rail_steps.steps) + ": at most " +
+                     std::to_string(kMaxRailSteps) + " (each rail step runs the whole wheel sequence again)");
   if (!(rail_steps.cap_m > 0)) throw InputError(where + "rail.cap_mm must be > 0");
   if (!(rail_steps.output_spacing_m >= 0 && rail_steps.output_spacing_m <= 1e-3))
     throw InputError(where + "rail.spacing_mm must be in [0, 1] (0: the spacing of the rail before the step)");
