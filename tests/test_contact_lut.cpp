@@ -381,6 +381,21 @@ TEST(ContactLut, BadInputIsAnInputError) {
   o.model = ContactModel::Kpec;  // not the table's model
   EXPECT_THROW(EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), o), InputError);
   o.model = ContactModel::Hertz;
+  // another elastic flange than the table's: named in degrees, the rigid flange as such (a 300-digit number before)
+  WheelContactOptions elastic = o;
+  elastic.max_touching_contact_angle_rad = lut.header.max_touching_contact_angle_rad <
+                                                   WheelsetTrackGeometry::kAllContactAngles
+                                               ? WheelsetTrackGeometry::kAllContactAngles
+                                               : 60.0 * M_PI / 180.0;
+  try {
+    EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), elastic);
+    ADD_FAILURE() << "another elastic flange was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("elastic flange (--elastic-flange-deg)"), std::string::npos) << what;
+    EXPECT_NE(what.find("none: rigid flange"), std::string::npos) << what;
+    EXPECT_LT(what.size(), 200u) << what;
+  }
   o.vertical_load_N = 0.0;  // unloaded: no contact, as the pipeline
   EXPECT_EQ(EvaluateContactLut(lut, Geometry(), Side::Left, eq.pose, Velocity(), o).status,
             WheelContactStatus::NoContact);

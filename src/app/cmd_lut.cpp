@@ -11,6 +11,7 @@
 #include "cli_setup.hpp"
 #include "cli_checks.hpp"
 #include "commands.hpp"
+#include "text_format.hpp"
 #include "conforma/contact_lut.hpp"
 #include "conforma/contact_lut_check.hpp"
 #include "conforma/contact_lut_grid.hpp"
@@ -55,7 +56,7 @@ void PrintHeader(std::ostream& out, const ContactLut& lut) {
                 "  model %s, G = %.6g GPa, nu = %.4g, elastic flange %s, KP strips %d, match distance %.3g mm\n",
                 to_string(h.model), h.material.shear_modulus_Pa * 1e-9, h.material.poisson_ratio,
                 h.max_touching_contact_angle_rad < 10.0
-                    ? (std::to_string(h.max_touching_contact_angle_rad * 180.0 / M_PI) + " deg").c_str()
+                    ? (Fmt("%g", h.max_touching_contact_angle_rad * 180.0 / M_PI) + " deg").c_str()
                     : "off (rigid)",
                 h.kp_strips, h.match_distance_m * 1e3);
   out << line;
@@ -130,7 +131,7 @@ void RegisterLutCommand(CLI::App& app) {
       o.rail_profile = b->args.track.rail;
       const TrackArgs& t = b->args.track;
       o.track = "inclination " + (t.inclination.empty() ? std::string("default") : t.inclination) + ", gauge " +
-                std::to_string(t.gauge_mm) + " mm, r0 " + std::to_string(t.nominal_radius_mm) + " mm";
+                Fmt("%g", t.gauge_mm) + " mm, r0 " + Fmt("%g", t.nominal_radius_mm) + " mm";
       ProgressReporter progress("lut build", 0.0, "", ProgressModeOf(sub), std::cerr);
       o.on_progress = progress.Function();
       const ContactLut table = BuildContactLut(*geometry, o);

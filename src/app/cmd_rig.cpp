@@ -22,6 +22,7 @@
 #include "conforma/roller_rig_plan.hpp"
 #include "conforma/roller_rig_replay.hpp"
 #include "exit_status.hpp"
+#include "text_format.hpp"
 #include "progress.hpp"
 
 namespace conforma::cli {
@@ -35,12 +36,6 @@ struct RigArgs {
   bool adaptive_substeps = false;
   std::string model;
 };
-
-std::string Fmt(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
 
 RollerRigScenario Scenario(const RigArgs& a) {
   // 0 = the scenario's; a negative or NaN value was silently the scenario's too (fuzzing, session 25)

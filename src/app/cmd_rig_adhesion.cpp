@@ -23,6 +23,7 @@
 #include "cli_checks.hpp"
 #include "commands.hpp"
 #include "exit_status.hpp"
+#include "text_format.hpp"
 #include "conforma/data_paths.hpp"
 #include "conforma/error.hpp"
 #include "conforma/similitude.hpp"
@@ -39,12 +40,6 @@ struct RigAdhesionArgs {
   int max_iterations = 200;
   bool sensitivity = true;
 };
-
-std::string Fmt(const char* format, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
 
 std::vector<RollerRigAdhesionTest> OfCondition(const std::vector<RollerRigAdhesionTest>& all, const std::string& c) {
   std::vector<RollerRigAdhesionTest> out;

@@ -516,6 +516,17 @@ WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose
   return report;
 }
 
+// "%g" of a number, and an elastic-flange angle as the option gives it: degrees, or none (the rigid flange)
+std::string Number(double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+std::string ElasticFlangeText(double max_touching_contact_angle_rad) {
+  if (max_touching_contact_angle_rad >= WheelsetTrackGeometry::kAllContactAngles) return "none: rigid flange";
+  return Number(max_touching_contact_angle_rad * 180.0 / M_PI) + " deg";
+}
+
 void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometry, const WheelContactOptions& o) {
   const ContactLutHeader& h = lut.header;
   auto mismatch = [](const std::string& what, const std::string& table, const std::string& given) {
@@ -523,11 +534,11 @@ void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometr
   };
   if (o.model != h.model) mismatch("contact model", to_string(h.model), to_string(o.model));
   if (o.material.shear_modulus_Pa != h.material.shear_modulus_Pa || o.material.poisson_ratio != h.material.poisson_ratio)
-    mismatch("material", std::to_string(h.material.shear_modulus_Pa) + " Pa, nu " + std::to_string(h.material.poisson_ratio),
-             std::to_string(o.material.shear_modulus_Pa) + " Pa, nu " + std::to_string(o.material.poisson_ratio));
+    mismatch("material", "G " + Number(h.material.shear_modulus_Pa) + " Pa, nu " + Number(h.material.poisson_ratio),
+             "G " + Number(o.material.shear_modulus_Pa) + " Pa, nu " + Number(o.material.poisson_ratio));
   if (o.max_touching_contact_angle_rad != h.max_touching_contact_angle_rad)
-    mismatch("elastic-flange angle (max_touching_contact_angle_rad)", std::to_string(h.max_touching_contact_angle_rad),
-             std::to_string(o.max_touching_contact_angle_rad));
+    mismatch("elastic flange (--elastic-flange-deg)", ElasticFlangeText(h.max_touching_contact_angle_rad),
+             ElasticFlangeText(o.max_touching_contact_angle_rad));
   for (Side s : {Side::Left, Side::Right}) {
     const int i = side_index(s);
     if (std::fabs(geometry.rail_origin_eta_m(s) - h.rail_origin_eta_m[i]) > 1e-9 ||
