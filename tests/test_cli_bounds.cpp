@@ -126,6 +126,12 @@ TEST(CliBounds, ContactTableOfAnotherGeometryOrDamagedIsAnError) {
   const std::string query = " --load-N 50000 --y-mm 0.5 --yaw-mrad 0.3";
   const auto same = RunCli("lut eval '" + table + "'" + query);
   ASSERT_EQ(same.exit_code, 0) << same.err;
+  // without --load-N: the middle of the table's load axis (the shared 10 kN default lies outside it), said so, and
+  // the same answer as --load-N 50000 given
+  const auto middle = RunCli("lut eval '" + table + "' --y-mm 0.5 --yaw-mrad 0.3");
+  ASSERT_EQ(middle.exit_code, 0) << middle.err;
+  EXPECT_NE(middle.out.find("load 50 kN (the middle of the table's load axis"), std::string::npos) << middle.out;
+  EXPECT_EQ(middle.out.substr(middle.out.find('\n')), same.out.substr(same.out.find('\n')));
   const auto other = RunCli("lut eval '" + table + "'" + query + " --wheel '" +
                             conforma::test::SharedData("profiles/contact/testbank/profiles/Car7358_0001r.whl") + "'");
   EXPECT_EQ(other.exit_code, 2) << other.out << other.err;

@@ -169,11 +169,15 @@ void RegisterLutCommand(CLI::App& app) {
     sub->add_option("--side", e->side, "left, right or both")->check(CLI::IsMember({"left", "right", "both"}));
     sub->add_flag("--json", e->json, "machine-readable output");
     sub->add_flag("--direct", e->direct, "also solve the pose directly (SolveWheelContact) for comparison");
-    sub->callback([e]() {
+    sub->callback([e, sub]() {
       const ContactLut table = LoadContactLut(e->file);
       const auto geometry = e->args.track.make_geometry();
       CheckContactLutGeometry(table, *geometry);
-      const WheelContactOptions options = e->args.options();
+      WheelContactOptions options = e->args.options();
+      // no --load-N: the middle of the table's load axis (the shared default, 10 kN, lies outside a default table)
+      const bool load_given = sub->count("--load-N") > 0;
+      if (!load_given && !table.grid.load_N.empty())
+        options.vertical_load_N = 0.5 * (table.grid.load_N.front() + table.grid.load_N.back());
       require_finite(e->y_mm, "--y-mm");
       require_finite(e->yaw_mrad, "--yaw-mrad");
       EquilibriumOptions eo;
@@ -182,10 +186,12 @@ void RegisterLutCommand(CLI::App& app) {
       if (eq.status != EquilibriumStatus::Converged)
         throw InputError("no rigid equilibrium at --y-mm " + std::to_string(e->y_mm));
       const WheelsetVelocity velocity = e->args.contact.rolling_velocity(geometry->setup().nominal_radius_m[0]);
-      nlohmann::json out = {{"model", e->args.contact.model}, {"wheels", nlohmann::json::array()}};
+      nlohmann::json out = {{"model", e->args.contact.model}, {"load_N", options.vertical_load_N},
+                            {"wheels", nlohmann::json::array()}};
       if (!e->json) {
         std::cout << "conforma lut eval: " << e->file << ", y = " << e->y_mm << " mm, yaw = " << e->yaw_mrad
-                  << " mrad, load " << options.vertical_load_N * 1e-3 << " kN\n";
+                  << " mrad, load " << options.vertical_load_N * 1e-3 << " kN"
+                  << (load_given ? "" : " (the middle of the table's load axis; --load-N to choose)") << "\n";
         PrintPatchTableHeader(std::cout, "wheel");
       }
       std::vector<WheelContactReport> reports;
