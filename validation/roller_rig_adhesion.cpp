@@ -11,14 +11,13 @@
 #include "conforma/geometry.hpp"
 #include "conforma/kalker.hpp"
 #include "conforma/standard_profiles.hpp"
+#include "conforma/wheel_contact_options.hpp"
 
 namespace conforma {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMaxAdhesion = 1.0;           // F_x / N of steel on steel (dry tests: ~0.4-0.6)
-constexpr double kMaxRollerSpeedRpm = 10000.0;  // roller rigs: < 3000 rpm (paper 000: 1000 rpm)
-constexpr double kMaxWheelLoadKg = 1e5;         // 1 MN: the project's wheel-load bound (RequireWheelLoad)
+constexpr double kMaxAdhesion = 1.0;  // F_x / N of steel on steel (dry tests: ~0.4-0.6)
 const char* const kColumns[] = {"test", "reference_speed_rpm", "wheel_load_kg", "max_adhesion",
                                 "steady_adhesion", "initial_slope_N", "condition"};
 }  // namespace
@@ -63,14 +62,15 @@ std::vector<RollerRigAdhesionTest> ReadRollerRigAdhesionTable(const std::string&
     if (t.max_adhesion > kMaxAdhesion)
       throw InputError(path, line_no, "max_adhesion " + cells[3] +
                                           " is not a wheel-rail adhesion coefficient (F_x / N <= 1): a percentage?");
-    if (t.reference_speed_rpm > kMaxRollerSpeedRpm)
-      throw InputError(path, line_no, "reference_speed_rpm " + cells[1] +
-                                          " is beyond a roller rig's " + std::to_string(int(kMaxRollerSpeedRpm)) +
-                                          " rpm");
-    if (t.wheel_load_kg > kMaxWheelLoadKg)
-      throw InputError(path, line_no, "wheel_load_kg " + cells[2] +
-                                          " is beyond a wheel's load (at most " + std::to_string(int(kMaxWheelLoadKg)) +
-                                          " kg: 1 MN)");
+    if (t.reference_speed_rpm > kMaxRollerRigSpeedRpm)
+      throw InputError(path, line_no, "reference_speed_rpm " + cells[1] + " is beyond a roller rig's " +
+                                          MessageNumber(kMaxRollerRigSpeedRpm) + " rpm");
+    // the wheel-load bound of RequireWheelLoad, in kg at the options' default gravity (the table is read before them)
+    const double gravity = RollerRigAdhesionOptions{}.gravity_m_per_s2;
+    if (t.wheel_load_kg * gravity > kMaxWheelLoadN)
+      throw InputError(path, line_no, "wheel_load_kg " + cells[2] + " is beyond a wheel's load (at most " +
+                                          MessageNumber(kMaxWheelLoadN / gravity) + " kg: " +
+                                          MessageNumber(kMaxWheelLoadN) + " N)");
     for (const RollerRigAdhesionTest& other : tests)
       if (other.test == t.test)
         throw InputError(path, line_no, "test " + std::to_string(t.test) + " is given twice");

@@ -66,6 +66,9 @@ const char* to_string(Side side);  // "left", "right"
 // Range of a wheel's taping-line radius accepted by TrackSetup::validate (a 1:10 scaled rig ~46 mm, locomotives ~0.63 m)
 constexpr double kMinWheelRadius_m = 0.02;
 constexpr double kMaxWheelRadius_m = 2.0;
+// Largest roller speed of a roller rig accepted in its input files (the wear plan, the adhesion table): rigs run
+// below ~3000 rpm (paper 000: 1000 rpm); beyond it a unit or column mistake
+constexpr double kMaxRollerRigSpeedRpm = 10000.0;
 // Largest wheelset yaw relative to the track a contact entry point accepts (rad; angles of attack reach ~50 mrad on
 // a 20 m tram curve); beyond it the command line and table builds refuse the pose instead of solving it
 constexpr double kMaxWheelsetYaw_rad = 0.2;

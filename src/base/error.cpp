@@ -1,9 +1,16 @@
 #include "conforma/error.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace conforma {
+
+std::string MessageNumber(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
 
 namespace {
 std::string describe(const char* name, double value, const char* rule) {

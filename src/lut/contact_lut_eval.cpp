@@ -516,15 +516,10 @@ WheelContactReport ReportAt(const ContactLut& lut, Side side, const WheelsetPose
   return report;
 }
 
-// "%g" of a number, and an elastic-flange angle as the option gives it: degrees, or none (the rigid flange)
-std::string Number(double v) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
+// An elastic-flange angle as the option gives it: degrees, or none (the rigid flange)
 std::string ElasticFlangeText(double max_touching_contact_angle_rad) {
   if (max_touching_contact_angle_rad >= WheelsetTrackGeometry::kAllContactAngles) return "none: rigid flange";
-  return Number(max_touching_contact_angle_rad * 180.0 / M_PI) + " deg";
+  return MessageNumber(max_touching_contact_angle_rad * 180.0 / M_PI) + " deg";
 }
 
 void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometry, const WheelContactOptions& o) {
@@ -534,8 +529,9 @@ void CheckCompatible(const ContactLut& lut, const WheelsetTrackGeometry& geometr
   };
   if (o.model != h.model) mismatch("contact model", to_string(h.model), to_string(o.model));
   if (o.material.shear_modulus_Pa != h.material.shear_modulus_Pa || o.material.poisson_ratio != h.material.poisson_ratio)
-    mismatch("material", "G " + Number(h.material.shear_modulus_Pa) + " Pa, nu " + Number(h.material.poisson_ratio),
-             "G " + Number(o.material.shear_modulus_Pa) + " Pa, nu " + Number(o.material.poisson_ratio));
+    mismatch("material", "G " + MessageNumber(h.material.shear_modulus_Pa) + " Pa, nu " +
+                             MessageNumber(h.material.poisson_ratio),
+             "G " + MessageNumber(o.material.shear_modulus_Pa) + " Pa, nu " + MessageNumber(o.material.poisson_ratio));
   if (o.max_touching_contact_angle_rad != h.max_touching_contact_angle_rad)
     mismatch("elastic flange (--elastic-flange-deg)", ElasticFlangeText(h.max_touching_contact_angle_rad),
              ElasticFlangeText(o.max_touching_contact_angle_rad));

@@ -10,26 +10,17 @@
 #include <filesystem>
 #include <initializer_list>
 #include <set>
-#include <sstream>
 #include <string>
 #include <utility>
 
 #include "conforma/contact_model.hpp"
 #include "conforma/error.hpp"
+#include "conforma/geometry.hpp"
 #include "conforma/profile_update.hpp"
+#include "conforma/wheel_contact_options.hpp"
 #include "conforma/yaml_keys.hpp"
 
 namespace conforma {
-
-namespace {
-constexpr double kMaxRigSpeedRpm = 10000.0;  // roller rigs run below ~3000 rpm
-constexpr double kMaxRigWheelLoadKg = 1e5;   // 1 MN, the project's wheel-load bound (RequireWheelLoad)
-std::string ShortNumber(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-}  // namespace
 
 namespace {
 
@@ -190,12 +181,13 @@ RollerRigScenario LoadRollerRigScenario(const std::string& path) {
     if (!(t.reference_speed_rpm > 0.0) || !(t.wheel_load_kg > 0.0) || !(t.distance_km > 0.0))
       throw InputError(wp + ": reference_speed_rpm, wheel_load_kg and distance_km must be > 0");
     // a roller rig's range (paper 000: 1000 rpm, 37 kg per wheel); beyond it a unit or key mistake
-    if (t.reference_speed_rpm > kMaxRigSpeedRpm)
-      throw InputError(wp + ": reference_speed_rpm " + ShortNumber(t.reference_speed_rpm) + " is beyond a roller "
-                       "rig's " + ShortNumber(kMaxRigSpeedRpm) + " rpm");
-    if (t.wheel_load_kg > kMaxRigWheelLoadKg)
-      throw InputError(wp + ": wheel_load_kg " + ShortNumber(t.wheel_load_kg) + " is beyond a wheel's load (at most " +
-                       ShortNumber(kMaxRigWheelLoadKg) + " kg: 1 MN)");
+    if (t.reference_speed_rpm > kMaxRollerRigSpeedRpm)
+      throw InputError(wp + ": reference_speed_rpm " + MessageNumber(t.reference_speed_rpm) + " is beyond a roller "
+                       "rig's " + MessageNumber(kMaxRollerRigSpeedRpm) + " rpm");
+    if (t.wheel_load_kg * sc.gravity_m_s2 > kMaxWheelLoadN)  // the wheel-load bound of RequireWheelLoad
+      throw InputError(wp + ": wheel_load_kg " + MessageNumber(t.wheel_load_kg) + " is beyond a wheel's load (at most " +
+                       MessageNumber(kMaxWheelLoadN / sc.gravity_m_s2) + " kg: " + MessageNumber(kMaxWheelLoadN) +
+                       " N)");
     for (const RollerRigWearTestCase& other : sc.plan)
       if (other.test == t.test)
         throw InputError(wp + ": test " + std::to_string(t.test) + " is planned twice (test numbers name the "
