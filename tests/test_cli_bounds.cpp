@@ -152,6 +152,9 @@ TEST(CliBounds, ContactTableOfAnotherGeometryOrDamagedIsAnError) {
       EXPECT_EQ(r.out.substr(r.out.find('\n')), same.out.substr(same.out.find('\n')))
           << "byte " << at << " changed the answer without an error";
     }
+    if (r.exit_code == 2) {  // the error names the file and what of it could not be read
+      EXPECT_NE(r.err.find(damaged + ": contact LUT file: "), std::string::npos) << "byte " << at << ": " << r.err;
+    }
     errors += r.exit_code == 2;
   }
   // (14 of the 61 bytes changed are read and found; the others lie where nothing is read: padding, free space)

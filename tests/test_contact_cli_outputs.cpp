@@ -59,19 +59,25 @@ TEST(ContactCliOutputs, NominalRadiusWarningInJsonAndOnStderr) {
   // --r0-mm does not remove it: the rolling radius is r0 + z_wheel, the offset is the profile's
   const auto other_r0 = RunCli(args + " --r0-mm 425 --json");
   ASSERT_EQ(other_r0.exit_code, 0) << other_r0.err;
-  for (const nlohmann::json& w : nlohmann::json::parse(other_r0.out)["wheels"])
+  const nlohmann::json other_r0_json = nlohmann::json::parse(other_r0.out);
+  ASSERT_EQ(other_r0_json.at("wheels").size(), 2u) << other_r0.out;
+  for (const nlohmann::json& w : other_r0_json.at("wheels"))
     EXPECT_NE(WarningsOf(w).at(0).find("+35.3 mm from the nominal radius r0 = 425.0 mm"), std::string::npos);
   // the shift the warning names removes it, and with it the spurious full slip (issue 13 item 10)
   const auto shifted = RunCli(args + " --wheel-z-shift-mm -35.3 --json");
   ASSERT_EQ(shifted.exit_code, 0) << shifted.err;
-  for (const nlohmann::json& w : nlohmann::json::parse(shifted.out)["wheels"]) {
+  const nlohmann::json shifted_json = nlohmann::json::parse(shifted.out);
+  ASSERT_EQ(shifted_json.at("wheels").size(), 2u) << shifted.out;
+  for (const nlohmann::json& w : shifted_json.at("wheels")) {
     EXPECT_TRUE(WarningsOf(w).empty()) << w.dump(1);
     for (const nlohmann::json& p : w["patches"]) EXPECT_LT(std::fabs(p["xi"].get<double>()), 2e-3) << p.dump(1);
   }
   // a new wheel on the tread: no warning
   const auto s1002 = RunCli("contact --rail 50E4 --json");
   ASSERT_EQ(s1002.exit_code, 0) << s1002.err;
-  for (const nlohmann::json& w : nlohmann::json::parse(s1002.out)["wheels"]) EXPECT_TRUE(WarningsOf(w).empty());
+  const nlohmann::json s1002_json = nlohmann::json::parse(s1002.out);
+  ASSERT_EQ(s1002_json.at("wheels").size(), 2u) << s1002.out;
+  for (const nlohmann::json& w : s1002_json.at("wheels")) EXPECT_TRUE(WarningsOf(w).empty());
   EXPECT_EQ(s1002.err.find("warning"), std::string::npos) << s1002.err;
 }
 
@@ -79,7 +85,9 @@ TEST(ContactCliOutputs, NominalRadiusWarningInJsonAndOnStderr) {
 TEST(ContactCliOutputs, FrictionOutsideRangeWarns) {
   const auto run = RunCli("contact --mu 5 --json");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const nlohmann::json& w : nlohmann::json::parse(run.out)["wheels"]) {
+  const nlohmann::json run_json = nlohmann::json::parse(run.out);
+  ASSERT_EQ(run_json.at("wheels").size(), 2u) << run.out;
+  for (const nlohmann::json& w : run_json.at("wheels")) {
     ASSERT_EQ(WarningsOf(w).size(), 1u) << w.dump(1);
     EXPECT_NE(WarningsOf(w)[0].find("friction_coefficient: the friction coefficient mu = 5 is outside"),
               std::string::npos);

@@ -38,56 +38,82 @@ struct Handle {  // closes an HDF5 id on scope exit
   throw InputError(path, 0, "contact LUT file: " + what);
 }
 
+// An id HDF5 could not open or a read it could not do (a damaged file: the format checksums its headers) is an
+// input error naming the object, never a default value read on.
+void Require(long long status, const std::string& path, const std::string& what) {
+  if (status < 0) Fail(path, what + " cannot be read (damaged file?)");
+}
+void RequireAttribute(hid_t obj, const char* name, const std::string& path) {
+  const htri_t exists = H5Aexists(obj, name);
+  Require(exists, path, std::string("attribute '") + name + "'");
+  if (exists == 0) Fail(path, std::string("attribute '") + name + "' missing");
+}
+
+// A write HDF5 could not do (disk full, no permission) is an error naming the object, not a file missing it.
+void RequireWritten(long long status, const char* name) {
+  if (status < 0) throw InputError(std::string("contact LUT file: '") + name + "' cannot be written");
+}
+
 void AttrString(hid_t obj, const char* name, const std::string& value) {
   Handle type{H5Tcopy(H5T_C_S1), H5Tclose};
   H5Tset_size(type.id, value.empty() ? 1 : value.size());
   H5Tset_strpad(type.id, H5T_STR_NULLPAD);
   Handle space{H5Screate(H5S_SCALAR), H5Sclose};
   Handle attr{H5Acreate2(obj, name, type.id, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  H5Awrite(attr.id, type.id, value.empty() ? "" : value.data());
+  RequireWritten(attr.id, name);
+  RequireWritten(H5Awrite(attr.id, type.id, value.empty() ? "" : value.data()), name);
 }
 
 void AttrDoubles(hid_t obj, const char* name, const std::vector<double>& v) {
   const hsize_t n = v.size();
   Handle space{n == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &n, nullptr), H5Sclose};
   Handle attr{H5Acreate2(obj, name, H5T_IEEE_F64LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  H5Awrite(attr.id, H5T_NATIVE_DOUBLE, v.data());
+  RequireWritten(attr.id, name);
+  RequireWritten(H5Awrite(attr.id, H5T_NATIVE_DOUBLE, v.data()), name);
 }
 
 void AttrInt(hid_t obj, const char* name, int v) {
   Handle space{H5Screate(H5S_SCALAR), H5Sclose};
   Handle attr{H5Acreate2(obj, name, H5T_STD_I32LE, space.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
-  H5Awrite(attr.id, H5T_NATIVE_INT, &v);
+  RequireWritten(attr.id, name);
+  RequireWritten(H5Awrite(attr.id, H5T_NATIVE_INT, &v), name);
 }
 
 std::string ReadAttrString(hid_t obj, const char* name, const std::string& path) {
-  if (H5Aexists(obj, name) <= 0) Fail(path, std::string("attribute '") + name + "' missing");
+  RequireAttribute(obj, name, path);
+  const std::string what = std::string("attribute '") + name + "'";
   Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
+  Require(attr.id, path, what);
   Handle type{H5Aget_type(attr.id), H5Tclose};
+  Require(type.id, path, what);
   if (H5Tget_class(type.id) != H5T_STRING) Fail(path, std::string("attribute '") + name + "' is not a string");
   if (H5Tis_variable_str(type.id) > 0) {
     char* s = nullptr;
     Handle mem{H5Tcopy(H5T_C_S1), H5Tclose};
     H5Tset_size(mem.id, H5T_VARIABLE);
-    H5Aread(attr.id, mem.id, &s);
+    Require(H5Aread(attr.id, mem.id, &s), path, what);
     std::string out = s ? s : "";
     H5free_memory(s);
     return out;
   }
   const size_t n = H5Tget_size(type.id);
   std::string s(n, '\0');
-  H5Aread(attr.id, type.id, s.data());
+  Require(H5Aread(attr.id, type.id, s.data()), path, what);
   s.resize(s.find('\0') == std::string::npos ? n : s.find('\0'));
   return s;
 }
 
 std::vector<double> ReadAttrDoubles(hid_t obj, const char* name, const std::string& path) {
-  if (H5Aexists(obj, name) <= 0) Fail(path, std::string("attribute '") + name + "' missing");
+  RequireAttribute(obj, name, path);
+  const std::string what = std::string("attribute '") + name + "'";
   Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
+  Require(attr.id, path, what);
   Handle space{H5Aget_space(attr.id), H5Sclose};
+  Require(space.id, path, what);
   const hssize_t n = H5Sget_simple_extent_npoints(space.id);
-  std::vector<double> v(n > 0 ? n : 0);
-  if (!v.empty()) H5Aread(attr.id, H5T_NATIVE_DOUBLE, v.data());
+  Require(n, path, what);
+  std::vector<double> v(n);
+  if (!v.empty()) Require(H5Aread(attr.id, H5T_NATIVE_DOUBLE, v.data()), path, what);
   return v;
 }
 double ReadAttrDouble(hid_t obj, const char* name, const std::string& path) {
@@ -96,10 +122,12 @@ double ReadAttrDouble(hid_t obj, const char* name, const std::string& path) {
   return v[0];
 }
 int ReadAttrInt(hid_t obj, const char* name, const std::string& path) {
-  if (H5Aexists(obj, name) <= 0) Fail(path, std::string("attribute '") + name + "' missing");
+  RequireAttribute(obj, name, path);
+  const std::string what = std::string("attribute '") + name + "'";
   Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
+  Require(attr.id, path, what);
   int v = 0;
-  H5Aread(attr.id, H5T_NATIVE_INT, &v);
+  Require(H5Aread(attr.id, H5T_NATIVE_INT, &v), path, what);
   return v;
 }
 
@@ -125,24 +153,31 @@ void WriteData(hid_t group, const char* name, const std::vector<T>& v, const std
                         H5P_DEFAULT),
              H5Dclose};
   if (set.id < 0) throw InputError(std::string("contact LUT file: dataset '") + name + "' cannot be created");
-  if (!v.empty()) H5Dwrite(set.id, is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  if (!v.empty())
+    RequireWritten(H5Dwrite(set.id, is_double ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()),
+                   name);
   AttrString(set.id, "units", units);
 }
 
 template <class T>
 std::vector<T> ReadData(hid_t group, const char* name, const std::string& path, size_t expected) {
-  if (H5Lexists(group, name, H5P_DEFAULT) <= 0) Fail(path, std::string("dataset '") + name + "' missing");
+  const std::string what = std::string("dataset '") + name + "'";
+  const htri_t exists = H5Lexists(group, name, H5P_DEFAULT);
+  Require(exists, path, what);
+  if (exists == 0) Fail(path, what + " missing");
   Handle set{H5Dopen2(group, name, H5P_DEFAULT), H5Dclose};
+  Require(set.id, path, what);
   Handle space{H5Dget_space(set.id), H5Sclose};
+  Require(space.id, path, what);
   const hssize_t n = H5Sget_simple_extent_npoints(space.id);
-  if (n < 0 || static_cast<size_t>(n) != expected)
-    Fail(path, std::string("dataset '") + name + "' has " + std::to_string(n) + " values, expected " +
-                   std::to_string(expected));
+  Require(n, path, what);
+  if (static_cast<size_t>(n) != expected)
+    Fail(path, what + " has " + std::to_string(n) + " values, expected " + std::to_string(expected));
   std::vector<T> v(expected);
-  if (expected > 0 &&
-      H5Dread(set.id, std::is_same<T, double>::value ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL,
-              H5P_DEFAULT, v.data()) < 0)
-    Fail(path, std::string("dataset '") + name + "' cannot be read");
+  if (expected > 0)
+    Require(H5Dread(set.id, std::is_same<T, double>::value ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL,
+                    H5P_DEFAULT, v.data()),
+            path, what);
   return v;
 }
 
@@ -235,6 +270,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
              "rows xi, eta, phi [1/m]; columns multiply (1, v_lateral/V, yaw_rate/V, axle_rate/V) [-, -, 1/m, 1/m]");
   {
     Handle grid{H5Gcreate2(root, "grid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    RequireWritten(grid.id, "grid");
     WriteData(grid.id, "lateral_m", lut.grid.lateral_m, "m");
     WriteData(grid.id, "yaw_rad", lut.grid.yaw_rad, "rad");
     WriteData(grid.id, "load_N", lut.grid.load_N, "N");
@@ -243,6 +279,7 @@ void SaveContactLut(const ContactLut& lut, const std::string& path) {
     const std::vector<LutNode>& nodes = lut.nodes[s];
     if (nodes.size() != lut.grid.nodes()) Fail(path, "the table's node count does not match its grid");
     Handle g{H5Gcreate2(root, kSideGroups[s], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    RequireWritten(g.id, kSideGroups[s]);
     std::vector<int> status, offset{0}, model;
     std::vector<double> vertical, roll, map, slip, stations;
     for (const LutNode& n : nodes) {
@@ -307,7 +344,10 @@ ContactLut LoadContactLut(const std::string& path) {
   if (eta.size() != 2 || r0.size() != 2) Fail(path, "rail_origin_eta_m / nominal_radius_m need 2 values");
   h.rail_origin_eta_m = {eta[0], eta[1]};
   h.nominal_radius_m = {r0[0], r0[1]};
-  if (H5Aexists(root, "geometry_digest") > 0) h.geometry_digest = ReadAttrString(root, "geometry_digest", path);
+  // (optional: tables written before the digest; a damaged one is an error, not a table without it)
+  const htri_t has_digest = H5Aexists(root, "geometry_digest");
+  Require(has_digest, path, "attribute 'geometry_digest'");
+  if (has_digest > 0) h.geometry_digest = ReadAttrString(root, "geometry_digest", path);
   h.conforma_version = ReadAttrString(root, "conforma_version", path);
   h.conforma_commit = ReadAttrString(root, "conforma_commit", path);
   h.generation_s = ReadAttrDouble(root, "generation_s", path);
@@ -315,14 +355,21 @@ ContactLut LoadContactLut(const std::string& path) {
   auto axis_size = [&](const char* name) {
     if (H5Lexists(root, "grid", H5P_DEFAULT) <= 0) Fail(path, "group 'grid' missing");
     Handle grid{H5Gopen2(root, "grid", H5P_DEFAULT), H5Gclose};
+    Require(grid.id, path, "group 'grid'");
     if (H5Lexists(grid.id, name, H5P_DEFAULT) <= 0) Fail(path, std::string("dataset 'grid/") + name + "' missing");
+    const std::string what = std::string("dataset 'grid/") + name + "'";
     Handle set{H5Dopen2(grid.id, name, H5P_DEFAULT), H5Dclose};
+    Require(set.id, path, what);
     Handle space{H5Dget_space(set.id), H5Sclose};
-    return static_cast<size_t>(H5Sget_simple_extent_npoints(space.id));
+    Require(space.id, path, what);
+    const hssize_t n = H5Sget_simple_extent_npoints(space.id);
+    Require(n, path, what);
+    return static_cast<size_t>(n);
   };
   const size_t ny = axis_size("lateral_m"), npsi = axis_size("yaw_rad"), nq = axis_size("load_N");
   {
     Handle grid{H5Gopen2(root, "grid", H5P_DEFAULT), H5Gclose};
+    Require(grid.id, path, "group 'grid'");
     lut.grid.lateral_m = ReadData<double>(grid.id, "lateral_m", path, ny);
     lut.grid.yaw_rad = ReadData<double>(grid.id, "yaw_rad", path, npsi);
     lut.grid.load_N = ReadData<double>(grid.id, "load_N", path, nq);
@@ -336,6 +383,7 @@ ContactLut LoadContactLut(const std::string& path) {
   for (int s = 0; s < 2; ++s) {
     if (H5Lexists(root, kSideGroups[s], H5P_DEFAULT) <= 0) Fail(path, std::string("group '") + kSideGroups[s] + "' missing");
     Handle g{H5Gopen2(root, kSideGroups[s], H5P_DEFAULT), H5Gclose};
+    Require(g.id, path, std::string("group '") + kSideGroups[s] + "'");
     const std::vector<int> status = ReadData<int>(g.id, "node_status", path, nodes);
     const std::vector<double> vertical = ReadData<double>(g.id, "node_vertical_m", path, nodes);
     const std::vector<double> roll = ReadData<double>(g.id, "node_roll_rad", path, nodes);
