@@ -36,7 +36,7 @@ void ValidatePatch(const PatchGeometry& patch) {
       const double step = (patch.s_m[j] - patch.s_m[j - 1]) / patch.ds_m;
       if (!(step > 0.5) || std::fabs(step - std::round(step)) > 1e-6 * std::round(step))
         throw InputError(where + "strip centres must be a whole number of ds_m apart, increasing (found " +
-                         std::to_string(step) + " ds_m)");
+                         MessageNumber(step) + " ds_m)");
     }
   }
 }

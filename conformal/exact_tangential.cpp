@@ -106,8 +106,8 @@ ExactTangentialResult SolveExactTangential(const BemGrid& grid, const Eigen::Mat
   auto mu = [&](double gamma) {
     const double value = options.friction ? options.friction(gamma) : options.friction_coefficient;
     if (!(value >= 0.0) || !std::isfinite(value))
-      throw InputError("exact tangential: the friction law gives mu = " + std::to_string(value) + " at slip " +
-                       std::to_string(gamma));
+      throw InputError("exact tangential: the friction law gives mu = " + MessageNumber(value) + " at slip " +
+                       MessageNumber(gamma));
     return value;
   };
 

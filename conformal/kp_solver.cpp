@@ -81,7 +81,7 @@ void ValidateKpOptions(const KpOptions& options) {
   require_positive(options.virtual_penetration_factor, "KpOptions.virtual_penetration_factor");
   if (options.virtual_penetration_factor > 1.0)
     throw InputError("KpOptions.virtual_penetration_factor must be <= 1, got " +
-                     std::to_string(options.virtual_penetration_factor));
+                     MessageNumber(options.virtual_penetration_factor));
   if (options.strips_across_contact < 3 || options.strips_across_contact > 100000)
     throw InputError("KpOptions.strips_across_contact must lie in [3, 100000], got " +
                      std::to_string(options.strips_across_contact));

@@ -67,7 +67,7 @@ void FrictionLaw::validate() const {
   for (int i = 0; i < n; ++i)
     if (!std::isfinite(parameters[i]) || parameters[i] < 0.0)
       throw InputError(std::string("FrictionLaw ") + to_string(kind) + ": parameter " + std::to_string(i) +
-                       " must be finite and >= 0 (got " + std::to_string(parameters[i]) + ")");
+                       " must be finite and >= 0 (got " + MessageNumber(parameters[i]) + ")");
   if (kind == FrictionLawKind::F1aExponential && parameters[1] > 1.0)
     throw InputError("FrictionLaw f1a: alpha must be in [0, 1]");
   if (kind == FrictionLawKind::F1bPiecewise && !(parameters[2] > 0.0))

@@ -137,7 +137,7 @@ MeasuredDimensions ParseMeasuredDimensions(const std::string& text, const std::s
     if (p.km < 0.0) throw InputError(source, line, "km must be >= 0, got " + fields[km_column]);
     if (!out.points.empty() && !(p.km > out.points.back().km))
       throw InputError(source, line, "km must increase strictly: " + fields[km_column] + " after " +
-                                         std::to_string(out.points.back().km) + " (line " +
+                                         MessageNumber(out.points.back().km) + " (line " +
                                          std::to_string(out.points.back().line) + ")");
     for (int d = 0; d < 3; ++d) {
       if (dim_column[d] < 0) continue;
@@ -186,7 +186,8 @@ SimulatedDimensionSeries DimensionSeriesOf(const WearSimulationResult& result) {
 
 StepBracket BracketKm(const std::vector<double>& km_list, double km) {
   if (km_list.empty()) throw InputError("BracketKm: empty simulated series");
-  if (!std::isfinite(km) || km < 0.0) throw InputError("BracketKm: km must be finite and >= 0, got " + std::to_string(km));
+  if (!std::isfinite(km) || km < 0.0)
+    throw InputError("BracketKm: km must be finite and >= 0, got " + MessageNumber(km));
   StepBracket b;
   const double last = km_list.back();
   if (km > last * (1.0 + 1e-9) + 1e-12) {

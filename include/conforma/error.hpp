@@ -15,8 +15,9 @@ class InputError : public std::invalid_argument {
       : std::invalid_argument(where + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + what) {}
 };
 
-// A number in a message as "%g" prints it (1e+09, 1435, 0.0325): what the user gave, not std::to_string's 6 decimals.
-std::string MessageNumber(double value);
+// A number in a message as "%g" prints it (1e+09, 1435, 0.0325): what the user gave, not std::to_string's 6 decimals
+// (a 300-digit 1e300, 0.000000 for 1e-9). significant_digits: "%.<n>g" where 6 would hide the difference named.
+std::string MessageNumber(double value, int significant_digits = 6);
 
 // Throws InputError("<name> must be finite ...") unless value is finite.
 void require_finite(double value, const char* name);

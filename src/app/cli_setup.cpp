@@ -180,7 +180,8 @@ FrictionLaw ContactArgs::friction_law_from_options() const {
   switch (law->kind) {
     case FrictionLawKind::Constant: out = FrictionLaw::Constant(mu); break;
     case FrictionLawKind::F1aExponential:
-      if (*mu_ratio > 1.0) throw InputError("option --mu-ratio must be in [0, 1] (got " + std::to_string(*mu_ratio) + ")");
+      if (*mu_ratio > 1.0)
+        throw InputError("option --mu-ratio must be in [0, 1] (got " + MessageNumber(*mu_ratio) + ")");
       out = FrictionLaw::F1a(mu, *mu_ratio, *slip_decay);
       break;
     case FrictionLawKind::F1bPiecewise:

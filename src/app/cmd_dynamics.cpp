@@ -179,9 +179,9 @@ void RegisterDynamicsCommand(CLI::App& app) {
       const double rear = -(vehicle.bogie_count - 1) * vehicle.bogie_centre_distance_m - 0.5 * vehicle.wheelbase_m - 1.0;
       const double s_end = a->start + o.model.speed_m_s * a->duration + front;
       if (irr.s_begin() > a->start + rear || irr.s_end() < s_end)
-        throw InputError("--irregularity '" + a->irregularity + "': covers s = " + std::to_string(irr.s_begin()) +
-                         " .. " + std::to_string(irr.s_end()) + " m, the run needs " + std::to_string(a->start + rear) + " .. " +
-                         std::to_string(s_end) + " m");
+        throw InputError("--irregularity '" + a->irregularity + "': covers s = " + MessageNumber(irr.s_begin(), 9) +
+                         " .. " + MessageNumber(irr.s_end(), 9) + " m, the run needs " +
+                         MessageNumber(a->start + rear, 9) + " .. " + MessageNumber(s_end, 9) + " m");
       SetTrackIrregularity(track, irr, o.model.cant_base_m);
     }
     WheelContactFunction contact = &SolveWheelContact;

@@ -184,7 +184,7 @@ void RegisterLutCommand(CLI::App& app) {
       eo.max_touching_contact_angle_rad = options.max_touching_contact_angle_rad;
       const EquilibriumResult eq = geometry->SolveRigidEquilibrium(e->y_mm * 1e-3, e->yaw_mrad * 1e-3, WheelsetPose{}, eo);
       if (eq.status != EquilibriumStatus::Converged)
-        throw InputError("no rigid equilibrium at --y-mm " + std::to_string(e->y_mm));
+        throw InputError("no rigid equilibrium at --y-mm " + MessageNumber(e->y_mm));
       const WheelsetVelocity velocity = e->args.contact.rolling_velocity(geometry->setup().nominal_radius_m[0]);
       nlohmann::json out = {{"model", e->args.contact.model}, {"load_N", options.vertical_load_N},
                             {"wheels", nlohmann::json::array()}};

@@ -6,9 +6,9 @@
 
 namespace conforma {
 
-std::string MessageNumber(double value) {
+std::string MessageNumber(double value, int significant_digits) {
   char text[64];
-  std::snprintf(text, sizeof text, "%g", value);
+  std::snprintf(text, sizeof text, "%.*g", significant_digits, value);
   return text;
 }
 

@@ -85,8 +85,11 @@ static void vertical_minima(const WheelsetTrackGeometry& g, Side side, const Whe
   // Only the part of the wheel that can face the rail head: the silhouette eta is ~ centre + b + y_w.
   const double shift = f.centre(1) + g.wheel_origin_eta_m();
   const double margin = 5e-3 + 0.6 * std::abs(f.rotation(2, 1)) + 0.8 * f.rotation(1, 0) * f.rotation(1, 0);
-  const int i_lo = std::max(0, static_cast<int>(std::floor((eta_lo - shift - margin - y_begin) / step)));
-  const int i_hi = std::min(n - 1, static_cast<int>(std::ceil((eta_hi - shift + margin - y_begin) / step)));
+  // (clamped before the conversion: a pose far off the rail, e.g. y = 1e300 m, gives indices beyond int, whose
+  // conversion is undefined; an index range of fewer than 2 nodes returns below as before)
+  auto node_index = [n](double index) { return static_cast<int>(std::min(double(n), std::max(-1.0, index))); };
+  const int i_lo = std::max(0, node_index(std::floor((eta_lo - shift - margin - y_begin) / step)));
+  const int i_hi = std::min(n - 1, node_index(std::ceil((eta_hi - shift + margin - y_begin) / step)));
   if (i_hi - i_lo < 2) return;
   // coarse scan: local minima of the sampled vertical gap
   struct Coarse { int i; double gap; };

@@ -120,7 +120,7 @@ CreepCoefficients KalkerCoefficients(double a_over_b, double poisson_ratio) {
   require_positive(a_over_b, "a_over_b");
   require_finite(poisson_ratio, "poisson_ratio");
   if (poisson_ratio < 0.0 || poisson_ratio > 0.5)
-    throw InputError("KalkerCoefficients: parameter 'poisson_ratio' = " + std::to_string(poisson_ratio) +
+    throw InputError("KalkerCoefficients: parameter 'poisson_ratio' = " + MessageNumber(poisson_ratio) +
                      " must lie in [0, 0.5]");
   CreepCoefficients out;
   const double nu = poisson_ratio;

@@ -44,8 +44,8 @@ PolachResult Solve(const PolachInput& input, const CreepCoefficients* given) {
   // Polach 2005's range k_S <= k_A <= 1; it keeps |F| < mu N (with k_S > k_A, F exceeds mu N at large creepage)
   if (input.slip_reduction > input.adhesion_reduction || input.adhesion_reduction > 1.0) {
     throw InputError("Polach: the reductions must satisfy 0 < slip_reduction (k_S) <= adhesion_reduction (k_A) <= 1, got "
-                     "k_S = " + std::to_string(input.slip_reduction) + ", k_A = " +
-                     std::to_string(input.adhesion_reduction));
+                     "k_S = " + MessageNumber(input.slip_reduction) + ", k_A = " +
+                     MessageNumber(input.adhesion_reduction));
   }
   require_finite(input.creepages.xi, "Polach creepages.xi");
   require_finite(input.creepages.eta, "Polach creepages.eta");

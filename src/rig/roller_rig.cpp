@@ -19,7 +19,7 @@ constexpr double kMaxRollerRadius_m = 10.0;
 void RollerRigSetup::validate() const {
   require_positive(roller_radius_m, "RollerRigSetup.roller_radius_m");
   if (roller_radius_m > kMaxRollerRadius_m)  // (1e300 gave a wear depth of 4e288 m: fuzzing, session 25)
-    throw InputError("RollerRigSetup.roller_radius_m = " + std::to_string(roller_radius_m) +
+    throw InputError("RollerRigSetup.roller_radius_m = " + MessageNumber(roller_radius_m) +
                      " m is beyond 10 m: not a rig's roller (unit?)");
   require_positive(wheel_radius_m, "RollerRigSetup.wheel_radius_m");
   require_positive(wheelset_mass_kg, "RollerRigSetup.wheelset_mass_kg");

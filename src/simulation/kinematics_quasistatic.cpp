@@ -507,8 +507,8 @@ QuasiStaticResult SolveQuasiStaticCurving(const VehicleParameters& vehicle, cons
 
   for (double r : geometry.setup().nominal_radius_m)
     if (std::fabs(r - vehicle.nominal_wheel_radius_m) > 1e-6)
-      throw InputError("vehicle field 'nominal_wheel_radius_m' (" + std::to_string(vehicle.nominal_wheel_radius_m) +
-                       " m) differs from the track set-up's nominal wheel radius (" + std::to_string(r) + " m)");
+      throw InputError("vehicle field 'nominal_wheel_radius_m' (" + MessageNumber(vehicle.nominal_wheel_radius_m) +
+                       " m) differs from the track set-up's nominal wheel radius (" + MessageNumber(r) + " m)");
   const double c = TrackClassCurvature(track_class);
   const double g = options.gravity_m_s2;
   QuasiStaticResult result;

@@ -183,8 +183,8 @@ WearSimulationResult RunWearSimulation(const Scenario& scenario, const WearSimul
   // smoothing spline's matrix singular (seen at 10 m): an input error, not an internal one.
   if (scenario.update.smoothing_cutoff_m > scenario.wheel.length())
     throw InputError("scenario " + scenario.source + ": update.smoothing_mm = " +
-                     std::to_string(scenario.update.smoothing_cutoff_m * 1e3) +
-                     " mm is longer than the wheel profile (arc length " + std::to_string(scenario.wheel.length() * 1e3) +
+                     MessageNumber(scenario.update.smoothing_cutoff_m * 1e3) +
+                     " mm is longer than the wheel profile (arc length " + MessageNumber(scenario.wheel.length() * 1e3) +
                      " mm); use 0 (no smoothing) up to that length, typically 1.5-7.5 mm");
   auto fallbacks = std::make_shared<KinematicsFallbackLog>();
   const KinematicsFunction kinematics =

@@ -80,21 +80,21 @@ std::vector<double> CentralSlopes(const std::vector<double>& s, const std::vecto
 void TrackIrregularityOptions::validate() const {
   auto positive = [](double v, const char* name) {
     if (!(v > 0.0) || !std::isfinite(v))
-      throw InputError(std::string("track irregularity: ") + name + " must be finite and > 0, got " + std::to_string(v));
+      throw InputError(std::string("track irregularity: ") + name + " must be finite and > 0, got " + MessageNumber(v));
   };
   positive(length_m, "length_m");
   positive(spacing_m, "spacing_m");
   positive(wavelength_min_m, "wavelength_min_m");
   positive(wavelength_max_m, "wavelength_max_m");
   if (wavelength_max_m < wavelength_min_m)
-    throw InputError("track irregularity: wavelength_max_m " + std::to_string(wavelength_max_m) +
-                     " < wavelength_min_m " + std::to_string(wavelength_min_m));
+    throw InputError("track irregularity: wavelength_max_m " + MessageNumber(wavelength_max_m) +
+                     " < wavelength_min_m " + MessageNumber(wavelength_min_m));
   if (wavelength_max_m > length_m)
-    throw InputError("track irregularity: wavelength_max_m " + std::to_string(wavelength_max_m) +
-                     " exceeds length_m " + std::to_string(length_m) + " (the longest wave must fit the track)");
+    throw InputError("track irregularity: wavelength_max_m " + MessageNumber(wavelength_max_m) +
+                     " exceeds length_m " + MessageNumber(length_m) + " (the longest wave must fit the track)");
   if (spacing_m > wavelength_min_m / 4.0)
-    throw InputError("track irregularity: spacing_m " + std::to_string(spacing_m) +
-                     " is coarser than wavelength_min_m / 4 = " + std::to_string(wavelength_min_m / 4.0));
+    throw InputError("track irregularity: spacing_m " + MessageNumber(spacing_m) +
+                     " is coarser than wavelength_min_m / 4 = " + MessageNumber(wavelength_min_m / 4.0));
   if (length_m / spacing_m > 1e8) throw InputError("track irregularity: more than 1e8 samples (length_m / spacing_m)");
   // the synthesis sums every harmonic at every sample: (length / wavelength_min) (length / spacing) evaluations,
   // quadratic in the length (4e4 m took 14 s, 2.5e5 m did not finish in a minute: fuzzing, session 25)
@@ -126,15 +126,15 @@ TrackIrregularity::TrackIrregularity(std::string source, std::vector<double> s_m
       throw InputError("track irregularity " + source_ + ": non-finite value at sample " + std::to_string(i));
     if (i > 0 && !(s_[i] > s_[i - 1]))
       throw InputError("track irregularity " + source_ + ": s is not strictly increasing at sample " +
-                       std::to_string(i) + " (s = " + std::to_string(s_[i]) + " m)");
+                       std::to_string(i) + " (s = " + MessageNumber(s_[i]) + " m)");
   }
 }
 
 TrackIrregularitySample TrackIrregularity::At(double s) const {
   if (s_.empty()) throw InputError("track irregularity: empty (no samples)");
   if (!(s >= s_.front() && s <= s_.back()))
-    throw InputError("track irregularity " + source_ + ": s = " + std::to_string(s) + " m outside [" +
-                     std::to_string(s_.front()) + ", " + std::to_string(s_.back()) + "] m");
+    throw InputError("track irregularity " + source_ + ": s = " + MessageNumber(s, 9) + " m outside [" +
+                     MessageNumber(s_.front(), 9) + ", " + MessageNumber(s_.back(), 9) + "] m");
   size_t i = static_cast<size_t>(std::upper_bound(s_.begin(), s_.end(), s) - s_.begin());
   i = std::min(std::max<size_t>(i, 1), s_.size() - 1) - 1;  // interval [s_i, s_{i+1}]
   const double h = s_[i + 1] - s_[i];
@@ -154,7 +154,7 @@ TrackIrregularitySample TrackIrregularity::At(double s) const {
 
 TrackIrregularity PerfectTrack(double length_m) {
   if (!(length_m > 0.0) || !std::isfinite(length_m))
-    throw InputError("perfect track: length_m must be finite and > 0, got " + std::to_string(length_m));
+    throw InputError("perfect track: length_m must be finite and > 0, got " + MessageNumber(length_m));
   return TrackIrregularity("perfect track", {0.0, length_m}, {0.0, 0.0}, {0.0, 0.0}, {}, {});
 }
 

@@ -49,7 +49,7 @@ double Roughness(IrregularitySpectrum s, IrregularityComponent c) {
 void CheckOmega(double omega, const char* what) {
   if (!(omega > 0.0) || !std::isfinite(omega))
     throw InputError(std::string("irregularity PSD: ") + what + " must be a finite wavenumber > 0 rad/m, got " +
-                     std::to_string(omega));
+                     MessageNumber(omega));
 }
 
 // Antiderivative of 1 / (Omega^2 + a^2) (a > 0).
@@ -111,8 +111,8 @@ double IrregularityBandVariance(IrregularitySpectrum s, IrregularityComponent c,
   CheckOmega(omega_min, "omega_min");
   CheckOmega(omega_max, "omega_max");
   if (omega_max < omega_min)
-    throw InputError("irregularity band: omega_max " + std::to_string(omega_max) + " < omega_min " +
-                     std::to_string(omega_min));
+    throw InputError("irregularity band: omega_max " + MessageNumber(omega_max) + " < omega_min " +
+                     MessageNumber(omega_min));
   return PsdAntiderivative(s, c, omega_max) - PsdAntiderivative(s, c, omega_min);
 }
 

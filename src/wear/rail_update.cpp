@@ -19,7 +19,8 @@ std::vector<double> normalised_weights(const std::vector<double>& weights, size_
     require_non_negative(w, what);
     sum += w;
   }
-  if (std::abs(sum - 1.0) > 1e-9) throw InputError(std::string(what) + ": weights must sum to 1, got " + std::to_string(sum));
+  if (std::abs(sum - 1.0) > 1e-9)
+    throw InputError(std::string(what) + ": weights must sum to 1, got " + MessageNumber(sum, 12));
   return weights;
 }
 

@@ -181,7 +181,7 @@ TrackClassWear CombineTrackClasses(const std::vector<TrackClassWear>& classes, c
     require_non_negative(weights[k], ("track class weight " + std::to_string(k)).c_str());
     sum += weights[k];
   }
-  if (std::abs(sum - 1.0) > 1e-9) throw InputError("track class weights must sum to 1, got " + std::to_string(sum));
+  if (std::abs(sum - 1.0) > 1e-9) throw InputError("track class weights must sum to 1, got " + MessageNumber(sum, 12));
   TrackClassWear out = classes.front();
   std::fill(out.wheel_depth_per_metre.depth_m.begin(), out.wheel_depth_per_metre.depth_m.end(), 0.0);
   std::fill(out.rail_depth_per_passage.depth_m.begin(), out.rail_depth_per_passage.depth_m.end(), 0.0);

@@ -3,7 +3,7 @@
 # installed executable once. Nothing of the source tree is used at run time: the programs need no data files, and
 # the environment variables that point at run-time files are cleared.
 # cmake -DCONFORMA_BUILD_DIR=<build> -DCONFORMA_CONSUMER_SOURCE=<this folder> -DCONFORMA_WORK_DIR=<scratch>
-#       [-DCMAKE_BUILD_TYPE=Release] -P run_install_consumer.cmake
+#       [-DCMAKE_BUILD_TYPE=Release] [-DCONFORMA_SANITIZE=<-fsanitize= list>] -P run_install_consumer.cmake
 foreach(_v CONFORMA_BUILD_DIR CONFORMA_CONSUMER_SOURCE CONFORMA_WORK_DIR)
   if(NOT ${_v})
     message(FATAL_ERROR "run_install_consumer.cmake: -D${_v}=... missing")
@@ -34,8 +34,13 @@ function(run what)
 endfunction()
 
 run("install" ${CMAKE_COMMAND} --install "${CONFORMA_BUILD_DIR}" --prefix "${_prefix}" --config ${CMAKE_BUILD_TYPE})
+# a sanitizer build's libraries need the sanitizer runtime in the consumer's programs as well
+set(_sanitize "")
+if(CONFORMA_SANITIZE)
+  set(_sanitize "-DCMAKE_CXX_FLAGS=-fsanitize=${CONFORMA_SANITIZE}" "-DCMAKE_C_FLAGS=-fsanitize=${CONFORMA_SANITIZE}")
+endif()
 run("configure consumer" ${CMAKE_COMMAND} -S "${CONFORMA_CONSUMER_SOURCE}" -B "${_build}"
-    -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} "-DCMAKE_PREFIX_PATH=${_prefix}")
+    -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} "-DCMAKE_PREFIX_PATH=${_prefix}" ${_sanitize})
 run("build consumer" ${CMAKE_COMMAND} --build "${_build}" --config ${CMAKE_BUILD_TYPE} -j 2)
 foreach(_p consumer_contact consumer_capi_minimal)
   run("run ${_p}" "${_build}/${_p}")
