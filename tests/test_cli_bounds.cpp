@@ -95,6 +95,12 @@ TEST(CliBounds, MalformedValuesAreNotReinterpreted) {
   ExpectInputError("wear --scenario '" + kScenario + "' --steps 1 --km nan --out '" + out.string() + "'", "--km");
   ExpectInputError("wear --scenario '" + kScenario + "' --steps 1 --km -5 --out '" + out.string() + "'", "--km");
   ExpectInputError("wear --scenario '" + kScenario + "' --steps -5 --out '" + out.string() + "'", "--steps");
+  // a material that is no wheel or rail steel (a unit slip): 1e300 kg/m^3 gave a wear step of 1.6e296 km, exit 0
+  for (const char* density : {"1e300", "2147483648", "1e-300", "7.85"})
+    ExpectInputError("wear --scenario '" + kScenario + "' --steps 1 --model hertz --set material.density_kg_m3=" +
+                         density + " --out '" + out.string() + "'",
+                     "density_kg_m3 = ");
+  ExpectInputError("contact --G-GPa 1e-6", "shear_modulus_Pa = ");
   fs::remove_all(out);
   // the message names the pose, not a 300-digit number
   const auto r = RunCli("contact --y-mm 1e300");
