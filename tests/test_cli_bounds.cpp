@@ -108,6 +108,22 @@ TEST(CliBounds, MalformedValuesAreNotReinterpreted) {
   EXPECT_LT(r.err.size(), 400u) << r.err;
 }
 
+// A friction coefficient no wheel-rail contact has (1e-300 ran a wear step of ~1e300 km without a word) is named on
+// stderr, as `contact` and `dynamics` do; a plausible one is not.
+TEST(CliBounds, ImplausibleFrictionInAScenarioWarns) {
+  const fs::path out = conforma::test::FreshTempDir("conforma_bounds", "friction");
+  const std::string wear = "wear --scenario '" + kScenario + "' --steps 1 --model hertz --out '" + out.string() + "'";
+  const auto low = RunCli(wear + " --set friction=0.01");
+  EXPECT_EQ(low.exit_code, 0) << low.err;
+  EXPECT_NE(low.err.find("warning: track class cruise: friction 0.01 is outside the plausible range"),
+            std::string::npos)
+      << low.err;
+  const auto plausible = RunCli(wear + " --set friction=0.4");
+  EXPECT_EQ(plausible.exit_code, 0) << plausible.err;
+  EXPECT_EQ(plausible.err.find("friction"), std::string::npos) << plausible.err;
+  fs::remove_all(out);
+}
+
 // The tangent class's kinematic oscillation of 100 mm leaves the rails: the class falls back and its samples lose
 // contact; that is an incomplete result (exit 5), shown in the output, 0 with --allow-partial.
 TEST(CliBounds, CurvingThatFellBackIsIncomplete) {

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "cli_setup.hpp"
+#include "conforma/contact_plausibility.hpp"
 #include "conforma/error.hpp"
 #include "conforma/wear_simulation.hpp"
 
@@ -78,6 +79,15 @@ void RequireThreads(long threads, const std::string& option) {
 void EnsureWritableFile(const std::string& path, const std::string& option) {
   std::ofstream f(path);
   if (!f) throw InputError("option " + option + ": cannot write '" + path + "'");
+}
+
+void WarnImplausibleFriction(const Scenario& scenario) {
+  for (const TrackClass& c : scenario.classes)
+    if (c.friction_coefficient < kMinPlausibleFriction || c.friction_coefficient > kMaxPlausibleFriction)
+      std::fprintf(stderr,
+                   "warning: track class %s: friction %g is outside the plausible range %g to %g of wheel-rail "
+                   "contact (dry steel ~0.3-0.6, wet or contaminated down to ~0.05)\n",
+                   c.name.c_str(), c.friction_coefficient, kMinPlausibleFriction, kMaxPlausibleFriction);
 }
 
 std::string WearModelHelp(const std::string& what) { return what + " (" + WearContactModelNames() + ")"; }

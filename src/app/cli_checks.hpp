@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "conforma/contact_model.hpp"
+#include "conforma/scenario.hpp"
 
 namespace conforma::cli {
 
@@ -28,6 +29,10 @@ void RequireThreads(long threads, const std::string& option);
 // A file the command writes at its end: created (truncated) now, so that an unwritable path is an InputError naming
 // `option` before the work (stress --json to an unwritable path wrote nothing and exited 0).
 void EnsureWritableFile(const std::string& path, const std::string& option);
+// Warns on stderr for every track class whose friction coefficient lies outside the plausible range of wheel-rail
+// contact (kMinPlausibleFriction ... kMaxPlausibleFriction, as `contact` and `dynamics` warn): friction 1e-300 ran a
+// wear step of ~1e300 km with exit 0 and no word (probe of wear --set, session 27).
+void WarnImplausibleFriction(const Scenario& scenario);
 // Help text of a wear run's --model(s) option: "<what> (hertz, kp, kpec, conformal, auto)".
 std::string WearModelHelp(const std::string& what);
 

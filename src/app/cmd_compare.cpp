@@ -122,6 +122,7 @@ void RegisterCompareCommand(CLI::App& app) {
   sub->add_flag("!--no-plot", a->plot, "no plots (no python needed)");
   sub->callback([a, sub]() {
     const Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
+    WarnImplausibleFriction(sc);
     // every check before the minutes of computing: models, output folder, plotting interpreter
     const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
     if (a->steps < 1) throw InputError("option --steps: must be >= 1");

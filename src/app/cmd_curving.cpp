@@ -121,6 +121,7 @@ void RegisterCurvingCommand(CLI::App& app) {
                                           "the samples per wheelset)");
   sub->callback([a, sub]() {
     Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
+    WarnImplausibleFriction(sc);
     const ContactModel model = a->model.empty() ? sc.model : ParseWearModel(a->model, "--model");
     if (!IsWearContactModel(model))
       throw InputError(std::string("scenario contact_model '") + to_string(model) +

@@ -336,6 +336,7 @@ void RegisterValidateCommand(CLI::App& app) {
   sub->callback([a, sub]() {
     CheckRunLimits(sub->count("--steps") > 0, a->steps, sub->count("--km") > 0, a->km);
     const Scenario sc = LoadScenario(a->scenario);
+    WarnImplausibleFriction(sc);
     const std::vector<std::string> models = ParseWearModelList(a->models, "--models");
     if (a->measured.empty() && a->measured_profiles.empty())
       throw InputError("validate: give at least one --measured FILE or --measured-profile FILE@KM");

@@ -38,6 +38,7 @@ void RegisterWearCommand(CLI::App& app) {
   sub->callback([a, sub]() {
     CheckRunLimits(sub->count("--steps") > 0, a->steps, sub->count("--km") > 0, a->km);
     const Scenario sc = LoadScenario(a->scenario, a->scenario_overrides);
+    WarnImplausibleFriction(sc);
     const bool rail_steps = !sc.rail_steps.fixed;
     const std::string python = PythonOr(a->python);
     if (rail_steps && a->plot) RequirePlotPython(python, "--python");  // before the minutes of computing
