@@ -24,6 +24,9 @@ namespace conforma {
 
 constexpr double kMinPlausibleFriction = 0.05;  // -, wet / contaminated rail (docs/physics-reference.md §13)
 constexpr double kMaxPlausibleFriction = 1.0;   // -, above clean dry steel on steel (§13)
+// mu within [kMinPlausibleFriction, kMaxPlausibleFriction]: the one test of every friction warning (contact's
+// friction_coefficient, `dynamics --friction`, a scenario's track classes)
+constexpr bool IsPlausibleFriction(double mu) { return !(mu < kMinPlausibleFriction || mu > kMaxPlausibleFriction); }
 // Pa: 4 x the elastic shakedown limit of rail steel in free rolling, p0 = 4 k with k ~ 0.3 GPa (§13)
 constexpr double kMaxPlausiblePressurePa = 5e9;
 constexpr double kMaxTreadRadiusOffsetM = 10e-3;  // m: |r - r0| on the tread (§13)

@@ -83,7 +83,7 @@ void EnsureWritableFile(const std::string& path, const std::string& option) {
 
 void WarnImplausibleFriction(const Scenario& scenario) {
   for (const TrackClass& c : scenario.classes)
-    if (c.friction_coefficient < kMinPlausibleFriction || c.friction_coefficient > kMaxPlausibleFriction)
+    if (!IsPlausibleFriction(c.friction_coefficient))
       std::fprintf(stderr,
                    "warning: track class %s: friction %g is outside the plausible range %g to %g of wheel-rail "
                    "contact (dry steel ~0.3-0.6, wet or contaminated down to ~0.05)\n",

@@ -133,7 +133,7 @@ void RegisterDynamicsCommand(CLI::App& app) {
     o.model.start_position_m = a->start;
     o.model.contact = qo.contact;
     o.model.friction_coefficient = a->friction;
-    if (a->friction < kMinPlausibleFriction || a->friction > kMaxPlausibleFriction)  // (as contact's warning, §13)
+    if (!IsPlausibleFriction(a->friction))  // (as contact's warning, §13)
       std::fprintf(stderr, "warning: --friction %g is outside the plausible range %g to %g of wheel-rail contact\n",
                    a->friction, kMinPlausibleFriction, kMaxPlausibleFriction);
     o.model.gravity_m_s2 = qo.gravity_m_s2;

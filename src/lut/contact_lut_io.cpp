@@ -7,6 +7,7 @@
 #include <functional>
 #include <type_traits>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,10 +44,29 @@ struct Handle {  // closes an HDF5 id on scope exit
 void Require(long long status, const std::string& path, const std::string& what) {
   if (status < 0) Fail(path, what + " cannot be read (damaged file?)");
 }
-void RequireAttribute(hid_t obj, const char* name, const std::string& path) {
+// The attribute `name` of `obj`, opened (close it with H5Aclose): missing or damaged is an error naming it.
+hid_t OpenAttribute(hid_t obj, const char* name, const std::string& path) {
+  const std::string what = std::string("attribute '") + name + "'";
   const htri_t exists = H5Aexists(obj, name);
-  Require(exists, path, std::string("attribute '") + name + "'");
-  if (exists == 0) Fail(path, std::string("attribute '") + name + "' missing");
+  Require(exists, path, what);
+  if (exists == 0) Fail(path, what + " missing");
+  const hid_t id = H5Aopen(obj, name, H5P_DEFAULT);
+  Require(id, path, what);
+  return id;
+}
+// The group or dataset `name` in `group` exists (`what` names it in the error when it is missing or damaged).
+void RequireLink(hid_t group, const char* name, const std::string& path, const std::string& what) {
+  const htri_t exists = H5Lexists(group, name, H5P_DEFAULT);
+  Require(exists, path, what);
+  if (exists == 0) Fail(path, what + " missing");
+}
+// The group `name` of `parent`, opened (close it with H5Gclose).
+hid_t OpenGroup(hid_t parent, const char* name, const std::string& path) {
+  const std::string what = std::string("group '") + name + "'";
+  RequireLink(parent, name, path, what);
+  const hid_t id = H5Gopen2(parent, name, H5P_DEFAULT);
+  Require(id, path, what);
+  return id;
 }
 
 // A write HDF5 could not do (disk full, no permission) is an error naming the object, not a file missing it.
@@ -80,13 +100,11 @@ void AttrInt(hid_t obj, const char* name, int v) {
 }
 
 std::string ReadAttrString(hid_t obj, const char* name, const std::string& path) {
-  RequireAttribute(obj, name, path);
   const std::string what = std::string("attribute '") + name + "'";
-  Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
-  Require(attr.id, path, what);
+  Handle attr{OpenAttribute(obj, name, path), H5Aclose};
   Handle type{H5Aget_type(attr.id), H5Tclose};
   Require(type.id, path, what);
-  if (H5Tget_class(type.id) != H5T_STRING) Fail(path, std::string("attribute '") + name + "' is not a string");
+  if (H5Tget_class(type.id) != H5T_STRING) Fail(path, what + " is not a string");
   if (H5Tis_variable_str(type.id) > 0) {
     char* s = nullptr;
     Handle mem{H5Tcopy(H5T_C_S1), H5Tclose};
@@ -104,10 +122,8 @@ std::string ReadAttrString(hid_t obj, const char* name, const std::string& path)
 }
 
 std::vector<double> ReadAttrDoubles(hid_t obj, const char* name, const std::string& path) {
-  RequireAttribute(obj, name, path);
   const std::string what = std::string("attribute '") + name + "'";
-  Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
-  Require(attr.id, path, what);
+  Handle attr{OpenAttribute(obj, name, path), H5Aclose};
   Handle space{H5Aget_space(attr.id), H5Sclose};
   Require(space.id, path, what);
   const hssize_t n = H5Sget_simple_extent_npoints(space.id);
@@ -122,12 +138,9 @@ double ReadAttrDouble(hid_t obj, const char* name, const std::string& path) {
   return v[0];
 }
 int ReadAttrInt(hid_t obj, const char* name, const std::string& path) {
-  RequireAttribute(obj, name, path);
-  const std::string what = std::string("attribute '") + name + "'";
-  Handle attr{H5Aopen(obj, name, H5P_DEFAULT), H5Aclose};
-  Require(attr.id, path, what);
+  Handle attr{OpenAttribute(obj, name, path), H5Aclose};
   int v = 0;
-  Require(H5Aread(attr.id, H5T_NATIVE_INT, &v), path, what);
+  Require(H5Aread(attr.id, H5T_NATIVE_INT, &v), path, std::string("attribute '") + name + "'");
   return v;
 }
 
@@ -159,22 +172,23 @@ void WriteData(hid_t group, const char* name, const std::vector<T>& v, const std
   AttrString(set.id, "units", units);
 }
 
+// The dataset `name` of `group`: `expected` values (any number when not given); `folder` prefixes its name in
+// messages.
 template <class T>
-std::vector<T> ReadData(hid_t group, const char* name, const std::string& path, size_t expected) {
-  const std::string what = std::string("dataset '") + name + "'";
-  const htri_t exists = H5Lexists(group, name, H5P_DEFAULT);
-  Require(exists, path, what);
-  if (exists == 0) Fail(path, what + " missing");
+std::vector<T> ReadData(hid_t group, const char* name, const std::string& path,
+                        std::optional<size_t> expected = std::nullopt, const char* folder = "") {
+  const std::string what = std::string("dataset '") + folder + name + "'";
+  RequireLink(group, name, path, what);
   Handle set{H5Dopen2(group, name, H5P_DEFAULT), H5Dclose};
   Require(set.id, path, what);
   Handle space{H5Dget_space(set.id), H5Sclose};
   Require(space.id, path, what);
   const hssize_t n = H5Sget_simple_extent_npoints(space.id);
   Require(n, path, what);
-  if (static_cast<size_t>(n) != expected)
-    Fail(path, what + " has " + std::to_string(n) + " values, expected " + std::to_string(expected));
-  std::vector<T> v(expected);
-  if (expected > 0)
+  if (expected && static_cast<size_t>(n) != *expected)
+    Fail(path, what + " has " + std::to_string(n) + " values, expected " + std::to_string(*expected));
+  std::vector<T> v(n);
+  if (n > 0)
     Require(H5Dread(set.id, std::is_same<T, double>::value ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT, H5S_ALL, H5S_ALL,
                     H5P_DEFAULT, v.data()),
             path, what);
@@ -352,27 +366,11 @@ ContactLut LoadContactLut(const std::string& path) {
   h.conforma_commit = ReadAttrString(root, "conforma_commit", path);
   h.generation_s = ReadAttrDouble(root, "generation_s", path);
   h.threads = ReadAttrInt(root, "threads", path);
-  auto axis_size = [&](const char* name) {
-    if (H5Lexists(root, "grid", H5P_DEFAULT) <= 0) Fail(path, "group 'grid' missing");
-    Handle grid{H5Gopen2(root, "grid", H5P_DEFAULT), H5Gclose};
-    Require(grid.id, path, "group 'grid'");
-    if (H5Lexists(grid.id, name, H5P_DEFAULT) <= 0) Fail(path, std::string("dataset 'grid/") + name + "' missing");
-    const std::string what = std::string("dataset 'grid/") + name + "'";
-    Handle set{H5Dopen2(grid.id, name, H5P_DEFAULT), H5Dclose};
-    Require(set.id, path, what);
-    Handle space{H5Dget_space(set.id), H5Sclose};
-    Require(space.id, path, what);
-    const hssize_t n = H5Sget_simple_extent_npoints(space.id);
-    Require(n, path, what);
-    return static_cast<size_t>(n);
-  };
-  const size_t ny = axis_size("lateral_m"), npsi = axis_size("yaw_rad"), nq = axis_size("load_N");
   {
-    Handle grid{H5Gopen2(root, "grid", H5P_DEFAULT), H5Gclose};
-    Require(grid.id, path, "group 'grid'");
-    lut.grid.lateral_m = ReadData<double>(grid.id, "lateral_m", path, ny);
-    lut.grid.yaw_rad = ReadData<double>(grid.id, "yaw_rad", path, npsi);
-    lut.grid.load_N = ReadData<double>(grid.id, "load_N", path, nq);
+    Handle grid{OpenGroup(root, "grid", path), H5Gclose};
+    lut.grid.lateral_m = ReadData<double>(grid.id, "lateral_m", path, std::nullopt, "grid/");
+    lut.grid.yaw_rad = ReadData<double>(grid.id, "yaw_rad", path, std::nullopt, "grid/");
+    lut.grid.load_N = ReadData<double>(grid.id, "load_N", path, std::nullopt, "grid/");
   }
   try {
     lut.grid.validate();
@@ -381,9 +379,7 @@ ContactLut LoadContactLut(const std::string& path) {
   }
   const size_t nodes = lut.grid.nodes();
   for (int s = 0; s < 2; ++s) {
-    if (H5Lexists(root, kSideGroups[s], H5P_DEFAULT) <= 0) Fail(path, std::string("group '") + kSideGroups[s] + "' missing");
-    Handle g{H5Gopen2(root, kSideGroups[s], H5P_DEFAULT), H5Gclose};
-    Require(g.id, path, std::string("group '") + kSideGroups[s] + "'");
+    Handle g{OpenGroup(root, kSideGroups[s], path), H5Gclose};
     const std::vector<int> status = ReadData<int>(g.id, "node_status", path, nodes);
     const std::vector<double> vertical = ReadData<double>(g.id, "node_vertical_m", path, nodes);
     const std::vector<double> roll = ReadData<double>(g.id, "node_roll_rad", path, nodes);

@@ -25,7 +25,7 @@ std::vector<std::string> ContactPlausibilityWarnings(const WheelContactReport& r
   // friction: the constant mu, or the law's static value mu(0)
   const bool law = !options.friction_law.is_constant();
   const double mu = law ? options.friction_law.static_value() : options.friction_coefficient;
-  if (mu < kMinPlausibleFriction || mu > kMaxPlausibleFriction)
+  if (!IsPlausibleFriction(mu))
     out.push_back(Format("friction_coefficient: %s = %g is outside the plausible range %g to %g of wheel-rail "
                          "contact (dry steel ~0.3-0.6, wet or contaminated down to ~0.05); check --mu",
                          law ? "the friction law's static value mu(0)" : "the friction coefficient mu", mu,
